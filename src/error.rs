@@ -1,0 +1,113 @@
+//! The one error type of the wingbeat core.
+//!
+//! Every fallible function in the library returns [`Result<T>`]. Front ends turn it into
+//! what they need: the CLI prints it and exits non-zero, the wasm API wraps it in a `JsError`.
+//! Messages always name the offending field and, where one exists, the allowed range.
+
+use thiserror::Error;
+
+/// Everything that can go wrong in wingbeat's core.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum WingbeatError {
+    /// An input value is outside its allowed range (or not finite).
+    #[error("invalid value for `{field}`: {value} (allowed: {allowed})")]
+    InvalidInput {
+        /// Dotted path of the offending field, e.g. `modes[1].freq_hz`.
+        field: String,
+        /// The value as given, formatted for a human.
+        value: String,
+        /// The allowed range or set, in words, with units.
+        allowed: String,
+    },
+    /// The request would exceed a documented resource cap.
+    #[error("`{field}` asks for {requested}, over the cap of {cap} ({why})")]
+    ResourceCap {
+        /// The field (or derived quantity) that is too large.
+        field: String,
+        /// What was asked for.
+        requested: String,
+        /// The documented cap.
+        cap: String,
+        /// Why the cap exists.
+        why: String,
+    },
+    /// An input file or document could not be parsed.
+    #[error("could not parse {what}: {message}")]
+    Parse {
+        /// What was being parsed (a file name, "config JSON", ...).
+        what: String,
+        /// The parser's explanation.
+        message: String,
+    },
+    /// A geometric input (planform outline, mesh) is unusable.
+    #[error("invalid geometry: {0}")]
+    Geometry(String),
+    /// An iterative numerical method stopped without meeting its tolerance.
+    #[error("{method} did not converge: {detail}")]
+    NoConvergence {
+        /// The method, e.g. "shift-invert Lanczos".
+        method: String,
+        /// Iterations used, residual reached, and so on.
+        detail: String,
+    },
+    /// A numerical result came out non-finite (overflow, parametric blow-up).
+    #[error("non-finite result in {what}: {detail}")]
+    NonFinite {
+        /// Which computation.
+        what: String,
+        /// Context for the user.
+        detail: String,
+    },
+}
+
+/// Result alias used throughout the core.
+pub type Result<T> = std::result::Result<T, WingbeatError>;
+
+impl WingbeatError {
+    /// Shorthand for [`WingbeatError::InvalidInput`].
+    pub fn invalid(
+        field: impl Into<String>,
+        value: impl std::fmt::Display,
+        allowed: impl Into<String>,
+    ) -> Self {
+        WingbeatError::InvalidInput {
+            field: field.into(),
+            value: value.to_string(),
+            allowed: allowed.into(),
+        }
+    }
+}
+
+/// Checks that `v` is finite and within `[lo, hi]`; the error names `field` and the range with `unit`.
+pub fn check_range(field: &str, v: f64, lo: f64, hi: f64, unit: &str) -> Result<()> {
+    if !v.is_finite() || v < lo || v > hi {
+        let u = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {unit}")
+        };
+        return Err(WingbeatError::invalid(
+            field,
+            v,
+            format!("a finite number in [{lo}, {hi}]{u}"),
+        ));
+    }
+    Ok(())
+}
+
+/// Checks that `v` is finite and strictly positive and at most `hi`.
+pub fn check_positive(field: &str, v: f64, hi: f64, unit: &str) -> Result<()> {
+    if !v.is_finite() || v <= 0.0 || v > hi {
+        let u = if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {unit}")
+        };
+        return Err(WingbeatError::invalid(
+            field,
+            v,
+            format!("a finite number in (0, {hi}]{u}"),
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,420 @@
+//! Wing kinematics: roll α(t), pitch β(t), yaw γ(t) and the frame's angular velocity
+//! (paper §2.1, §3.2, Eq. 1).
+//!
+//! Each angle is periodic at the flap frequency f_d (ω_d = 2π f_d): a mean plus harmonics
+//! `A_n sin(n ω_d t + φ_n)`. Sampled periodic tables (measured kinematics) are turned into the
+//! same form by trigonometric interpolation (a discrete Fourier transform of the samples), which
+//! is the smooth periodic interpolant through them, so derivatives stay analytic.
+//!
+//! Rotation order: roll α about I, then pitch β about the rolled J′ (both finite); yaw γ is small
+//! and enters Eq. 13 only to first order. The rotating frame I″–J″–K″ turns with angular velocity
+//! (Eq. 1, in frame components) Ω = (α̇ cos β, β̇, α̇ sin β).
+
+use crate::error::{check_range, Result, WingbeatError};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// One harmonic `amplitude · sin(n ω_d t + phase)`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Harmonic {
+    /// Harmonic number n ≥ 1 (multiple of the flap frequency).
+    pub n: u32,
+    /// Amplitude, rad.
+    pub amplitude: f64,
+    /// Phase, rad.
+    #[serde(default)]
+    pub phase: f64,
+}
+
+/// How one angle is specified.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum Angle {
+    /// Mean plus harmonics (the paper's case is one sine: mean 0, n = 1, phase 0).
+    Fourier {
+        /// Mean value, rad.
+        #[serde(default)]
+        mean: f64,
+        /// Harmonics of the flap frequency.
+        #[serde(default)]
+        harmonics: Vec<Harmonic>,
+    },
+    /// Equally spaced samples over exactly one period, t_j = j T / N, j = 0..N−1 (rad).
+    /// Interpolated by the trigonometric polynomial through the samples, optionally
+    /// truncated at `max_harmonic` (a low-pass for noisy measurements).
+    Sampled {
+        /// The samples, rad.
+        values: Vec<f64>,
+        /// Keep harmonics up to this number (default: all that N samples resolve).
+        #[serde(default)]
+        max_harmonic: Option<u32>,
+    },
+}
+
+/// Largest harmonic number accepted.
+pub const MAX_HARMONIC: u32 = 256;
+/// Most samples accepted for one sampled angle.
+pub const MAX_SAMPLES_PER_PERIOD: usize = 100_000;
+/// Largest flap frequency accepted, Hz.
+pub const MAX_FLAP_HZ: f64 = 10_000.0;
+
+impl Angle {
+    /// `amplitude · sin(ω_d t)`: the paper's profile.
+    pub fn sine(amplitude: f64) -> Self {
+        Angle::Fourier {
+            mean: 0.0,
+            harmonics: vec![Harmonic {
+                n: 1,
+                amplitude,
+                phase: 0.0,
+            }],
+        }
+    }
+
+    /// A constant angle.
+    pub fn constant(value: f64) -> Self {
+        Angle::Fourier {
+            mean: value,
+            harmonics: vec![],
+        }
+    }
+
+    /// Validates the specification; `field` names it in errors.
+    pub fn validate(&self, field: &str) -> Result<()> {
+        match self {
+            Angle::Fourier { mean, harmonics } => {
+                check_range(&format!("{field}.mean"), *mean, -2.0 * PI, 2.0 * PI, "rad")?;
+                if harmonics.len() > MAX_HARMONIC as usize {
+                    return Err(WingbeatError::invalid(
+                        format!("{field}.harmonics"),
+                        format!("{} entries", harmonics.len()),
+                        format!("at most {MAX_HARMONIC} harmonics"),
+                    ));
+                }
+                for (i, h) in harmonics.iter().enumerate() {
+                    let f = format!("{field}.harmonics[{i}]");
+                    if h.n == 0 || h.n > MAX_HARMONIC {
+                        return Err(WingbeatError::invalid(
+                            format!("{f}.n"),
+                            h.n,
+                            format!("an integer in [1, {MAX_HARMONIC}]"),
+                        ));
+                    }
+                    check_range(
+                        &format!("{f}.amplitude"),
+                        h.amplitude,
+                        -2.0 * PI,
+                        2.0 * PI,
+                        "rad",
+                    )?;
+                    check_range(&format!("{f}.phase"), h.phase, -1.0e3, 1.0e3, "rad")?;
+                }
+            }
+            Angle::Sampled {
+                values,
+                max_harmonic,
+            } => {
+                if values.len() < 3 || values.len() > MAX_SAMPLES_PER_PERIOD {
+                    return Err(WingbeatError::invalid(
+                        format!("{field}.values"),
+                        format!("{} samples", values.len()),
+                        format!("3 to {MAX_SAMPLES_PER_PERIOD} samples over one period"),
+                    ));
+                }
+                for (i, v) in values.iter().enumerate() {
+                    check_range(
+                        &format!("{field}.values[{i}]"),
+                        *v,
+                        -2.0 * PI,
+                        2.0 * PI,
+                        "rad",
+                    )?;
+                }
+                if let Some(m) = max_harmonic {
+                    if *m > MAX_HARMONIC {
+                        return Err(WingbeatError::invalid(
+                            format!("{field}.max_harmonic"),
+                            m,
+                            format!("an integer in [0, {MAX_HARMONIC}]"),
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The angle as a resolved Fourier series.
+    pub fn series(&self) -> Series {
+        match self {
+            Angle::Fourier { mean, harmonics } => {
+                let mut s = Series {
+                    mean: *mean,
+                    terms: Vec::new(),
+                };
+                for h in harmonics {
+                    // A sin(nθ + φ) = A cos φ sin nθ + A sin φ cos nθ
+                    s.terms.push(SeriesTerm {
+                        n: h.n as f64,
+                        s: h.amplitude * h.phase.cos(),
+                        c: h.amplitude * h.phase.sin(),
+                    });
+                }
+                s
+            }
+            Angle::Sampled {
+                values,
+                max_harmonic,
+            } => {
+                // Direct O(N·H) DFT: tables are short and this runs once per model.
+                let n = values.len();
+                let nf = n as f64;
+                let mean = values.iter().sum::<f64>() / nf;
+                let mut hmax = n / 2;
+                if let Some(m) = max_harmonic {
+                    hmax = hmax.min(*m as usize);
+                }
+                let mut terms = Vec::with_capacity(hmax);
+                for h in 1..=hmax {
+                    let (mut cs, mut sn) = (0.0, 0.0);
+                    for (j, v) in values.iter().enumerate() {
+                        let th = 2.0 * PI * (h * j % n) as f64 / nf;
+                        cs += v * th.cos();
+                        sn += v * th.sin();
+                    }
+                    // Even N: the Nyquist term is shared by ±N/2, so it carries half weight.
+                    let w = if n % 2 == 0 && h == n / 2 {
+                        1.0 / nf
+                    } else {
+                        2.0 / nf
+                    };
+                    terms.push(SeriesTerm {
+                        n: h as f64,
+                        s: w * sn,
+                        c: w * cs,
+                    });
+                }
+                Series { mean, terms }
+            }
+        }
+    }
+}
+
+/// One term `s · sin(n θ) + c · cos(n θ)`, θ = ω_d t.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeriesTerm {
+    /// Harmonic number.
+    pub n: f64,
+    /// Sine coefficient, rad.
+    pub s: f64,
+    /// Cosine coefficient, rad.
+    pub c: f64,
+}
+
+/// A resolved Fourier series in θ = ω_d t.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Mean, rad.
+    pub mean: f64,
+    /// Harmonic terms.
+    pub terms: Vec<SeriesTerm>,
+}
+
+impl Series {
+    /// Value, first and second time derivative at time `t` for angular flap frequency `wd` (rad/s).
+    pub fn eval(&self, t: f64, wd: f64) -> (f64, f64, f64) {
+        let (mut v, mut d, mut dd) = (self.mean, 0.0, 0.0);
+        for term in &self.terms {
+            let w = term.n * wd;
+            let (sn, cs) = (w * t).sin_cos();
+            v += term.s * sn + term.c * cs;
+            d += w * (term.s * cs - term.c * sn);
+            dd -= w * w * (term.s * sn + term.c * cs);
+        }
+        (v, d, dd)
+    }
+
+    /// True if the series is odd about its mean under a half-period shift
+    /// (only odd harmonics and zero mean), so that its square has period T/2.
+    pub fn half_wave_antisymmetric(&self) -> bool {
+        self.mean == 0.0
+            && self
+                .terms
+                .iter()
+                .all(|t| (t.n as u64) % 2 == 1 || (t.s == 0.0 && t.c == 0.0))
+    }
+}
+
+/// Rotation kinematics of the wing.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Kinematics {
+    /// Flap frequency f_d, Hz (ω_d = 2π f_d). The paper's forward flight: 25 Hz.
+    pub flap_freq_hz: f64,
+    /// Roll α about I (finite), rad.
+    pub alpha: Angle,
+    /// Pitch β about J′ (finite), rad.
+    pub beta: Angle,
+    /// Yaw γ (small; first order only), rad. Above 0.3 rad the small-angle model is stretched.
+    pub gamma: Angle,
+}
+
+/// Yaw amplitudes above this (rad) are outside the paper's small-angle range: allowed, with a warning.
+pub const SMALL_ANGLE_LIMIT: f64 = 0.3;
+
+/// Angles and their first two derivatives at one instant (rad, rad/s, rad/s²).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct RateState {
+    /// α, α̇, α̈.
+    pub alpha: f64,
+    /// α̇.
+    pub alpha_dot: f64,
+    /// α̈.
+    pub alpha_ddot: f64,
+    /// β.
+    pub beta: f64,
+    /// β̇.
+    pub beta_dot: f64,
+    /// β̈.
+    pub beta_ddot: f64,
+    /// γ.
+    pub gamma: f64,
+    /// γ̇.
+    pub gamma_dot: f64,
+    /// γ̈.
+    pub gamma_ddot: f64,
+}
+
+impl RateState {
+    /// Angular velocity of the I″–J″–K″ frame in its own components (Eq. 1), rad/s:
+    /// Ω = (α̇ cos β, β̇, α̇ sin β).
+    pub fn omega(&self) -> [f64; 3] {
+        let (sb, cb) = self.beta.sin_cos();
+        [self.alpha_dot * cb, self.beta_dot, self.alpha_dot * sb]
+    }
+
+    /// Its time derivative, rad/s²:
+    /// Ω̇ = (α̈ cos β − α̇ β̇ sin β, β̈, α̈ sin β + α̇ β̇ cos β).
+    pub fn omega_dot(&self) -> [f64; 3] {
+        let (sb, cb) = self.beta.sin_cos();
+        [
+            self.alpha_ddot * cb - self.alpha_dot * self.beta_dot * sb,
+            self.beta_ddot,
+            self.alpha_ddot * sb + self.alpha_dot * self.beta_dot * cb,
+        ]
+    }
+}
+
+impl Kinematics {
+    /// The paper's example: α = α0 sin ω_d t, β = β0 sin ω_d t, γ = γ0 sin ω_d t.
+    pub fn sinusoidal(flap_freq_hz: f64, alpha0: f64, beta0: f64, gamma0: f64) -> Self {
+        Kinematics {
+            flap_freq_hz,
+            alpha: Angle::sine(alpha0),
+            beta: Angle::sine(beta0),
+            gamma: Angle::sine(gamma0),
+        }
+    }
+
+    /// Forward flight of Manduca sexta (paper Table 5): α0 = 0.8, β0 = 0.5, γ0 = 0.2 rad at 25 Hz.
+    pub fn paper_forward_flight() -> Self {
+        Self::sinusoidal(25.0, 0.8, 0.5, 0.2)
+    }
+
+    /// Flap period T = 1 / f_d, s.
+    pub fn period(&self) -> f64 {
+        1.0 / self.flap_freq_hz
+    }
+
+    /// ω_d = 2π f_d, rad/s.
+    pub fn omega_d(&self) -> f64 {
+        2.0 * PI * self.flap_freq_hz
+    }
+
+    /// Validates frequency and every angle.
+    pub fn validate(&self) -> Result<()> {
+        crate::error::check_positive(
+            "kinematics.flap_freq_hz",
+            self.flap_freq_hz,
+            MAX_FLAP_HZ,
+            "Hz",
+        )?;
+        self.alpha.validate("kinematics.alpha")?;
+        self.beta.validate("kinematics.beta")?;
+        self.gamma.validate("kinematics.gamma")?;
+        Ok(())
+    }
+
+    /// Human-readable warnings (not errors), e.g. yaw beyond the small-angle range.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut w = Vec::new();
+        let g = self.gamma.series();
+        let peak = g.mean.abs() + g.terms.iter().map(|t| t.s.hypot(t.c)).sum::<f64>();
+        if peak > SMALL_ANGLE_LIMIT {
+            w.push(format!(
+                "yaw γ reaches up to {peak:.3} rad, beyond the small-angle range (≤ {SMALL_ANGLE_LIMIT} rad) assumed by Eq. 13; results are extrapolations"
+            ));
+        }
+        w
+    }
+
+    /// Resolve into evaluable series (do this once, then call [`Compiled::state`] many times).
+    pub fn compile(&self) -> Compiled {
+        Compiled {
+            wd: self.omega_d(),
+            alpha: self.alpha.series(),
+            beta: self.beta.series(),
+            gamma: self.gamma.series(),
+        }
+    }
+
+    /// Angles and rates at time `t` (s). Convenience; compiles on every call.
+    pub fn rate_state(&self, t: f64) -> RateState {
+        self.compile().state(t)
+    }
+}
+
+/// Kinematics resolved into Fourier series, ready for fast evaluation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Compiled {
+    /// ω_d, rad/s.
+    pub wd: f64,
+    /// Roll series.
+    pub alpha: Series,
+    /// Pitch series.
+    pub beta: Series,
+    /// Yaw series.
+    pub gamma: Series,
+}
+
+impl Compiled {
+    /// Angles and rates at time `t` (s).
+    pub fn state(&self, t: f64) -> RateState {
+        let (alpha, alpha_dot, alpha_ddot) = self.alpha.eval(t, self.wd);
+        let (beta, beta_dot, beta_ddot) = self.beta.eval(t, self.wd);
+        let (gamma, gamma_dot, gamma_ddot) = self.gamma.eval(t, self.wd);
+        RateState {
+            alpha,
+            alpha_dot,
+            alpha_ddot,
+            beta,
+            beta_dot,
+            beta_ddot,
+            gamma,
+            gamma_dot,
+            gamma_ddot,
+        }
+    }
+
+    /// Whether the centrifugal softening α̇² cos²β + β̇² has period T/2 (true when α and β
+    /// contain only odd harmonics and β has zero mean — the paper's symmetric sinusoids).
+    /// Then Floquet analysis can use the half period.
+    pub fn softening_has_half_period(&self) -> bool {
+        // α̇ only needs odd harmonics (its mean does not enter α̇); β must flip sign.
+        let alpha_odd = self
+            .alpha
+            .terms
+            .iter()
+            .all(|t| (t.n as u64) % 2 == 1 || (t.s == 0.0 && t.c == 0.0));
+        alpha_odd && self.beta.half_wave_antisymmetric()
+    }
+}
