@@ -1,0 +1,60 @@
+//! Force-term contributions (paper §4.1): the share of term j is
+//! 100 · Σ_i q_j(t_i)² / Σ_i q_total(t_i)², in percent. The three shares need not add to 100 %:
+//! Σ q_total² = Σ (Σ_j q_j)² contains cross terms 2 Σ q_j q_l, which can be either sign.
+
+use serde::{Deserialize, Serialize};
+
+/// Contribution of each force term, percent.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Contributions {
+    /// Euler share, %.
+    pub euler: f64,
+    /// Centrifugal share, %.
+    pub centrifugal: f64,
+    /// Coriolis share, %.
+    pub coriolis: f64,
+}
+
+impl Contributions {
+    /// The term with the largest share and its name.
+    pub fn dominant(&self) -> (&'static str, f64) {
+        let mut best = ("euler", self.euler);
+        for (n, v) in [
+            ("centrifugal", self.centrifugal),
+            ("coriolis", self.coriolis),
+        ] {
+            if v > best.1 {
+                best = (n, v);
+            }
+        }
+        best
+    }
+}
+
+/// Σ x².
+pub fn sum_sq(x: &[f64]) -> f64 {
+    x.iter().map(|v| v * v).sum()
+}
+
+/// Shares of the three partial responses in the total (paper's definition), percent.
+/// Returns zeros when the total is identically zero.
+pub fn contributions(
+    euler: &[f64],
+    centrifugal: &[f64],
+    coriolis: &[f64],
+    total: &[f64],
+) -> Contributions {
+    let den = sum_sq(total);
+    if den <= 0.0 || !den.is_finite() {
+        return Contributions {
+            euler: 0.0,
+            centrifugal: 0.0,
+            coriolis: 0.0,
+        };
+    }
+    Contributions {
+        euler: 100.0 * sum_sq(euler) / den,
+        centrifugal: 100.0 * sum_sq(centrifugal) / den,
+        coriolis: 100.0 * sum_sq(coriolis) / den,
+    }
+}

@@ -1,0 +1,180 @@
+//! Parameter sweeps (paper §4.1, Fig. 6: contributions versus yaw amplitude γ0), generalised to
+//! any scalar input: γ0, α0, β0 (amplitude of the first harmonic), flap frequency, damping.
+
+use crate::config::SimConfig;
+use crate::error::{Result, WingbeatError};
+use crate::kinematics::{Angle, Harmonic};
+use crate::simulate::simulate;
+use serde::{Deserialize, Serialize};
+
+/// The swept quantity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SweepParam {
+    /// Yaw amplitude of the first harmonic, rad.
+    Gamma0,
+    /// Roll amplitude of the first harmonic, rad.
+    Alpha0,
+    /// Pitch amplitude of the first harmonic, rad.
+    Beta0,
+    /// Flap frequency, Hz.
+    FlapHz,
+    /// Damping ratio of every mode.
+    Zeta,
+}
+
+impl SweepParam {
+    /// Parses a CLI name.
+    pub fn parse(s: &str) -> Result<Self> {
+        Ok(match s {
+            "gamma0" => SweepParam::Gamma0,
+            "alpha0" => SweepParam::Alpha0,
+            "beta0" => SweepParam::Beta0,
+            "flap_hz" | "flap-hz" => SweepParam::FlapHz,
+            "zeta" => SweepParam::Zeta,
+            _ => {
+                return Err(WingbeatError::invalid(
+                    "sweep.param",
+                    s,
+                    "one of gamma0, alpha0, beta0, flap_hz, zeta",
+                ))
+            }
+        })
+    }
+}
+
+/// Sweep options.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepOptions {
+    /// What to sweep.
+    pub param: SweepParam,
+    /// First value.
+    pub from: f64,
+    /// Last value.
+    pub to: f64,
+    /// Number of points (≥ 2), evenly spaced.
+    pub points: usize,
+}
+
+/// Most sweep points.
+pub const MAX_POINTS: usize = 2001;
+
+/// Result at one sweep value for one mode.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepModePoint {
+    /// Contribution shares, percent.
+    pub contribution_percent: crate::analysis::contribution::Contributions,
+    /// Floquet effective frequency, Hz.
+    pub effective_freq_hz: f64,
+    /// Beat period against the nearest flap harmonic, s.
+    pub beat_period_s: Option<f64>,
+    /// Peak |q_total|.
+    pub peak_abs_q: f64,
+    /// Whether the mode is Floquet-stable.
+    pub stable: bool,
+}
+
+/// One sweep value.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SweepPoint {
+    /// The swept value.
+    pub value: f64,
+    /// Per-mode results.
+    pub modes: Vec<SweepModePoint>,
+}
+
+/// A sweep's output.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Sweep {
+    /// What was swept.
+    pub param: SweepParam,
+    /// The points.
+    pub points: Vec<SweepPoint>,
+}
+
+fn set_first_harmonic(angle: &mut Angle, field: &str, v: f64) -> Result<()> {
+    match angle {
+        Angle::Fourier { harmonics, .. } => {
+            if let Some(h) = harmonics.iter_mut().find(|h| h.n == 1) {
+                h.amplitude = v;
+            } else {
+                harmonics.push(Harmonic {
+                    n: 1,
+                    amplitude: v,
+                    phase: 0.0,
+                });
+            }
+            Ok(())
+        }
+        Angle::Sampled { .. } => Err(WingbeatError::invalid(
+            field,
+            "sampled kinematics",
+            "Fourier kinematics (a sampled table has no amplitude to sweep)",
+        )),
+    }
+}
+
+/// Applies `param = v` to a copy of `cfg`.
+pub fn apply(cfg: &SimConfig, param: SweepParam, v: f64) -> Result<SimConfig> {
+    let mut c = cfg.clone();
+    match param {
+        SweepParam::Gamma0 => set_first_harmonic(&mut c.kinematics.gamma, "kinematics.gamma", v)?,
+        SweepParam::Alpha0 => set_first_harmonic(&mut c.kinematics.alpha, "kinematics.alpha", v)?,
+        SweepParam::Beta0 => set_first_harmonic(&mut c.kinematics.beta, "kinematics.beta", v)?,
+        SweepParam::FlapHz => c.kinematics.flap_freq_hz = v,
+        SweepParam::Zeta => c.modes.iter_mut().for_each(|m| m.zeta = v),
+    }
+    Ok(c)
+}
+
+/// Runs the sweep; `progress(done, total)` is called after each point.
+pub fn sweep(
+    cfg: &SimConfig,
+    opts: &SweepOptions,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<Sweep> {
+    if opts.points < 2 || opts.points > MAX_POINTS {
+        return Err(WingbeatError::invalid(
+            "sweep.points",
+            opts.points,
+            format!("an integer in [2, {MAX_POINTS}]"),
+        ));
+    }
+    crate::error::check_range("sweep.from", opts.from, -1e6, 1e6, "")?;
+    crate::error::check_range("sweep.to", opts.to, -1e6, 1e6, "")?;
+    let mut points = Vec::with_capacity(opts.points);
+    for i in 0..opts.points {
+        let v = opts.from + (opts.to - opts.from) * i as f64 / (opts.points - 1) as f64;
+        let c = apply(cfg, opts.param, v)?;
+        let r = simulate(&c).map_err(|e| match e {
+            WingbeatError::InvalidInput {
+                field,
+                value,
+                allowed,
+            } => WingbeatError::InvalidInput {
+                field: format!("{field} (sweep value {v})"),
+                value,
+                allowed,
+            },
+            other => other,
+        })?;
+        let modes = r
+            .modes
+            .iter()
+            .map(|m| SweepModePoint {
+                contribution_percent: m.contribution_percent,
+                effective_freq_hz: m.floquet.effective_freq_hz,
+                beat_period_s: m.floquet.beat_period_s,
+                peak_abs_q: crate::analysis::strain::peak_abs(&m.q.total),
+                stable: m.floquet.stable,
+            })
+            .collect();
+        points.push(SweepPoint { value: v, modes });
+        progress(i + 1, opts.points);
+    }
+    Ok(Sweep {
+        param: opts.param,
+        points,
+    })
+}

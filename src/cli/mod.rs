@@ -1,0 +1,531 @@
+//! Argument parsing and the subcommands of the `wingbeat` binary.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use serde_json::{json, Value};
+use wingbeat::analysis::ic_map::{ic_map, IcAttribution, IcMapOptions};
+use wingbeat::analysis::psd::{welch, Detrend, WelchOptions};
+use wingbeat::analysis::sweep::{apply, sweep, SweepOptions, SweepParam};
+use wingbeat::config::SimConfig;
+use wingbeat::model::Mode;
+use wingbeat::simulate::{force_series, simulate, SimResult};
+use wingbeat::{Result, WingbeatError};
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "wingbeat",
+    version,
+    about = "Inertial-elastic dynamics of a flapping insect wing (Jankauski & Shen, Eq. 13)",
+    long_about = "wingbeat solves the modal equation of a flapping wing,\n\n  q̈ + 2ζω q̇ + [ω² − (α̇² cos²β + β̇²)] q = F_Euler + F_centrifugal + F_Coriolis,\n\nfor each mode, separately per force term, and analyses the result: Floquet effective\nfrequency and beat period, spectra, force contributions, sweeps, initial-condition maps and\nstrain. With no config, every command uses the paper's forward-flight case (α0 = 0.8,\nβ0 = 0.5, γ0 = 0.2 rad at 25 Hz; modes at 62.5 and 86.9 Hz from Tables 3–6).\n\nExamples:\n  wingbeat simulate --preset paper > paper.json\n  wingbeat simulate --gamma0 0.1 --zeta 0.01 --duration 5 --format csv > run.csv\n  wingbeat psd --detrend none\n  wingbeat sweep gamma0 --from 0 --to 0.3 --points 31\n  wingbeat sweep ic --mode 0 --n 101\n  wingbeat reproduce"
+)]
+struct Cli {
+    #[command(subcommand)]
+    cmd: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Solve Eq. 13: partial and total responses, contributions, Floquet summary, strain.
+    Simulate(SimulateArgs),
+    /// Welch PSD of each force term (and the stiffness term and the response) per mode.
+    Psd(PsdArgs),
+    /// Parameter sweeps: `gamma0` (Fig. 6) or any of alpha0, beta0, flap_hz, zeta; `ic` (Fig. 7).
+    Sweep(SweepArgs),
+    /// Every claim of the paper's §3–4: what it says, what wingbeat computes, whether it holds.
+    Reproduce(ReproduceArgs),
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq)]
+enum Format {
+    Json,
+    Csv,
+    Text,
+}
+
+/// Inputs shared by every command that runs a simulation.
+#[derive(Args, Debug, Clone)]
+struct SimInput {
+    /// Start from a named preset (only `paper`: Tables 3–6, forward flight).
+    #[arg(long, default_value = "paper")]
+    preset: String,
+    /// JSON config file (SimConfig: kinematics, modes, duration_s, sample_rate_hz,
+    /// initial_conditions); missing fields take the paper's values. Flags below override it.
+    #[arg(long, value_name = "FILE")]
+    config: Option<std::path::PathBuf>,
+    /// Replace the modes by those in a JSON file: the output of `wingbeat modes` (FE) or
+    /// `{"modes": [{"freq_hz":…, "a":[x,y], …}]}`.
+    #[arg(long, value_name = "FILE")]
+    modes: Option<std::path::PathBuf>,
+    /// Roll amplitude α0 (first harmonic), rad.
+    #[arg(long, allow_negative_numbers = true)]
+    alpha0: Option<f64>,
+    /// Pitch amplitude β0 (first harmonic), rad.
+    #[arg(long, allow_negative_numbers = true)]
+    beta0: Option<f64>,
+    /// Yaw amplitude γ0 (first harmonic), rad. Above 0.3 rad: allowed, with a warning.
+    #[arg(long, allow_negative_numbers = true)]
+    gamma0: Option<f64>,
+    /// Flap frequency f_d, Hz (ω_d = 2π f_d).
+    #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
+    flap_hz: Option<f64>,
+    /// Damping ratio ζ for every mode (the paper: 0; §4.3: 0.01).
+    #[arg(long, allow_negative_numbers = true)]
+    zeta: Option<f64>,
+    /// Simulated duration, s.
+    #[arg(long, value_name = "S", allow_negative_numbers = true)]
+    duration: Option<f64>,
+    /// Output sample rate, Hz.
+    #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
+    sample_rate: Option<f64>,
+    /// Initial displacements q_k(0), comma-separated per mode.
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    q0: Vec<f64>,
+    /// Initial velocities q̇_k(0), comma-separated per mode.
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    qdot0: Vec<f64>,
+}
+
+#[derive(Args, Debug)]
+struct SimulateArgs {
+    #[command(flatten)]
+    input: SimInput,
+    /// Output format: json (everything) or csv (time series only).
+    #[arg(long, value_enum, default_value = "json")]
+    format: Format,
+    /// Time the computation: run it N times and report the median in `timing_ms`.
+    #[arg(long, default_value_t = 1)]
+    repeat: usize,
+}
+
+#[derive(Copy, Clone, Debug, ValueEnum)]
+enum DetrendArg {
+    None,
+    Mean,
+    Linear,
+}
+
+#[derive(Args, Debug)]
+struct PsdArgs {
+    #[command(flatten)]
+    input: SimInput,
+    /// Welch segment length, samples (resolution = sample rate / this).
+    #[arg(long, default_value_t = 8192)]
+    segment_len: usize,
+    /// Segment overlap fraction, [0, 0.95].
+    #[arg(long, default_value_t = 0.5)]
+    overlap: f64,
+    /// Detrending per segment. Default none: the Coriolis force's large mean stays visible.
+    #[arg(long, value_enum, default_value = "none")]
+    detrend: DetrendArg,
+    /// Peaks to list per spectrum.
+    #[arg(long, default_value_t = 8)]
+    peaks: usize,
+}
+
+#[derive(Args, Debug)]
+struct SweepArgs {
+    /// What to sweep: gamma0, alpha0, beta0, flap_hz, zeta, or `ic` for the initial-condition map.
+    what: String,
+    #[command(flatten)]
+    input: SimInput,
+    /// First value (default 0 for gamma0).
+    #[arg(long, allow_negative_numbers = true)]
+    from: Option<f64>,
+    /// Last value (default 0.3 for gamma0).
+    #[arg(long, allow_negative_numbers = true)]
+    to: Option<f64>,
+    /// Number of points.
+    #[arg(long, default_value_t = 31)]
+    points: usize,
+    /// IC map: mode index (0-based).
+    #[arg(long, default_value_t = 0)]
+    mode: usize,
+    /// IC map: grid points per axis.
+    #[arg(long, default_value_t = 101)]
+    n: usize,
+    /// IC map: who carries the free vibration (see docs): forced (default) or carried.
+    #[arg(long, default_value = "forced")]
+    attribution: String,
+    /// Output format: json or csv.
+    #[arg(long, value_enum, default_value = "json")]
+    format: Format,
+}
+
+#[derive(Args, Debug)]
+struct ReproduceArgs {
+    /// text (a readable report) or json.
+    #[arg(long, value_enum, default_value = "text")]
+    format: Format,
+}
+
+/// Parses the command line and runs; returns what to print.
+pub fn run() -> Result<String> {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(
+                e.kind(),
+                ErrorKind::DisplayHelp
+                    | ErrorKind::DisplayVersion
+                    | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+            ) {
+                let _ = e.print();
+                std::process::exit(0);
+            }
+            let _ = e.print();
+            std::process::exit(2);
+        }
+    };
+    match cli.cmd {
+        Command::Simulate(a) => cmd_simulate(a),
+        Command::Psd(a) => cmd_psd(a),
+        Command::Sweep(a) => cmd_sweep(a),
+        Command::Reproduce(a) => cmd_reproduce(a),
+    }
+}
+
+fn read_file(path: &std::path::Path) -> Result<String> {
+    let meta = std::fs::metadata(path).map_err(|e| WingbeatError::Parse {
+        what: path.display().to_string(),
+        message: e.to_string(),
+    })?;
+    if meta.len() > 64 * 1024 * 1024 {
+        return Err(WingbeatError::ResourceCap {
+            field: path.display().to_string(),
+            requested: format!("{} bytes", meta.len()),
+            cap: "64 MiB".into(),
+            why: "input files are read whole".into(),
+        });
+    }
+    std::fs::read_to_string(path).map_err(|e| WingbeatError::Parse {
+        what: path.display().to_string(),
+        message: e.to_string(),
+    })
+}
+
+/// Reads modes from `wingbeat modes` output or a `{"modes": [...]}` document.
+fn modes_from_json(text: &str, what: &str) -> Result<Vec<Mode>> {
+    let v: Value = serde_json::from_str(text).map_err(|e| WingbeatError::Parse {
+        what: what.into(),
+        message: e.to_string(),
+    })?;
+    if let Some(m) = v.get("modes") {
+        return serde_json::from_value(m.clone()).map_err(|e| WingbeatError::Parse {
+            what: format!("{what}: modes"),
+            message: e.to_string(),
+        });
+    }
+    let freqs: Vec<f64> = v
+        .get("freq_hz")
+        .and_then(|f| serde_json::from_value(f.clone()).ok())
+        .ok_or_else(|| WingbeatError::Parse {
+            what: what.into(),
+            message: "expected `modes` or `freq_hz` + `a` arrays".into(),
+        })?;
+    let a: Vec<[f64; 2]> = v
+        .get("a")
+        .and_then(|f| serde_json::from_value(f.clone()).ok())
+        .ok_or_else(|| WingbeatError::Parse {
+            what: what.into(),
+            message: "missing `a` array of [x, y]".into(),
+        })?;
+    if a.len() != freqs.len() {
+        return Err(WingbeatError::Parse {
+            what: what.into(),
+            message: format!("{} frequencies but {} a-vectors", freqs.len(), a.len()),
+        });
+    }
+    let kinds: Vec<String> = v
+        .get("kinds")
+        .and_then(|k| serde_json::from_value(k.clone()).ok())
+        .unwrap_or_default();
+    Ok(freqs
+        .iter()
+        .zip(&a)
+        .enumerate()
+        .map(|(k, (f, a))| Mode {
+            name: format!(
+                "{}: {}",
+                k + 1,
+                kinds.get(k).map(String::as_str).unwrap_or("FE mode")
+            ),
+            freq_hz: *f,
+            a: *a,
+            zeta: 0.0,
+            strains: vec![],
+        })
+        .collect())
+}
+
+fn build_config(inp: &SimInput) -> Result<SimConfig> {
+    if inp.preset != "paper" {
+        return Err(WingbeatError::invalid(
+            "--preset",
+            &inp.preset,
+            "one of: paper",
+        ));
+    }
+    let mut cfg = match &inp.config {
+        Some(p) => SimConfig::from_json(&read_file(p)?).map_err(|e| match e {
+            WingbeatError::Parse { message, .. } => WingbeatError::Parse {
+                what: p.display().to_string(),
+                message,
+            },
+            other => other,
+        })?,
+        None => SimConfig::paper(),
+    };
+    if let Some(p) = &inp.modes {
+        cfg.modes = modes_from_json(&read_file(p)?, &p.display().to_string())?;
+    }
+    for (flag, param, v) in [
+        ("--alpha0", SweepParam::Alpha0, inp.alpha0),
+        ("--beta0", SweepParam::Beta0, inp.beta0),
+        ("--gamma0", SweepParam::Gamma0, inp.gamma0),
+        ("--flap-hz", SweepParam::FlapHz, inp.flap_hz),
+        ("--zeta", SweepParam::Zeta, inp.zeta),
+    ] {
+        if let Some(v) = v {
+            if !v.is_finite() {
+                return Err(WingbeatError::invalid(flag, v, "a finite number"));
+            }
+            cfg = apply(&cfg, param, v)?;
+        }
+    }
+    if let Some(d) = inp.duration {
+        cfg.duration_s = d;
+    }
+    if let Some(r) = inp.sample_rate {
+        cfg.sample_rate_hz = r;
+    }
+    if !inp.q0.is_empty() || !inp.qdot0.is_empty() {
+        let n = cfg.modes.len();
+        if inp.q0.len() > n || inp.qdot0.len() > n {
+            return Err(WingbeatError::invalid(
+                "--q0/--qdot0",
+                format!("{}/{} values", inp.q0.len(), inp.qdot0.len()),
+                format!("at most one value per mode ({n} modes)"),
+            ));
+        }
+        cfg.initial_conditions = (0..n)
+            .map(|k| {
+                [
+                    inp.q0.get(k).copied().unwrap_or(0.0),
+                    inp.qdot0.get(k).copied().unwrap_or(0.0),
+                ]
+            })
+            .collect();
+    }
+    cfg.validate()?;
+    Ok(cfg)
+}
+
+fn to_json(v: &impl serde::Serialize) -> Result<String> {
+    serde_json::to_string(v).map_err(|e| WingbeatError::NonFinite {
+        what: "JSON output".into(),
+        detail: e.to_string(),
+    })
+}
+
+fn csv_of(r: &SimResult) -> String {
+    let mut out = String::from("t_s");
+    for (k, _) in r.modes.iter().enumerate() {
+        for term in ["euler", "centrifugal", "coriolis", "free", "total"] {
+            out.push_str(&format!(",q{}_{}", k + 1, term));
+        }
+        out.push_str(&format!(",qdot{}_total", k + 1));
+    }
+    if let Some(s) = &r.strain {
+        out.push_str(&format!(",eps_x_{0},eps_y_{0},gamma_xy_{0}", s.point));
+    }
+    out.push('\n');
+    for (i, t) in r.t.iter().enumerate() {
+        out.push_str(&format!("{t:.9e}"));
+        for m in &r.modes {
+            for v in [
+                m.q.euler[i],
+                m.q.centrifugal[i],
+                m.q.coriolis[i],
+                m.q.free[i],
+                m.q.total[i],
+                m.qdot_total[i],
+            ] {
+                out.push_str(&format!(",{v:.12e}"));
+            }
+        }
+        if let Some(s) = &r.strain {
+            out.push_str(&format!(
+                ",{:.12e},{:.12e},{:.12e}",
+                s.eps_x[i], s.eps_y[i], s.gamma_xy[i]
+            ));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn cmd_simulate(a: SimulateArgs) -> Result<String> {
+    let cfg = build_config(&a.input)?;
+    if a.repeat == 0 || a.repeat > 1000 {
+        return Err(WingbeatError::invalid(
+            "--repeat",
+            a.repeat,
+            "an integer in [1, 1000]",
+        ));
+    }
+    let mut times = Vec::with_capacity(a.repeat);
+    let mut r = None;
+    for _ in 0..a.repeat {
+        let t0 = std::time::Instant::now();
+        r = Some(simulate(&cfg)?);
+        times.push(t0.elapsed().as_secs_f64() * 1e3);
+    }
+    let r = r.expect("repeat ≥ 1");
+    for w in &r.warnings {
+        eprintln!("warning: {w}");
+    }
+    match a.format {
+        Format::Csv => Ok(csv_of(&r)),
+        _ => {
+            let mut v = serde_json::to_value(&r).map_err(|e| WingbeatError::NonFinite {
+                what: "JSON output".into(),
+                detail: e.to_string(),
+            })?;
+            if a.repeat > 1 {
+                times.sort_by(f64::total_cmp);
+                v["timing_ms"] =
+                    json!({"median": times[times.len() / 2], "min": times[0], "runs": times.len()});
+            }
+            to_json(&v)
+        }
+    }
+}
+
+fn cmd_psd(a: PsdArgs) -> Result<String> {
+    let cfg = build_config(&a.input)?;
+    let opts = WelchOptions {
+        segment_len: a.segment_len,
+        overlap: a.overlap,
+        detrend: match a.detrend {
+            DetrendArg::None => Detrend::None,
+            DetrendArg::Mean => Detrend::Mean,
+            DetrendArg::Linear => Detrend::Linear,
+        },
+        max_peaks: a.peaks,
+    };
+    opts.validate()?;
+    let fs = cfg.sample_rate_hz;
+    let fd = Some(cfg.kinematics.flap_freq_hz);
+    let forces = force_series(&cfg)?;
+    let sim = simulate(&cfg)?;
+    let mut modes = Vec::new();
+    for (m, f) in sim.modes.iter().zip(&forces) {
+        modes.push(json!({
+            "name": m.name,
+            "freq_hz_natural": m.freq_hz,
+            "effective_freq_hz": m.floquet.effective_freq_hz,
+            "euler": welch(&f.euler, fs, &opts, fd)?,
+            "centrifugal": welch(&f.centrifugal, fs, &opts, fd)?,
+            "coriolis": welch(&f.coriolis, fs, &opts, fd)?,
+            "softening": welch(&f.softening, fs, &opts, fd)?,
+            "response_total": welch(&m.q.total, fs, &opts, fd)?,
+        }));
+    }
+    to_json(&json!({
+        "units": {"freq_hz": "Hz", "psd": "(unit of the series)^2 / Hz, one-sided, Hann window, Welch average"},
+        "sample_rate_hz": fs,
+        "flap_freq_hz": cfg.kinematics.flap_freq_hz,
+        "options": opts,
+        "modes": modes,
+    }))
+}
+
+fn cmd_sweep(a: SweepArgs) -> Result<String> {
+    let cfg = build_config(&a.input)?;
+    if a.what == "ic" {
+        let attribution = match a.attribution.as_str() {
+            "forced" => IcAttribution::Forced,
+            "carried" => IcAttribution::Carried,
+            other => {
+                return Err(WingbeatError::invalid(
+                    "--attribution",
+                    other,
+                    "forced or carried",
+                ))
+            }
+        };
+        let opts = IcMapOptions {
+            mode: a.mode,
+            n_q: a.n,
+            n_qdot: a.n,
+            attribution,
+            ..Default::default()
+        };
+        let m = ic_map(&cfg, &opts)?;
+        if a.format == Format::Csv {
+            let mut out = String::from("q0,qdot0,coriolis_percent\n");
+            for (r, v) in m.qdot0.iter().enumerate() {
+                for (c, q) in m.q0.iter().enumerate() {
+                    out.push_str(&format!(
+                        "{q:.9e},{v:.9e},{:.6}\n",
+                        m.coriolis_percent[r * m.q0.len() + c]
+                    ));
+                }
+            }
+            return Ok(out);
+        }
+        return to_json(&m);
+    }
+    let param = SweepParam::parse(&a.what)?;
+    let (from, to) = match param {
+        SweepParam::Gamma0 => (a.from.unwrap_or(0.0), a.to.unwrap_or(0.3)),
+        _ => (
+            a.from.ok_or_else(|| {
+                WingbeatError::invalid("--from", "missing", "a value (required for this parameter)")
+            })?,
+            a.to.ok_or_else(|| {
+                WingbeatError::invalid("--to", "missing", "a value (required for this parameter)")
+            })?,
+        ),
+    };
+    let opts = SweepOptions {
+        param,
+        from,
+        to,
+        points: a.points,
+    };
+    let s = sweep(&cfg, &opts, |done, total| {
+        if total >= 50 && done % (total / 10).max(1) == 0 {
+            eprintln!("sweep: {done}/{total}");
+        }
+    })?;
+    if a.format == Format::Csv {
+        let mut out = String::from("value,mode,euler_percent,centrifugal_percent,coriolis_percent,effective_freq_hz,beat_period_s,stable\n");
+        for p in &s.points {
+            for (k, m) in p.modes.iter().enumerate() {
+                let c = m.contribution_percent;
+                out.push_str(&format!(
+                    "{},{},{:.6},{:.6},{:.6},{:.9},{},{}\n",
+                    p.value,
+                    k,
+                    c.euler,
+                    c.centrifugal,
+                    c.coriolis,
+                    m.effective_freq_hz,
+                    m.beat_period_s.map_or(String::new(), |b| format!("{b:.9}")),
+                    m.stable
+                ));
+            }
+        }
+        return Ok(out);
+    }
+    to_json(&s)
+}
+
+fn cmd_reproduce(a: ReproduceArgs) -> Result<String> {
+    let rep = wingbeat::reproduce::reproduce()?;
+    match a.format {
+        Format::Json => to_json(&rep),
+        _ => Ok(rep.to_text()),
+    }
+}

@@ -1,0 +1,150 @@
+//! Input types shared by every front end (CLI config files, the wasm API): one source of truth.
+//! `Default` gives the paper's forward-flight case.
+
+use crate::error::{check_positive, check_range, Result, WingbeatError};
+use crate::kinematics::Kinematics;
+use crate::model::{ModalModel, Mode};
+use crate::presets;
+use serde::{Deserialize, Serialize};
+
+/// Longest simulated duration accepted, s.
+pub const MAX_DURATION_S: f64 = 3600.0;
+/// Highest output sample rate accepted, Hz.
+pub const MAX_SAMPLE_RATE_HZ: f64 = 1.0e6;
+/// Most output samples per series.
+pub const MAX_SAMPLES: usize = 2_000_000;
+/// Most output values per run (samples × modes); each mode stores 7 series of f64, so the cap
+/// keeps a run below roughly 0.5 GB.
+pub const MAX_SAMPLE_VALUES: usize = 8_000_000;
+
+/// A simulation request.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct SimConfig {
+    /// Rotation kinematics.
+    pub kinematics: Kinematics,
+    /// Modes (frequency, a_k, damping, strains).
+    pub modes: Vec<Mode>,
+    /// Simulated time, s.
+    pub duration_s: f64,
+    /// Output sample rate, Hz (samples at t = i / rate, i = 0..).
+    pub sample_rate_hz: f64,
+    /// Initial conditions (q_k(0), q̇_k(0)) per mode; missing entries are zero.
+    pub initial_conditions: Vec<[f64; 2]>,
+}
+
+impl Default for SimConfig {
+    fn default() -> Self {
+        SimConfig {
+            kinematics: presets::paper_kinematics(),
+            modes: presets::paper_modes(0.0),
+            duration_s: 2.0,
+            sample_rate_hz: 10_000.0,
+            initial_conditions: vec![],
+        }
+    }
+}
+
+impl SimConfig {
+    /// The paper's forward-flight case (Tables 3–6), zero initial conditions, 2 s at 10 kHz.
+    pub fn paper() -> Self {
+        Self::default()
+    }
+
+    /// Parses a JSON config; unknown fields are errors, missing ones take the paper's values.
+    pub fn from_json(text: &str) -> Result<Self> {
+        serde_json::from_str(text).map_err(|e| WingbeatError::Parse {
+            what: "config JSON".into(),
+            message: e.to_string(),
+        })
+    }
+
+    /// Number of output samples.
+    pub fn n_samples(&self) -> usize {
+        (self.duration_s * self.sample_rate_hz).floor() as usize + 1
+    }
+
+    /// Validates every field and the resource caps.
+    pub fn validate(&self) -> Result<()> {
+        self.model().validate()?;
+        check_positive("duration_s", self.duration_s, MAX_DURATION_S, "s")?;
+        check_positive(
+            "sample_rate_hz",
+            self.sample_rate_hz,
+            MAX_SAMPLE_RATE_HZ,
+            "Hz",
+        )?;
+        let n = self.duration_s * self.sample_rate_hz;
+        if n + 1.0 > MAX_SAMPLES as f64 {
+            return Err(WingbeatError::ResourceCap {
+                field: "duration_s × sample_rate_hz".into(),
+                requested: format!("{:.0} samples", n + 1.0),
+                cap: format!("{MAX_SAMPLES} samples"),
+                why: "memory for the output series".into(),
+            });
+        }
+        if (n + 1.0) * self.modes.len() as f64 > MAX_SAMPLE_VALUES as f64 {
+            return Err(WingbeatError::ResourceCap {
+                field: "samples × modes".into(),
+                requested: format!("{:.0}", (n + 1.0) * self.modes.len() as f64),
+                cap: format!("{MAX_SAMPLE_VALUES}"),
+                why: "memory for the output series".into(),
+            });
+        }
+        if n < 1.0 {
+            return Err(WingbeatError::invalid(
+                "duration_s × sample_rate_hz",
+                n,
+                "at least 1 sample interval (raise the duration or the sample rate)",
+            ));
+        }
+        if self.initial_conditions.len() > self.modes.len() {
+            return Err(WingbeatError::invalid(
+                "initial_conditions",
+                format!("{} entries", self.initial_conditions.len()),
+                format!(
+                    "at most one [q0, qdot0] per mode ({} modes)",
+                    self.modes.len()
+                ),
+            ));
+        }
+        for (k, ic) in self.initial_conditions.iter().enumerate() {
+            check_range(
+                &format!("initial_conditions[{k}][0]"),
+                ic[0],
+                -1.0e6,
+                1.0e6,
+                "(q units)",
+            )?;
+            check_range(
+                &format!("initial_conditions[{k}][1]"),
+                ic[1],
+                -1.0e9,
+                1.0e9,
+                "(q units per s)",
+            )?;
+        }
+        Ok(())
+    }
+
+    /// The modal model part.
+    pub fn model(&self) -> ModalModel {
+        ModalModel {
+            kinematics: self.kinematics.clone(),
+            modes: self.modes.clone(),
+        }
+    }
+
+    /// Initial condition of mode k.
+    pub fn ic(&self, k: usize) -> [f64; 2] {
+        self.initial_conditions
+            .get(k)
+            .copied()
+            .unwrap_or([0.0, 0.0])
+    }
+
+    /// Warnings that do not stop the run.
+    pub fn warnings(&self) -> Vec<String> {
+        self.kinematics.warnings()
+    }
+}

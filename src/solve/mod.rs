@@ -1,0 +1,118 @@
+//! Solvers for linear, time-periodic, second-order modal equations such as Eq. 13.
+//!
+//! Every equation handled here has the form
+//!
+//! ```text
+//! q̈ + c q̇ + k(t) q = f_j(t),   j = 0..n_forces,
+//! ```
+//!
+//! with constant damping c (1/s), stiffness k(t) and forcings f_j(t) periodic with period T.
+//! Several right-hand sides share one homogeneous part, so one sweep produces the partial
+//! responses to the Euler, centrifugal and Coriolis terms and to their sum.
+//!
+//! * [`propagator`] — the production solver: integrate one period once (Gauss–Legendre
+//!   collocation, order 8), store the state-transition matrix and particular solutions at every
+//!   output phase, then step period to period by exact affine maps. Exact to rounding apart from
+//!   the one-period integration, whose error is estimated and reported.
+//! * [`gauss`] — the order-8 Gauss–Legendre step for linear systems (A-stable, symplectic).
+//! * [`rk4`] — the classical explicit Runge–Kutta method, an independent second method used to
+//!   cross-check the propagator.
+
+pub mod gauss;
+pub mod propagator;
+pub mod rk4;
+
+/// A linear second-order ODE with periodic coefficients and several forcings.
+pub trait LinearOde {
+    /// Number of forcing functions f_j (≤ [`MAX_FORCES`]).
+    fn n_forces(&self) -> usize;
+    /// Constant damping coefficient c, 1/s (2 ζ ω for a modal equation).
+    fn damping(&self) -> f64;
+    /// Stiffness k(t) (1/s²); writes f_j(t) into `f` (length `n_forces`).
+    fn eval(&self, t: f64, f: &mut [f64]) -> f64;
+    /// Period T of the coefficients, s.
+    fn period(&self) -> f64;
+    /// Period of the homogeneous part (k and c) alone; a divisor of T (T/2 for the paper's
+    /// symmetric sinusoids). Default: T.
+    fn homogeneous_period(&self) -> f64 {
+        self.period()
+    }
+    /// The highest angular frequency (rad/s) the solution or forcings contain to relevant
+    /// accuracy; the step size is chosen from it.
+    fn freq_scale(&self) -> f64;
+}
+
+/// Most forcing columns one solve carries.
+pub const MAX_FORCES: usize = 6;
+
+/// The modal equation (Eq. 13) of one mode as a [`LinearOde`], with forcing columns
+/// `[euler, centrifugal, coriolis, total]` in that order.
+pub struct ModalOde<'a> {
+    /// Compiled kinematics.
+    pub kin: &'a crate::kinematics::Compiled,
+    /// The mode.
+    pub mode: &'a crate::model::Mode,
+    /// Largest harmonic number present in the kinematics (for the step size).
+    pub max_harmonic: f64,
+    /// Whether the softening has period T/2.
+    pub half_period: bool,
+}
+
+impl<'a> ModalOde<'a> {
+    /// Column indices of the forcings.
+    pub const EULER: usize = 0;
+    /// Centrifugal column.
+    pub const CENTRIFUGAL: usize = 1;
+    /// Coriolis column.
+    pub const CORIOLIS: usize = 2;
+    /// Total (sum of the three) column.
+    pub const TOTAL: usize = 3;
+
+    /// Wraps one mode under compiled kinematics.
+    pub fn new(kin: &'a crate::kinematics::Compiled, mode: &'a crate::model::Mode) -> Self {
+        let max_harmonic = [&kin.alpha, &kin.beta, &kin.gamma]
+            .iter()
+            .flat_map(|s| s.terms.iter().map(|t| t.n))
+            .fold(1.0_f64, f64::max);
+        ModalOde {
+            kin,
+            mode,
+            max_harmonic,
+            half_period: kin.softening_has_half_period(),
+        }
+    }
+}
+
+impl LinearOde for ModalOde<'_> {
+    fn n_forces(&self) -> usize {
+        4
+    }
+    fn damping(&self) -> f64 {
+        2.0 * self.mode.zeta * self.mode.omega()
+    }
+    fn eval(&self, t: f64, f: &mut [f64]) -> f64 {
+        let c = crate::model::coefficients(self.mode, &self.kin.state(t));
+        f[0] = c.euler;
+        f[1] = c.centrifugal;
+        f[2] = c.coriolis;
+        f[3] = c.total_force();
+        c.stiffness
+    }
+    fn period(&self) -> f64 {
+        2.0 * std::f64::consts::PI / self.kin.wd
+    }
+    fn homogeneous_period(&self) -> f64 {
+        if self.half_period {
+            0.5 * self.period()
+        } else {
+            self.period()
+        }
+    }
+    fn freq_scale(&self) -> f64 {
+        // Forcing terms are products of up to three kinematic series, so they carry harmonics
+        // up to ~3× the highest kinematic one (and decaying tails beyond).
+        let w = self.mode.omega();
+        let damp = 2.0 * self.mode.zeta * w;
+        w.max(4.0 * self.max_harmonic * self.kin.wd).max(damp)
+    }
+}
