@@ -20,8 +20,22 @@ use std::f64::consts::PI;
 
 type C64 = Complex<f64>;
 
-/// Modulus above which a multiplier counts as unstable.
+/// Modulus above which a complex multiplier pair counts as unstable.
 pub const STABILITY_TOL: f64 = 1e-9;
+/// The same for real multipliers: near a double real multiplier (±1, the edge of a
+/// parametric-resonance tongue) rounding of order ε in M moves the eigenvalues by √ε, so the
+/// tolerance there is √ε-sized.
+pub const STABILITY_TOL_REAL: f64 = 1e-7;
+
+/// Stability from the multipliers over one period.
+pub fn is_stable(l: &[C64; 2]) -> bool {
+    let m = l[0].norm().max(l[1].norm());
+    if l[0].im != 0.0 {
+        m <= 1.0 + STABILITY_TOL
+    } else {
+        m <= 1.0 + STABILITY_TOL_REAL
+    }
+}
 
 /// Eigenvalues of a real 2×2 matrix.
 pub fn multipliers(m: &Matrix2<f64>) -> [C64; 2] {
@@ -51,7 +65,7 @@ pub struct FloquetResult {
     pub multipliers: Vec<[f64; 2]>,
     /// The monodromy matrix over T, row-major [[m00, m01], [m10, m11]].
     pub monodromy: [[f64; 2]; 2],
-    /// True when max |λ| ≤ 1 + 1e-9 (no parametric growth).
+    /// True when no multiplier lies outside the unit circle (see [`is_stable`] for tolerances).
     pub stable: bool,
     /// Largest multiplier modulus.
     pub max_modulus: f64,
@@ -171,7 +185,7 @@ pub fn analyse<O: LinearOde + ?Sized>(
     FloquetResult {
         multipliers: lt.iter().map(|z| [z.re, z.im]).collect(),
         monodromy: [[mt[(0, 0)], mt[(0, 1)]], [mt[(1, 0)], mt[(1, 1)]]],
-        stable: max_modulus <= 1.0 + STABILITY_TOL,
+        stable: is_stable(&lt),
         max_modulus,
         growth_rate_per_s: max_modulus.ln() / t,
         homogeneous_period_s: tp,

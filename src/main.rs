@@ -6,7 +6,9 @@ mod cli;
 fn main() {
     match cli::run() {
         Ok(text) => {
-            if !text.is_empty() {
+            if text.ends_with('\n') {
+                print!("{text}");
+            } else if !text.is_empty() {
                 println!("{text}");
             }
         }

@@ -1,0 +1,166 @@
+//! Kinematics (Eq. 1): the angular velocity formula against rotation matrices, and the
+//! sampled-table interpolant against the series it was sampled from.
+
+use nalgebra::{Matrix3, Rotation3, Vector3};
+use wingbeat::kinematics::{Angle, Harmonic, Kinematics};
+
+fn rot(alpha: f64, beta: f64) -> Matrix3<f64> {
+    // Roll α about I, then pitch β about the rolled J′ (intrinsic): R = R_x(α) R_y(β).
+    (Rotation3::from_axis_angle(&Vector3::x_axis(), alpha)
+        * Rotation3::from_axis_angle(&Vector3::y_axis(), beta))
+    .into_inner()
+}
+
+#[test]
+fn omega_matches_rotation_matrix_derivative() {
+    let k = Kinematics {
+        flap_freq_hz: 25.0,
+        alpha: Angle::Fourier {
+            mean: 0.1,
+            harmonics: vec![
+                Harmonic {
+                    n: 1,
+                    amplitude: 0.8,
+                    phase: 0.3,
+                },
+                Harmonic {
+                    n: 2,
+                    amplitude: 0.1,
+                    phase: -1.0,
+                },
+            ],
+        },
+        beta: Angle::Fourier {
+            mean: -0.2,
+            harmonics: vec![Harmonic {
+                n: 1,
+                amplitude: 0.5,
+                phase: 1.1,
+            }],
+        },
+        gamma: Angle::sine(0.2),
+    };
+    let c = k.compile();
+    let h = 1e-6;
+    for j in 0..17 {
+        let t = j as f64 * 0.04 / 17.0 + 0.0013;
+        let s = c.state(t);
+        let r = rot(s.alpha, s.beta);
+        let sp = c.state(t + h);
+        let sm = c.state(t - h);
+        let rdot = (rot(sp.alpha, sp.beta) - rot(sm.alpha, sm.beta)) / (2.0 * h);
+        // Body-frame angular velocity: [Ω]× = Rᵀ Ṙ.
+        let w = r.transpose() * rdot;
+        let om = s.omega();
+        let scale = 2.0 * std::f64::consts::PI * 25.0;
+        assert!(
+            (w[(2, 1)] - om[0]).abs() < 1e-6 * scale,
+            "Ω_x at t={t}: {} vs {}",
+            w[(2, 1)],
+            om[0]
+        );
+        assert!((w[(0, 2)] - om[1]).abs() < 1e-6 * scale, "Ω_y at t={t}");
+        assert!((w[(1, 0)] - om[2]).abs() < 1e-6 * scale, "Ω_z at t={t}");
+        // Ω̇ against a central difference of Ω.
+        let omd = s.omega_dot();
+        let (op, omm) = (sp.omega(), sm.omega());
+        for i in 0..3 {
+            let fd = (op[i] - omm[i]) / (2.0 * h);
+            assert!(
+                (fd - omd[i]).abs() < 1e-5 * scale * scale,
+                "Ω̇[{i}] at t={t}: {fd} vs {}",
+                omd[i]
+            );
+        }
+    }
+}
+
+#[test]
+fn sampled_table_reproduces_its_fourier_series_exactly() {
+    // Sample a band-limited series on 32 points: the trigonometric interpolant must give it back,
+    // with derivatives, everywhere (not just at the samples).
+    let truth = Angle::Fourier {
+        mean: 0.05,
+        harmonics: vec![
+            Harmonic {
+                n: 1,
+                amplitude: 0.7,
+                phase: 0.4,
+            },
+            Harmonic {
+                n: 3,
+                amplitude: -0.1,
+                phase: 2.0,
+            },
+        ],
+    };
+    let fd = 26.0;
+    let wd = 2.0 * std::f64::consts::PI * fd;
+    let s_truth = truth.series();
+    let n = 32;
+    let values: Vec<f64> = (0..n)
+        .map(|j| s_truth.eval(j as f64 / (n as f64 * fd), wd).0)
+        .collect();
+    let sampled = Angle::Sampled {
+        values,
+        max_harmonic: None,
+    };
+    sampled.validate("alpha").unwrap();
+    let s = sampled.series();
+    for j in 0..50 {
+        let t = j as f64 * 0.000771;
+        let (a, b) = (s.eval(t, wd), s_truth.eval(t, wd));
+        assert!((a.0 - b.0).abs() < 1e-13, "value");
+        assert!((a.1 - b.1).abs() < 1e-10 * wd, "rate");
+        assert!((a.2 - b.2).abs() < 1e-9 * wd * wd, "acceleration");
+    }
+}
+
+#[test]
+fn half_period_detection() {
+    assert!(Kinematics::paper_forward_flight()
+        .compile()
+        .softening_has_half_period());
+    let mut k = Kinematics::paper_forward_flight();
+    k.beta = Angle::Fourier {
+        mean: 0.1,
+        harmonics: vec![Harmonic {
+            n: 1,
+            amplitude: 0.5,
+            phase: 0.0,
+        }],
+    };
+    assert!(!k.compile().softening_has_half_period());
+}
+
+#[test]
+fn invalid_angles_name_the_field() {
+    let bad = Angle::Fourier {
+        mean: f64::NAN,
+        harmonics: vec![],
+    };
+    let e = bad.validate("kinematics.beta").unwrap_err().to_string();
+    assert!(e.contains("kinematics.beta.mean"), "{e}");
+    let bad = Angle::Fourier {
+        mean: 0.0,
+        harmonics: vec![Harmonic {
+            n: 0,
+            amplitude: 0.1,
+            phase: 0.0,
+        }],
+    };
+    assert!(bad
+        .validate("a")
+        .unwrap_err()
+        .to_string()
+        .contains("a.harmonics[0].n"));
+    let bad = Angle::Sampled {
+        values: vec![0.0, 1.0],
+        max_harmonic: None,
+    };
+    assert!(bad
+        .validate("g")
+        .unwrap_err()
+        .to_string()
+        .contains("g.values"));
+}
