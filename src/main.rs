@@ -3,13 +3,24 @@
 
 mod cli;
 
+use std::io::Write;
+
 fn main() {
     match cli::run() {
         Ok(text) => {
-            if text.ends_with('\n') {
-                print!("{text}");
-            } else if !text.is_empty() {
-                println!("{text}");
+            let mut out = std::io::stdout().lock();
+            let r = if text.is_empty() || text.ends_with('\n') {
+                out.write_all(text.as_bytes())
+            } else {
+                writeln!(out, "{text}")
+            };
+            // A closed pipe (e.g. `| head`) is not an error worth a panic or a message.
+            match r.and_then(|_| out.flush()) {
+                Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+                    eprintln!("error: writing output: {e}");
+                    std::process::exit(2);
+                }
+                _ => {}
             }
         }
         Err(e) => {

@@ -34,11 +34,18 @@ enum Command {
     Reproduce(ReproduceArgs),
 }
 
+/// Output of commands that produce tables.
 #[derive(Copy, Clone, Debug, ValueEnum, PartialEq)]
 enum Format {
     Json,
     Csv,
+}
+
+/// Output of the reproduce report.
+#[derive(Copy, Clone, Debug, ValueEnum, PartialEq)]
+enum ReportFormat {
     Text,
+    Json,
 }
 
 /// Inputs shared by every command that runs a simulation.
@@ -154,7 +161,7 @@ struct SweepArgs {
 struct ReproduceArgs {
     /// text (a readable report) or json.
     #[arg(long, value_enum, default_value = "text")]
-    format: Format,
+    format: ReportFormat,
 }
 
 /// Parses the command line and runs; returns what to print.
@@ -386,7 +393,7 @@ fn cmd_simulate(a: SimulateArgs) -> Result<String> {
     }
     match a.format {
         Format::Csv => Ok(csv_of(&r)),
-        _ => {
+        Format::Json => {
             let mut v = serde_json::to_value(&r).map_err(|e| WingbeatError::NonFinite {
                 what: "JSON output".into(),
                 detail: e.to_string(),
@@ -525,7 +532,7 @@ fn cmd_sweep(a: SweepArgs) -> Result<String> {
 fn cmd_reproduce(a: ReproduceArgs) -> Result<String> {
     let rep = wingbeat::reproduce::reproduce()?;
     match a.format {
-        Format::Json => to_json(&rep),
-        _ => Ok(rep.to_text()),
+        ReportFormat::Json => to_json(&rep),
+        ReportFormat::Text => Ok(rep.to_text()),
     }
 }

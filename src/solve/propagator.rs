@@ -191,36 +191,48 @@ pub fn propagate<O: LinearOde + ?Sized>(ode: &O, dt: f64, n: usize) -> Result<Pr
     let sched = schedule(dt, n, period);
     let map = period_map(ode, period, &sched.phases);
     let nf = ode.n_forces();
-    let mut q = vec![Vec::with_capacity(n); nf];
-    let mut qdot = vec![Vec::with_capacity(n); nf];
+    let mut q: Vec<Vec<f64>> = (0..nf).map(|_| Vec::with_capacity(n)).collect();
+    let mut qdot: Vec<Vec<f64>> = (0..nf).map(|_| Vec::with_capacity(n)).collect();
     let mut h_q = [Vec::with_capacity(n), Vec::with_capacity(n)];
     let mut h_qdot = [Vec::with_capacity(n), Vec::with_capacity(n)];
-    // States at the start of period `cur`.
+    // Plain arrays in the hot loop: Φ(τ) row-major and p_j(τ), per checkpoint.
+    let phi: Vec<[f64; 4]> = map.phi.iter().map(|m| [m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]]).collect();
+    let part: Vec<[[f64; 2]; MAX_FORCES]> =
+        map.part.iter().map(|p| std::array::from_fn(|j| [p[j][0], p[j][1]])).collect();
+    // States at the start of period `cur`, and M^cur.
     let mut cur: u64 = 0;
     let mut xs = [Vector2::zeros(); MAX_FORCES];
     let mut mn = Matrix2::identity();
+    let mut x_arr = [[0.0; 2]; MAX_FORCES];
+    let mut mn_arr = [1.0, 0.0, 0.0, 1.0];
     let mut periods = 0;
     for &(k, slot) in &sched.slots {
-        while cur < k {
-            for j in 0..nf {
-                xs[j] = map.monodromy * xs[j] + map.part_end[j];
+        if cur < k {
+            while cur < k {
+                for j in 0..nf {
+                    xs[j] = map.monodromy * xs[j] + map.part_end[j];
+                }
+                mn = map.monodromy * mn;
+                cur += 1;
             }
-            mn = map.monodromy * mn;
-            cur += 1;
+            for j in 0..nf {
+                x_arr[j] = [xs[j][0], xs[j][1]];
+            }
+            mn_arr = [mn[(0, 0)], mn[(0, 1)], mn[(1, 0)], mn[(1, 1)]];
         }
         periods = periods.max(k + 1);
-        let ph = &map.phi[slot as usize];
-        let pt = &map.part[slot as usize];
+        let ph = &phi[slot as usize];
+        let pt = &part[slot as usize];
         for j in 0..nf {
-            let x = ph * xs[j] + pt[j];
-            q[j].push(x[0]);
-            qdot[j].push(x[1]);
+            let x = &x_arr[j];
+            q[j].push(ph[0] * x[0] + ph[1] * x[1] + pt[j][0]);
+            qdot[j].push(ph[2] * x[0] + ph[3] * x[1] + pt[j][1]);
         }
-        let b = ph * mn;
-        h_q[0].push(b[(0, 0)]);
-        h_q[1].push(b[(0, 1)]);
-        h_qdot[0].push(b[(1, 0)]);
-        h_qdot[1].push(b[(1, 1)]);
+        let m = &mn_arr;
+        h_q[0].push(ph[0] * m[0] + ph[1] * m[2]);
+        h_q[1].push(ph[0] * m[1] + ph[1] * m[3]);
+        h_qdot[0].push(ph[2] * m[0] + ph[3] * m[2]);
+        h_qdot[1].push(ph[2] * m[1] + ph[3] * m[3]);
     }
     let finite = q
         .iter()
