@@ -14,6 +14,7 @@
 //! builds natively and for `wasm32-unknown-unknown` alike.
 
 pub mod error;
+pub mod fem;
 pub mod kinematics;
 pub mod model;
 
