@@ -136,6 +136,7 @@ pub fn lowest_modes(
     let mut last = 0;
     let mut iterations = 0;
     let mut best_detail = String::new();
+    let mut prev_ritz: Vec<f64> = Vec::new();
     loop {
         iterations += 1;
         let m = basis.len();
@@ -151,49 +152,69 @@ pub fn lowest_modes(
             let eig = a.symmetric_eigen();
             let mut idx: Vec<usize> = (0..m).collect();
             idx.sort_by(|&x, &y| eig.eigenvalues[x].total_cmp(&eig.eigenvalues[y]));
-            let mut values = Vec::with_capacity(n_modes);
-            let mut vectors = Vec::with_capacity(n_modes);
-            let mut residuals = Vec::with_capacity(n_modes);
-            let mut worst: f64 = 0.0;
-            for &c in idx.iter().take(n_modes) {
-                let lam = eig.eigenvalues[c];
-                let mut phi = vec![0.0; n];
-                for (r, v) in basis.iter().enumerate() {
-                    let y = eig.eigenvectors[(r, c)];
-                    phi.iter_mut().zip(v).for_each(|(a, b)| *a += y * b);
+            // cheap test first: only form Ritz vectors and true residuals once the wanted
+            // Ritz values have settled (relative change below 1e-9 of the spectrum scale)
+            let ritz: Vec<f64> = idx
+                .iter()
+                .take(n_modes)
+                .map(|&c| eig.eigenvalues[c])
+                .collect();
+            let scale = ritz.iter().fold(sigma.abs(), |s, v| s.max(v.abs()));
+            let settled = prev_ritz.len() == ritz.len()
+                && ritz
+                    .iter()
+                    .zip(&prev_ritz)
+                    .all(|(a, b)| (a - b).abs() <= 1e-9 * scale.max(a.abs()));
+            prev_ritz = ritz;
+            if !settled && m < n && m < max_basis {
+                best_detail = format!(
+                    "Ritz values still moving after {iterations} block iterations (basis {m})"
+                );
+            } else {
+                let mut values = Vec::with_capacity(n_modes);
+                let mut vectors = Vec::with_capacity(n_modes);
+                let mut residuals = Vec::with_capacity(n_modes);
+                let mut worst: f64 = 0.0;
+                for &c in idx.iter().take(n_modes) {
+                    let lam = eig.eigenvalues[c];
+                    let mut phi = vec![0.0; n];
+                    for (r, v) in basis.iter().enumerate() {
+                        let y = eig.eigenvectors[(r, c)];
+                        phi.iter_mut().zip(v).for_each(|(a, b)| *a += y * b);
+                    }
+                    let nm = mdot(&phi, &phi, m_diag).sqrt();
+                    phi.iter_mut().for_each(|a| *a /= nm);
+                    k.matvec(&phi, &mut kv);
+                    let mut rr = 0.0;
+                    let mut kk = 0.0;
+                    let mut mm = 0.0;
+                    for i in 0..n {
+                        let mphi = m_diag[i] * phi[i];
+                        rr += (kv[i] - lam * mphi).powi(2);
+                        kk += kv[i] * kv[i];
+                        mm += mphi * mphi;
+                    }
+                    let res = rr.sqrt() / kk.sqrt().max(sigma.abs() * mm.sqrt());
+                    worst = worst.max(res);
+                    values.push(lam);
+                    vectors.push(phi);
+                    residuals.push(res);
                 }
-                let nm = mdot(&phi, &phi, m_diag).sqrt();
-                phi.iter_mut().for_each(|a| *a /= nm);
-                k.matvec(&phi, &mut kv);
-                let mut rr = 0.0;
-                let mut kk = 0.0;
-                let mut mm = 0.0;
-                for i in 0..n {
-                    let mphi = m_diag[i] * phi[i];
-                    rr += (kv[i] - lam * mphi).powi(2);
-                    kk += kv[i] * kv[i];
-                    mm += mphi * mphi;
+                if worst <= opt.tol || m == n {
+                    return Ok(EigenResult {
+                        values,
+                        vectors,
+                        residuals,
+                        iterations,
+                        shift: sigma,
+                        basis: m,
+                    });
                 }
-                let res = rr.sqrt() / kk.sqrt().max(sigma.abs() * mm.sqrt());
-                worst = worst.max(res);
-                values.push(lam);
-                vectors.push(phi);
-                residuals.push(res);
-            }
-            if worst <= opt.tol || m == n {
-                return Ok(EigenResult {
-                    values,
-                    vectors,
-                    residuals,
-                    iterations,
-                    shift: sigma,
-                    basis: m,
-                });
-            }
-            best_detail = format!(
+                best_detail = format!(
                 "worst relative residual {worst:.3e} > tol {:.1e} after {iterations} block iterations (basis {m})",
                 opt.tol
             );
+            }
         }
         if m >= max_basis || !best_detail.is_empty() && m == last {
             return Err(WingbeatError::NoConvergence {

@@ -273,8 +273,34 @@ pub fn local_stiffness(f: &Frame, mat: &ShellMaterial) -> Mat18 {
 /// Element stiffness in the GLOBAL frame, Tᵀ K_local T; `None` for a degenerate triangle.
 pub fn global_stiffness(p: &[[f64; 3]; 3], mat: &ShellMaterial) -> Option<Mat18> {
     let f = Frame::new(p)?;
-    let t = f.transform();
-    Some(t.transpose() * local_stiffness(&f, mat) * t)
+    let kl = local_stiffness(&f, mat);
+    // K_g = Tᵀ K_l T with T = diag(R, …, R): transform each 3 × 3 block as Rᵀ K_ab R
+    let r = f.r;
+    let mut kg = Mat18::zeros();
+    for bi in 0..6 {
+        for bj in 0..6 {
+            let mut tmp = [[0.0; 3]; 3]; // K_ab R
+            for i in 0..3 {
+                for j in 0..3 {
+                    let mut s = 0.0;
+                    for k in 0..3 {
+                        s += kl[(3 * bi + i, 3 * bj + k)] * r[k][j];
+                    }
+                    tmp[i][j] = s;
+                }
+            }
+            for i in 0..3 {
+                for j in 0..3 {
+                    let mut s = 0.0;
+                    for k in 0..3 {
+                        s += r[k][i] * tmp[k][j];
+                    }
+                    kg[(3 * bi + i, 3 * bj + j)] = s;
+                }
+            }
+        }
+    }
+    Some(kg)
 }
 
 /// Lumped (diagonal) mass per node of a triangle of area `area`: translational ρtA/3 and an

@@ -49,7 +49,7 @@ pub const PAPER_FREQUENCIES_E_PA: f64 = 1.226e10;
 
 impl ShellMaterial {
     /// "paper-as-printed": t = 81 µm, E = 10 MPa, ρ = 860 kg/m³, ν = 0.3 exactly as the paper
-    /// prints them (Table 2). E = 10 MPa is a unit slip: the default wing then has f1 ≈ 1.7 Hz,
+    /// prints them (Table 2). E = 10 MPa is a unit slip: the default wing then has f1 ≈ 1.8 Hz (MODEL.md: ≈ 1.7 Hz),
     /// not the paper's 62.5 Hz.
     pub fn paper_as_printed() -> ShellMaterial {
         ShellMaterial {
