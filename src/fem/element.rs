@@ -1,6 +1,7 @@
-//! The flat thin-shell triangle: DKT bending + constant-strain membrane with a
-//! rotation-tied (Hughes–Brezzi-type) drilling term, 6 DOF per node, in a local element frame
-//! transformed to the global frame. Lumped (diagonal) mass.
+//! The flat thin-shell triangle: DKT bending + an Allman-type membrane with drilling
+//! rotations (stabilised by a small Hughes–Brezzi-type penalty tying the drilling rotation to
+//! the membrane's in-plane rotation), 6 DOF per node, in a local element frame transformed to
+//! the global frame. Lumped (diagonal) mass.
 //!
 //! DOF order per node: u, v, w (translations), θx, θy, θz (rotations about x, y, z), all in
 //! the global frame. Kirchhoff sign convention: ∂w/∂x = −θy, ∂w/∂y = θx.
@@ -124,17 +125,70 @@ impl Frame {
     }
 }
 
-/// Constant-strain membrane B (3 × 6, over u1 v1 u2 v2 u3 v3): [ε_x, ε_y, γ_xy].
-fn membrane_b(f: &Frame) -> [[f64; 6]; 3] {
-    let (b, c) = f.dl();
-    let mut m = [[0.0; 6]; 3];
+/// Quadratic (6-node) shape-function derivatives at area coordinates `l`; node order:
+/// corners 0, 1, 2, then mid-sides of edges (1,2), (2,0), (0,1).
+fn quad_derivs(f: &Frame, l: [f64; 3]) -> ([f64; 6], [f64; 6], [f64; 6]) {
+    let (bx, by) = f.dl();
+    let mut n = [0.0; 6];
+    let mut nx = [0.0; 6];
+    let mut ny = [0.0; 6];
     for i in 0..3 {
-        m[0][2 * i] = b[i];
-        m[1][2 * i + 1] = c[i];
-        m[2][2 * i] = c[i];
-        m[2][2 * i + 1] = b[i];
+        n[i] = l[i] * (2.0 * l[i] - 1.0);
+        nx[i] = (4.0 * l[i] - 1.0) * bx[i];
+        ny[i] = (4.0 * l[i] - 1.0) * by[i];
     }
-    m
+    for (k, (p, q)) in MIDSIDES {
+        n[k] = 4.0 * l[p] * l[q];
+        nx[k] = 4.0 * (l[p] * bx[q] + l[q] * bx[p]);
+        ny[k] = 4.0 * (l[p] * by[q] + l[q] * by[p]);
+    }
+    (n, nx, ny)
+}
+
+/// Mid-side node k and the edge (i, j) it sits on.
+const MIDSIDES: [(usize, (usize, usize)); 3] = [(3, (1, 2)), (4, (2, 0)), (5, (0, 1))];
+
+/// Allman-type membrane: the in-plane displacement is quadratic (6-node), with the mid-side
+/// values built from the corner translations and drilling rotations ω:
+/// u_mid = ½(u_i + u_j) + (ω_j − ω_i)/8 · (y_j − y_i, −(x_j − x_i)) (outward edge normal × l/8).
+/// Returns (B over u_i, v_i, ω_i ×3 giving [ε_x, ε_y, γ_xy]; in-plane rotation row
+/// ½(∂v/∂x − ∂u/∂y) over the same DOFs) at area coordinates `l`.
+fn membrane_b(f: &Frame, l: [f64; 3]) -> ([[f64; 9]; 3], [f64; 9]) {
+    // a[k][c] = displacement component c of quadratic node k over (u, v, ω) × 3
+    let mut a = [[[0.0f64; 9]; 2]; 6];
+    for i in 0..3 {
+        a[i][0][3 * i] = 1.0;
+        a[i][1][3 * i + 1] = 1.0;
+    }
+    for (k, (i, j)) in MIDSIDES {
+        let (dx, dy) = (f.x[j] - f.x[i], f.y[j] - f.y[i]);
+        for c in 0..2 {
+            a[k][c][3 * i + c] = 0.5;
+            a[k][c][3 * j + c] = 0.5;
+        }
+        a[k][0][3 * j + 2] += dy / 8.0;
+        a[k][0][3 * i + 2] -= dy / 8.0;
+        a[k][1][3 * j + 2] -= dx / 8.0;
+        a[k][1][3 * i + 2] += dx / 8.0;
+    }
+    let (_, nx, ny) = quad_derivs(f, l);
+    let mut b = [[0.0; 9]; 3];
+    let mut w = [0.0; 9];
+    for k in 0..6 {
+        for d in 0..9 {
+            b[0][d] += nx[k] * a[k][0][d];
+            b[1][d] += ny[k] * a[k][1][d];
+            b[2][d] += ny[k] * a[k][0][d] + nx[k] * a[k][1][d];
+            w[d] += 0.5 * (nx[k] * a[k][1][d] - ny[k] * a[k][0][d]);
+        }
+    }
+    (b, w)
+}
+
+/// Local index of membrane DOF q (u, v, ω per node) in the 18-DOF element vector.
+fn midx(q: usize) -> usize {
+    let node = q / 3;
+    6 * node + [0, 1, 5][q % 3]
 }
 
 /// DKT curvature matrix at area coordinates `l`: maps the 9 local bending DOFs
@@ -168,18 +222,7 @@ pub fn dkt_b(f: &Frame, l: [f64; 3]) -> [[f64; 9]; 3] {
             a[k][1][3 * node + 2] += -0.25 * s * s + 0.5 * c * c;
         }
     }
-    let (bx, by) = f.dl();
-    // derivatives of the 6 quadratic shape functions
-    let mut nx = [0.0; 6];
-    let mut ny = [0.0; 6];
-    for i in 0..3 {
-        nx[i] = (4.0 * l[i] - 1.0) * bx[i];
-        ny[i] = (4.0 * l[i] - 1.0) * by[i];
-    }
-    for (k, (p, q)) in [(3usize, (1usize, 2usize)), (4, (2, 0)), (5, (0, 1))] {
-        nx[k] = 4.0 * (l[p] * bx[q] + l[q] * bx[p]);
-        ny[k] = 4.0 * (l[p] * by[q] + l[q] * by[p]);
-    }
+    let (_, nx, ny) = quad_derivs(f, l);
     let mut bs = [[0.0; 9]; 3];
     for k in 0..6 {
         for d in 0..9 {
@@ -212,42 +255,25 @@ pub fn local_stiffness(f: &Frame, mat: &ShellMaterial) -> Mat18 {
     let t = mat.thickness_m;
     let a = f.area;
     let mut k = Mat18::zeros();
-    // membrane: t A Bᵀ C B over u, v
-    let bm = membrane_b(f);
-    let midx = |q: usize| 6 * (q / 2) + (q % 2);
-    for p in 0..6 {
-        for q in 0..6 {
-            let mut s = 0.0;
-            for i in 0..3 {
-                for j in 0..3 {
-                    s += bm[i][p] * c[i][j] * bm[j][q];
-                }
-            }
-            k[(midx(p), midx(q))] += t * a * s;
-        }
-    }
-    // drilling: ½ kd ∫ (Σ N_i θz_i − ω)² dA, ω = ½(∂v/∂x − ∂u/∂y)
+    // Allman-type membrane + drilling penalty ½ kd ∫ (Σ L_i ω_i − ½(∂v/∂x − ∂u/∂y))² dA; the
+    // penalty removes Allman's spurious equal-rotation mode. 3-point rule: exact for both.
     let kd = DRILL_FACTOR * mat.bending_stiffness() / a;
-    let (b, cc) = f.dl();
-    let mut g = [0.0; 6]; // ω = g · (u1 v1 u2 v2 u3 v3)
-    for i in 0..3 {
-        g[2 * i] = -0.5 * cc[i];
-        g[2 * i + 1] = 0.5 * b[i];
-    }
-    for i in 0..3 {
-        for j in 0..3 {
-            let nn = a / 12.0 * if i == j { 2.0 } else { 1.0 };
-            k[(6 * i + 5, 6 * j + 5)] += kd * nn;
+    for l in GAUSS3 {
+        let (bm, w) = membrane_b(f, l);
+        let mut pen = w.map(|x| -x);
+        for i in 0..3 {
+            pen[3 * i + 2] += l[i];
         }
-        for q in 0..6 {
-            let v = -kd * a / 3.0 * g[q];
-            k[(6 * i + 5, midx(q))] += v;
-            k[(midx(q), 6 * i + 5)] += v;
-        }
-    }
-    for p in 0..6 {
-        for q in 0..6 {
-            k[(midx(p), midx(q))] += kd * a * g[p] * g[q];
+        for p in 0..9 {
+            for q in 0..9 {
+                let mut s = 0.0;
+                for i in 0..3 {
+                    for j in 0..3 {
+                        s += bm[i][p] * c[i][j] * bm[j][q];
+                    }
+                }
+                k[(midx(p), midx(q))] += a / 3.0 * (t * s + kd * pen[p] * pen[q]);
+            }
         }
     }
     // DKT bending
@@ -321,14 +347,14 @@ pub fn corner_surface_strain(
 ) -> Option<[f64; 3]> {
     let f = Frame::new(p)?;
     let d = f.transform() * u;
-    let bm = membrane_b(&f);
     let mut l = [0.0; 3];
     l[corner] = 1.0;
+    let (bm, _) = membrane_b(&f, l);
     let bb = dkt_b(&f, l);
     let mut e = [0.0; 3];
     for r in 0..3 {
-        for q in 0..6 {
-            e[r] += bm[r][q] * d[6 * (q / 2) + (q % 2)];
+        for q in 0..9 {
+            e[r] += bm[r][q] * d[midx(q)];
         }
         let mut kap = 0.0;
         for q in 0..9 {
