@@ -1,5 +1,6 @@
-//! Lowest eigenpairs of K φ = λ M φ (λ = ω²) by shift-invert block Krylov iteration with
-//! full M-orthogonalisation and Rayleigh–Ritz on (K, M).
+//! Lowest eigenpairs of K φ = λ M φ (λ = ω², the discrete form of paper Eq. 10, with the
+//! vectors M-orthonormal as in Eq. 9) by shift-invert block Krylov iteration with full
+//! M-orthogonalisation and Rayleigh–Ritz on (K, M).
 //!
 //! The operator is (K − σM)⁻¹M with a small negative shift σ, so K − σM is positive
 //! definite even for a free structure (six rigid-body zero modes), and the envelope LDLᵀ of

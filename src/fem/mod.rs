@@ -169,11 +169,13 @@ impl Default for FemInput {
 pub struct FemModes {
     /// Provenance of the outline.
     pub planform_note: String,
-    /// Natural frequencies f_k = ω_k / 2π, Hz (ascending).
+    /// Natural frequencies f_k = ω_k / 2π, Hz (ascending); ω_k² are the eigenvalues of
+    /// K φ = ω² M φ (paper Eq. 10).
     pub freq_hz: Vec<f64>,
-    /// a_k = Σ φ_k,z (x, y) dm over the nodes (paper Eq. 11), kg^½·m.
+    /// a_k = Σ_i φ_k,z(node i) (x_i, y_i) dm_i over the nodes with the lumped nodal masses —
+    /// the paper's discrete Eq. 14 (integral form Eq. 11) — kg^½·m, origin at the root point.
     pub a: Vec<[f64; 2]>,
-    /// b_k = (−a_y, a_x), a_k turned 90° counter-clockwise (paper Eq. 12), kg^½·m.
+    /// b_k = (−a_y, a_x), a_k turned 90° counter-clockwise (paper Eqs. 12 and 15), kg^½·m.
     pub b: Vec<[f64; 2]>,
     /// Wing mass, kg.
     pub mass_kg: f64,
@@ -185,8 +187,8 @@ pub struct FemModes {
     pub triangles: Vec<[usize; 3]>,
     /// Indices of the clamped nodes.
     pub clamped_nodes: Vec<usize>,
-    /// Per mode, the out-of-plane (global z) displacement of each node of the
-    /// mass-normalised mode, kg^-½.
+    /// Per mode, the out-of-plane (global z) displacement of each node of the mode,
+    /// mass-normalised as in paper Eq. 9 (Σ φ_k φ_e dm = δ_ke), kg^-½.
     pub shapes: Vec<Vec<f64>>,
     /// Per mode, per node: top-surface strain [ε_x, ε_y, γ_xy] per unit modal coordinate
     /// (paper Eqs. 16–18), averaged from the elements around the node, kg^-½.
@@ -195,7 +197,7 @@ pub struct FemModes {
     pub residuals: Vec<f64>,
     /// Mode classification: "spanwise bending", "torsion", "rigid body" or "other".
     pub kinds: Vec<String>,
-    /// Largest |φᵀMφ − I| entry over the returned modes.
+    /// Largest |φᵀMφ − I| entry over the returned modes (how well Eq. 9 holds).
     pub mass_orthonormality_error: f64,
     /// Number of free (unclamped) DOFs.
     pub n_dofs: usize,
