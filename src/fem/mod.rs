@@ -21,6 +21,11 @@
 //! | `--n-modes 6` | `n_modes` |
 //! | `--mesh-size-mm 1.0` | `mesh_size_mm` (target triangle edge) |
 //!
+//! As JSON (`serde`), `clamp` is `"root"`, `"free"` or `{"strip": {"x_mm": 3.0}}`; every
+//! field is optional and missing ones take their default, e.g.
+//! `{"n_modes": 4, "clamp": {"strip": {"x_mm": 3.0}}, "material": {"thickness_m": 8.1e-5,
+//! "e_pa": 1.311e10, "rho_kg_m3": 860.0, "nu": 0.3}}`.
+//!
 //! Everything else defaults to [`FemInput::default`] (the synthetic Manduca-like wing, the
 //! "paper-frequencies" material, root clamp, 6 modes). Output: `serde_json` of [`FemModes`].
 
