@@ -9,6 +9,7 @@
 //! * [`floquet`] — monodromy, multipliers, stability, effective frequency and beat period;
 //! * [`simulate`] — the driver: a [`config::SimConfig`] in, responses and summaries out;
 //! * [`analysis`] — spectra, contributions, sweeps, initial-condition maps, beats, strain;
+//! * [`fem`] — shell finite elements: modes of any planform with camber (paper §3.1);
 //! * [`reproduce`] — every claim of the paper's §3–4 against what wingbeat computes;
 //! * [`presets`] and [`config`] — the paper's data and the serde types every front end shares.
 //!
@@ -37,6 +38,7 @@
 pub mod analysis;
 pub mod config;
 pub mod error;
+pub mod fem;
 pub mod floquet;
 pub mod kinematics;
 pub mod model;
