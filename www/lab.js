@@ -547,10 +547,7 @@ export class WingLab extends HTMLElement {
     const warnings = a.sim.warnings || [];
     this.warnEl.hidden = warnings.length === 0;
     this.warnEl.textContent = warnings.join(' ');
-    if (this.hasAttribute('sync-url')) {
-      const extra = new URLSearchParams(location.search).get('embed') === '1' ? { embed: '1' } : {};
-      history.replaceState(null, '', `${location.pathname}?${toQuery(this.state, extra)}${location.hash}`);
-    }
+    if (this.hasAttribute('sync-url')) this.scheduleUrl();
     // uPlot commits its redraw in a microtask queued by setData; ours runs after it.
     queueMicrotask(() => {
       const t2 = performance.now();
@@ -560,6 +557,24 @@ export class WingLab extends HTMLElement {
       this.dataset.renders = String(this.renders);
       this.dispatchEvent(new CustomEvent('wl-rendered', { detail: this.lastTiming }));
     });
+  }
+
+  /**
+   * Writes the state to the query string: at once when the last write is older than 250 ms,
+   * else once at the end of the burst (Chromium throttles pages that call replaceState at
+   * frame rate, and a URL that changes 60 times a second helps nobody).
+   */
+  scheduleUrl() {
+    const write = () => {
+      this.urlTimer = 0;
+      this.urlWritten = performance.now();
+      const extra = new URLSearchParams(location.search).get('embed') === '1' ? { embed: '1' } : {};
+      history.replaceState(null, '', `${location.pathname}?${toQuery(this.state, extra)}${location.hash}`);
+    };
+    if (this.urlTimer) return;
+    const since = performance.now() - (this.urlWritten || -1e9);
+    if (since >= 250) write();
+    else this.urlTimer = setTimeout(write, 250 - since);
   }
 
   drawNumbers(a) {
@@ -590,9 +605,16 @@ export class WingLab extends HTMLElement {
     });
   }
 
+  /** Decimation buckets for a time plot: one per CSS pixel of plot width (min and max each). */
+  buckets(name) {
+    const u = this.plots[name];
+    const w = u && u.bbox ? u.bbox.width / devicePixelRatio : 0;
+    return Math.min(LIVE_BUCKETS, Math.max(200, Math.round(w)));
+  }
+
   drawTime(a, k) {
     const m = a.sim.modes[k];
-    const d = decimate(a.sim.t, [m.q.euler, m.q.centrifugal, m.q.coriolis, m.q.total, a.envelope[k]], LIVE_BUCKETS);
+    const d = decimate(a.sim.t, [m.q.euler, m.q.centrifugal, m.q.coriolis, m.q.total, a.envelope[k]], this.buckets('time'));
     this.plots.time.setData(d);
   }
 
@@ -631,7 +653,7 @@ export class WingLab extends HTMLElement {
       this.plots.strain.setData([[0], [null], [null], [null]]);
       return;
     }
-    this.plots.strain.setData(decimate(a.sim.t, [s.eps_x, s.eps_y, s.gamma_xy], LIVE_BUCKETS));
+    this.plots.strain.setData(decimate(a.sim.t, [s.eps_x, s.eps_y, s.gamma_xy], this.buckets('strain')));
   }
 
   // ---------- studies (worker) ----------

@@ -92,7 +92,7 @@ test('every slider moves by keyboard; number box, aria-valuetext, URL and plots 
     assert.ok(Math.abs(Math.abs(v1 - v0) - step) < 1e-9, `${key}: ${v0} -> ${v1}`);
     assert.equal(Number(await page.$eval(num, (e) => e.value)), v1, `${key} number box`);
     assert.match(await page.$eval(range, (e) => e.getAttribute('aria-valuetext')), new RegExp(`^${v1}`));
-    assert.equal(Number(new URL(page.url()).searchParams.get(key)), v1, `${key} in URL`);
+    await page.waitForFunction(([k, v]) => Number(new URLSearchParams(location.search).get(k)) === v, [key, v1]);
     assert.equal((await stateOf(page))[key], v1);
     const print1 = await plotPrint(page);
     assert.notDeepEqual(print1, print0, `${key}: plotted data changed`);
@@ -171,6 +171,7 @@ test('URL round trip restores the state and the numbers', async () => {
   assert.equal(s.beta_phase, 0.3);
   assert.equal(await page.$eval('wing-lab select[data-key="mode"]', (e) => e.value), '2');
   await press(page, 'ArrowRight', 'wing-lab input[type=range][data-key="alpha0"]');
+  await page.waitForFunction(() => new URLSearchParams(location.search).get('alpha0') === '0.81');
   const url = page.url();
   const feff = await cell(page, 'feff-1');
   const { page: p2, context: c2, problems } = await lab(url.slice(env.url.length));
