@@ -46,5 +46,7 @@ pub mod presets;
 pub mod reproduce;
 pub mod simulate;
 pub mod solve;
+#[cfg(feature = "web")]
+pub mod wasm;
 
 pub use error::{Result, WingbeatError};
