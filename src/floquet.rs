@@ -135,9 +135,9 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
     // Floquet solution over the homogeneous period, sampled finely enough to resolve the
     // harmonic that carries the natural frequency.
     let ratio = ode.freq_scale() / (2.0 * PI * fp);
-    let nh = ((4.0 * ratio + 64.0) as usize)
+    let nh = ((4.0 * ratio + 16.0) as usize)
         .next_power_of_two()
-        .min(1 << 16);
+        .clamp(32, 1 << 16);
     let phases: Vec<f64> = (0..nh).map(|j| j as f64 * tp / nh as f64).collect();
     let pm = period_map(ode, tp, &phases);
     let mp = pm.monodromy.map(|x| C64::new(x, 0.0));

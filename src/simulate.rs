@@ -140,7 +140,7 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     let t: Vec<f64> = (0..n).map(|i| i as f64 * dt).collect();
     let mut modes = Vec::with_capacity(cfg.modes.len());
     for (k, mode) in cfg.modes.iter().enumerate() {
-        let p = propagate_mode(&kin, mode, dt, n)?;
+        let mut p = propagate_mode(&kin, mode, dt, n)?;
         let [q0, v0] = cfg.ic(k);
         let free: Vec<f64> = (0..n)
             .map(|i| q0 * p.h_q[0][i] + v0 * p.h_q[1][i])
@@ -150,9 +150,9 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
             .map(|i| p.qdot[ModalOde::TOTAL][i] + q0 * p.h_qdot[0][i] + v0 * p.h_qdot[1][i])
             .collect();
         let q = Responses {
-            euler: p.q[ModalOde::EULER].clone(),
-            centrifugal: p.q[ModalOde::CENTRIFUGAL].clone(),
-            coriolis: p.q[ModalOde::CORIOLIS].clone(),
+            euler: std::mem::take(&mut p.q[ModalOde::EULER]),
+            centrifugal: std::mem::take(&mut p.q[ModalOde::CENTRIFUGAL]),
+            coriolis: std::mem::take(&mut p.q[ModalOde::CORIOLIS]),
             free,
             total,
         };

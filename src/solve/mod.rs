@@ -43,7 +43,7 @@ pub trait LinearOde {
 }
 
 /// Most forcing columns one solve carries.
-pub const MAX_FORCES: usize = 6;
+pub const MAX_FORCES: usize = 4;
 
 /// The modal equation (Eq. 13) of one mode as a [`LinearOde`], with forcing columns
 /// `[euler, centrifugal, coriolis, total]` in that order.
