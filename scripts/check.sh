@@ -4,4 +4,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo fmt --all -- --check
 cargo clippy --all-targets -- -D warnings
+# the optional faer sparse backend (docs/fem.md, "Sparse factorisation backends")
+cargo clippy --all-targets --features faer -- -D warnings
 ./scripts/test.sh

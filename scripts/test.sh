@@ -4,3 +4,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo test --all-targets
 cargo test --doc
+# the optional faer sparse backend against the skyline one
+cargo test --features faer --test fem_backends

@@ -4,11 +4,14 @@
 //!
 //! The operator is (K − σM)⁻¹M with a small negative shift σ, so K − σM is positive
 //! definite even for a free structure (six rigid-body zero modes), and the envelope LDLᵀ of
-//! [`super::sparse`] needs no pivoting. The block size (≥ 6) lets the iteration pick up the
+//! [`super::sparse`] needs no pivoting. The factorisation is any [`SpdFactor`] backend
+//! ([`super::linalg`]): [`lowest_modes_with`] is generic over it and [`lowest_modes`] picks
+//! one from [`EigenOptions::backend`]. The block size (≥ 6) lets the iteration pick up the
 //! six-fold rigid-body null space, and repeated eigenvalues, in one sweep. The basis size is
 //! capped: when the requested modes have not met the tolerance by then, the solver returns
 //! [`WingbeatError::NoConvergence`] — it never loops without bound.
 
+use super::linalg::{Backend, SkylineLdlt, SpdFactor};
 use super::sparse::{dot, Skyline};
 use crate::error::{Result, WingbeatError};
 use nalgebra::DMatrix;
@@ -40,6 +43,8 @@ pub struct EigenOptions {
     pub max_basis: usize,
     /// Block size (at least 6 to catch the rigid-body modes of a free structure).
     pub block: usize,
+    /// Sparse factorisation of K − σM (see [`super::linalg`]).
+    pub backend: Backend,
 }
 
 impl Default for EigenOptions {
@@ -48,6 +53,7 @@ impl Default for EigenOptions {
             tol: 1e-6,
             max_basis: 400,
             block: 8,
+            backend: Backend::default(),
         }
     }
 }
@@ -67,8 +73,30 @@ fn mdot(a: &[f64], b: &[f64], m: &[f64]) -> f64 {
 }
 
 /// Lowest `n_modes` eigenpairs of K φ = λ M φ with K in skyline storage (symmetric positive
-/// semi-definite) and M diagonal (`m_diag`, all entries > 0).
+/// semi-definite) and M diagonal (`m_diag`, all entries > 0), factoring with the backend
+/// named in `opt.backend`.
 pub fn lowest_modes(
+    k: &Skyline,
+    m_diag: &[f64],
+    n_modes: usize,
+    opt: EigenOptions,
+) -> Result<EigenResult> {
+    match opt.backend {
+        Backend::Skyline => lowest_modes_with::<SkylineLdlt>(k, m_diag, n_modes, opt),
+        #[cfg(feature = "faer")]
+        Backend::Faer => lowest_modes_with::<super::linalg::FaerLlt>(k, m_diag, n_modes, opt),
+        #[cfg(not(feature = "faer"))]
+        Backend::Faer => Err(WingbeatError::invalid(
+            "backend",
+            "faer",
+            "skyline (this build lacks the `faer` cargo feature)",
+        )),
+    }
+}
+
+/// [`lowest_modes`] with the factorisation backend `F` fixed at compile time
+/// (`opt.backend` is ignored).
+pub fn lowest_modes_with<F: SpdFactor>(
     k: &Skyline,
     m_diag: &[f64],
     n_modes: usize,
@@ -98,26 +126,23 @@ pub fn lowest_modes(
         });
     }
     let mut sigma = -1e-3 * ratio;
-    let mut fac = k.clone();
-    let mut ok = false;
+    let mut fac = None;
     for _ in 0..6 {
-        fac.data.copy_from_slice(&k.data);
-        for (i, &m) in m_diag.iter().enumerate() {
-            fac.add_diag(i, -sigma * m);
+        match F::factor(k, sigma, m_diag) {
+            Ok(f) if f.negative_pivots().unwrap_or(0) == 0 => {
+                fac = Some(f);
+                break;
+            }
+            _ => sigma *= 10.0,
         }
-        if fac.factor_ldlt() == Some(0) {
-            ok = true;
-            break;
-        }
-        sigma *= 10.0;
     }
-    if !ok {
+    let Some(fac) = fac else {
         return Err(WingbeatError::NoConvergence {
             method: "shifted LDLᵀ factorisation".into(),
             detail: "K − σM is not positive definite for any tried σ < 0 (bad mesh or material)"
                 .into(),
         });
-    }
+    };
     let op = |x: &[f64]| -> Vec<f64> {
         let mut y: Vec<f64> = x.iter().zip(m_diag).map(|(a, b)| a * b).collect();
         fac.solve_in_place(&mut y);

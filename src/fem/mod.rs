@@ -36,11 +36,14 @@ pub mod assembly;
 pub mod eigen;
 pub mod element;
 pub mod geometry;
+pub mod linalg;
 pub mod mesh;
 pub mod sparse;
 
+pub use eigen::EigenOptions;
 pub use element::ShellMaterial;
 pub use geometry::{manduca_planform, parse_planform_csv, parse_planform_json, rectangle_planform};
+pub use linalg::Backend;
 pub use mesh::{Mesh, MAX_NODES};
 
 use crate::error::{Result, WingbeatError};
@@ -212,6 +215,12 @@ pub struct FemModes {
 
 /// Runs the whole FE step for `input`: validate, mesh, assemble, solve, post-process.
 pub fn compute_modes(input: &FemInput) -> Result<FemModes> {
+    compute_modes_with(input, eigen::EigenOptions::default())
+}
+
+/// [`compute_modes`] with explicit eigen-solver options (e.g. the factorisation
+/// [`Backend`]).
+pub fn compute_modes_with(input: &FemInput, opt: eigen::EigenOptions) -> Result<FemModes> {
     input.material.validate()?;
     crate::error::check_range("camber", input.camber, 0.0, 0.5, "(rise / chord)")?;
     if input.n_modes == 0 || input.n_modes > crate::model::MAX_MODES {
@@ -225,12 +234,13 @@ pub fn compute_modes(input: &FemInput) -> Result<FemModes> {
     let outline = geometry::validate_outline(&input.planform_mm)?;
     let mesh = mesh::mesh_planform(&outline, input.mesh_size_mm, input.camber)?;
     let clamped = clamp_nodes(&outline, &mesh, input.clamp)?;
-    solve_mesh(
+    solve_mesh_with(
         &mesh,
         &clamped,
         &input.material,
         input.n_modes,
         &input.planform_note,
+        opt,
     )
 }
 
@@ -315,9 +325,28 @@ pub fn solve_mesh(
     n_modes: usize,
     planform_note: &str,
 ) -> Result<FemModes> {
+    solve_mesh_with(
+        mesh,
+        clamped,
+        material,
+        n_modes,
+        planform_note,
+        eigen::EigenOptions::default(),
+    )
+}
+
+/// [`solve_mesh`] with explicit eigen-solver options.
+pub fn solve_mesh_with(
+    mesh: &Mesh,
+    clamped: &[bool],
+    material: &ShellMaterial,
+    n_modes: usize,
+    planform_note: &str,
+    opt: eigen::EigenOptions,
+) -> Result<FemModes> {
     material.validate()?;
     let asm = assembly::assemble(mesh, material, clamped)?;
-    let eig = eigen::lowest_modes(&asm.k, &asm.m, n_modes, eigen::EigenOptions::default())?;
+    let eig = eigen::lowest_modes(&asm.k, &asm.m, n_modes, opt)?;
     Ok(postprocess(
         mesh,
         clamped,
