@@ -27,7 +27,12 @@ fn offscreen(width: u32, height: u32, mesh: &WingMesh) -> Option<Offscreen> {
             if std::env::var("WINGBEAT_REQUIRE_GPU").as_deref() == Ok("1") {
                 panic!("WINGBEAT_REQUIRE_GPU=1 but no GPU is usable: {e}");
             }
-            eprintln!("SKIPPED (no GPU adapter; set WINGBEAT_REQUIRE_GPU=1 to fail instead): {e}");
+            // Written to stderr directly, past the test harness's capture, so it shows.
+            use std::io::Write;
+            let _ = writeln!(
+                std::io::stderr(),
+                "SKIPPED (no GPU adapter; set WINGBEAT_REQUIRE_GPU=1 to fail instead): {e}"
+            );
             None
         }
         Err(e) => panic!("offscreen renderer failed: {e}"),
