@@ -301,3 +301,15 @@ fn frame_paths_are_numbered() {
     );
     assert_eq!(frame_path(Path::new("f"), 2, 1500), Path::new("f_0002.png"));
 }
+
+#[test]
+fn frame_at_time_uses_the_kinematics() {
+    let cfg = wingbeat::config::SimConfig::paper();
+    let kin = cfg.kinematics.compile();
+    let t = 0.0123;
+    let s = kin.state(t);
+    let f = FrameParams::at_time(&kin, t, vec![1e-5]);
+    assert_eq!((f.alpha, f.beta, f.gamma), (s.alpha, s.beta, s.gamma));
+    assert_eq!(f.q, vec![1e-5]);
+    assert_eq!(f.exaggeration, 1.0);
+}

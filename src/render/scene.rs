@@ -482,6 +482,19 @@ fn clean(name: &str, v: f64, warnings: &mut Vec<String>) -> f32 {
 }
 
 impl FrameParams {
+    /// The pose at time `t` (s) from compiled kinematics, with modal coordinates `q`; the other
+    /// fields take their defaults. (Time control lives in the caller: it picks `t` and `q`.)
+    pub fn at_time(kin: &crate::kinematics::Compiled, t: f64, q: Vec<f64>) -> Self {
+        let s = kin.state(t);
+        FrameParams {
+            alpha: s.alpha,
+            beta: s.beta,
+            gamma: s.gamma,
+            q,
+            ..FrameParams::default()
+        }
+    }
+
     /// Replaces every non-finite value by 0 (and clamps absurd magnitudes), returning the clean
     /// frame and one warning per value changed. Modes beyond [`MAX_MODES`] are dropped with a
     /// warning. Nothing non-finite ever reaches the GPU.
