@@ -80,34 +80,38 @@ impl WingbeatError {
 
 /// Checks that `v` is finite and within `[lo, hi]`; the error names `field` and the range with `unit`.
 pub fn check_range(field: &str, v: f64, lo: f64, hi: f64, unit: &str) -> Result<()> {
-    if !v.is_finite() || v < lo || v > hi {
-        let u = if unit.is_empty() {
-            String::new()
-        } else {
-            format!(" {unit}")
-        };
-        return Err(WingbeatError::invalid(
-            field,
-            v,
-            format!("a finite number in [{lo}, {hi}]{u}"),
-        ));
-    }
-    Ok(())
+    check(
+        field,
+        v,
+        v.is_finite() && v >= lo && v <= hi,
+        &format!("[{lo}, {hi}]"),
+        unit,
+    )
 }
 
 /// Checks that `v` is finite and strictly positive and at most `hi`.
 pub fn check_positive(field: &str, v: f64, hi: f64, unit: &str) -> Result<()> {
-    if !v.is_finite() || v <= 0.0 || v > hi {
-        let u = if unit.is_empty() {
-            String::new()
-        } else {
-            format!(" {unit}")
-        };
-        return Err(WingbeatError::invalid(
-            field,
-            v,
-            format!("a finite number in (0, {hi}]{u}"),
-        ));
+    check(
+        field,
+        v,
+        v.is_finite() && v > 0.0 && v <= hi,
+        &format!("(0, {hi}]"),
+        unit,
+    )
+}
+
+fn check(field: &str, v: f64, ok: bool, interval: &str, unit: &str) -> Result<()> {
+    if ok {
+        return Ok(());
     }
-    Ok(())
+    let u = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    Err(WingbeatError::invalid(
+        field,
+        v,
+        format!("a finite number in {interval}{u}"),
+    ))
 }

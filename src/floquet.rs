@@ -113,12 +113,22 @@ pub fn analyse<O: LinearOde + ?Sized>(
     flap_hz: f64,
     averaged_freq_hz: f64,
 ) -> FloquetResult {
+    analyse_with(ode, flap_hz, averaged_freq_hz, None)
+}
+
+/// As [`analyse`], reusing a full-period monodromy matrix already computed by the caller
+/// (the propagator has it), which saves one period's integration.
+pub fn analyse_with<O: LinearOde + ?Sized>(
+    ode: &O,
+    flap_hz: f64,
+    averaged_freq_hz: f64,
+    monodromy: Option<Matrix2<f64>>,
+) -> FloquetResult {
     let t = ode.period();
     let tp = ode.homogeneous_period();
     let fp = 1.0 / tp;
     // Full-period monodromy.
-    let full = period_map(ode, t, &[]);
-    let mt = full.monodromy;
+    let mt = monodromy.unwrap_or_else(|| period_map(ode, t, &[]).monodromy);
     let lt = multipliers(&mt);
     let max_modulus = lt[0].norm().max(lt[1].norm());
 

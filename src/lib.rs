@@ -9,11 +9,27 @@
 //! * [`floquet`] — monodromy, multipliers, stability, effective frequency and beat period;
 //! * [`simulate`] — the driver: a [`config::SimConfig`] in, responses and summaries out;
 //! * [`analysis`] — spectra, contributions, sweeps, initial-condition maps, beats, strain;
+//! * [`fem`] — shell finite elements: modes of any planform with camber (paper §3.1);
 //! * [`reproduce`] — every claim of the paper's §3–4 against what wingbeat computes;
 //! * [`presets`] and [`config`] — the paper's data and the serde types every front end shares.
 //!
 //! The core is `f64` throughout, single-threaded, and uses no filesystem or web APIs, so it
 //! builds natively and for `wasm32-unknown-unknown` alike.
+//!
+//! ```
+//! use wingbeat::config::SimConfig;
+//! use wingbeat::simulate::simulate;
+//!
+//! // The paper's forward flight: α0 = 0.8, β0 = 0.5, γ0 = 0.2 rad at 25 Hz, Tables 3–6.
+//! let r = simulate(&SimConfig::paper()).unwrap();
+//! let m1 = &r.modes[0];
+//! // Centrifugal softening lowers mode 1 from 62.5 Hz to about 60.3 Hz ...
+//! assert!((m1.floquet.effective_freq_hz - 60.31).abs() < 0.01);
+//! // ... so its Coriolis response (forced at 2 × 25 Hz) beats with a period of about 0.097 s.
+//! assert!((m1.floquet.beat_period_s.unwrap() - 0.097).abs() < 0.001);
+//! // Mode 1 is Coriolis-dominated at γ0 = 0.2.
+//! assert_eq!(m1.contribution_percent.dominant().0, "coriolis");
+//! ```
 
 // Numerical kernels index several parallel arrays with one loop variable; that reads better
 // than zipped iterators there.
@@ -22,6 +38,7 @@
 pub mod analysis;
 pub mod config;
 pub mod error;
+pub mod fem;
 pub mod floquet;
 pub mod kinematics;
 pub mod model;
@@ -31,5 +48,7 @@ pub mod render;
 pub mod reproduce;
 pub mod simulate;
 pub mod solve;
+#[cfg(feature = "web")]
+pub mod wasm;
 
 pub use error::{Result, WingbeatError};

@@ -176,6 +176,10 @@ fn yes(b: bool) -> Verdict {
     }
 }
 
+/// Element size of the FE runs in the report, mm (a compromise between time and accuracy:
+/// f1 is within about 2 % of the fine-mesh value).
+pub const FE_MESH_MM: f64 = 1.5;
+
 /// Builds the report for the paper's forward-flight case.
 pub fn reproduce() -> Result<Report> {
     let cfg = SimConfig::paper();
@@ -186,19 +190,62 @@ pub fn reproduce() -> Result<Report> {
     let fs = cfg.sample_rate_hz;
     let mut claims = Vec::new();
 
+    // ---- §3.1: the FE step, with wingbeat's own shell model of the synthetic outline ----
+    use crate::fem::{compute_modes, Clamp, FemInput, ShellMaterial};
+    let fe_in = FemInput {
+        n_modes: 2,
+        mesh_size_mm: FE_MESH_MM,
+        ..Default::default()
+    };
+    let fe = compute_modes(&fe_in)?;
+    let printed = compute_modes(&FemInput {
+        material: ShellMaterial::paper_as_printed(),
+        ..fe_in.clone()
+    })?;
+    let strip = compute_modes(&FemInput {
+        clamp: Clamp::Strip { x_mm: 3.0 },
+        ..fe_in.clone()
+    })?;
+    let (f1, f2) = (fe.freq_hz[0], fe.freq_hz[1]);
+    let (s1, s2) = (strip.freq_hz[0], strip.freq_hz[1]);
+    let paper_ratio = crate::presets::PAPER_FREQ_HZ[1] / crate::presets::PAPER_FREQ_HZ[0];
+    claim(
+        &mut claims,
+        "material-as-printed",
+        "§3.1, Table 2",
+        "A paper wing with t = 81 µm, E = 10 MPa, ρ = 860 kg/m³, ν = 0.3 and 13 % camber has f1 = 62.5 Hz.",
+        format!(
+            "Shell FE of the synthetic Manduca-like outline ({FE_MESH_MM} mm mesh, root clamp): E = 10 MPa gives f1 = {:.3} Hz. Frequencies scale with √E; f1 = 62.5 Hz needs E ≈ {:.1} GPa — the printed 10 MPa is a unit slip. Threshold: within 10 % of 62.5 Hz.",
+            printed.freq_hz[0],
+            crate::fem::PAPER_FREQUENCIES_E_PA * (62.5 / f1).powi(2) / 1e9
+        ),
+        yes((printed.freq_hz[0] / 62.5 - 1.0).abs() < 0.1),
+    );
     claim(
         &mut claims,
         "natural-frequencies",
         "§3.1, Table 3",
-        "The paper wing's first two natural frequencies are 62.5 Hz (spanwise bending) and 86.9 Hz (torsion), within 4.5 % of the insect's 60 / 84 Hz.",
+        "The paper wing's first two modes are spanwise bending at 62.5 Hz and spanwise torsion at 86.9 Hz (f2/f1 = 1.39), within 4.5 % of the insect's 60 / 84 Hz.",
         format!(
-            "Used as inputs: {:.1} / {:.1} Hz, {:.1} % / {:.1} % above the insect's. (Computing them from a shell model needs E ≈ 10 GPa, not the printed 10 MPa, which gives f1 ≈ 1.7 Hz; see the FE module.)",
-            crate::presets::PAPER_FREQ_HZ[0],
-            crate::presets::PAPER_FREQ_HZ[1],
-            100.0 * (62.5 / 60.0 - 1.0),
-            100.0 * (86.9 / 84.0 - 1.0)
+            "Synthetic outline, 13 % camber, E = {:.2} GPa: root-edge clamp gives {:.1} Hz ({}) and {:.1} Hz ({}), f2/f1 = {:.2}; clamping a 3 mm basal strip gives {:.1} / {:.1} Hz, f2/f1 = {:.2} (paper {:.2}). f2/f1 depends strongly on how the root is held, and the outline is not the paper's CT-traced wing, so the pair is reproduced only in part. The modal-model presets use Table 3 as printed. Thresholds: f2/f1 within 10 % of 1.39 for the root clamp (holds) or only for the strip (partly).",
+            crate::fem::PAPER_FREQUENCIES_E_PA / 1e9,
+            f1,
+            fe.kinds[0],
+            f2,
+            fe.kinds[1],
+            f2 / f1,
+            s1,
+            s2,
+            s2 / s1,
+            paper_ratio
         ),
-        Verdict::Input,
+        if ((f2 / f1) / paper_ratio - 1.0).abs() < 0.1 {
+            Verdict::Holds
+        } else if ((s2 / s1) / paper_ratio - 1.0).abs() < 0.1 {
+            Verdict::Partly
+        } else {
+            Verdict::Fails
+        },
     );
 
     // ---- Fig. 4: magnitudes and spectra of the system parameters (mode 1) ----

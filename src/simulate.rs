@@ -107,6 +107,14 @@ pub fn mean_softening(kin: &Compiled) -> f64 {
 
 /// Floquet analysis of one mode under compiled kinematics.
 pub fn floquet_for(kin: &Compiled, mode: &Mode) -> FloquetResult {
+    floquet_with(kin, mode, None)
+}
+
+fn floquet_with(
+    kin: &Compiled,
+    mode: &Mode,
+    monodromy: Option<nalgebra::Matrix2<f64>>,
+) -> FloquetResult {
     let ode = ModalOde::new(kin, mode);
     let w = mode.omega();
     let w2 = w * w - mean_softening(kin);
@@ -115,7 +123,7 @@ pub fn floquet_for(kin: &Compiled, mode: &Mode) -> FloquetResult {
     } else {
         f64::NAN
     };
-    floquet::analyse(&ode, kin.wd / (2.0 * PI), naive)
+    floquet::analyse_with(&ode, kin.wd / (2.0 * PI), naive, monodromy)
 }
 
 /// Propagates one mode: returns the raw propagation.
@@ -149,7 +157,7 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
             total,
         };
         let contribution_percent = contributions(&q.euler, &q.centrifugal, &q.coriolis, &q.total);
-        let floquet = floquet_for(&kin, mode);
+        let floquet = floquet_with(&kin, mode, Some(p.monodromy));
         let accuracy = Accuracy {
             method: "one-period Gauss–Legendre (order 8) propagator + exact period recursion"
                 .into(),

@@ -165,3 +165,80 @@ fn psd_sweep_and_reproduce_run() {
     assert_eq!(code, 0);
     assert!(out.contains("Examples"));
 }
+
+#[test]
+fn modes_feed_simulate_end_to_end() {
+    let dir = std::env::temp_dir().join(format!("wingbeat-modes-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (code, out, err) = run(&["modes", "--mesh-size-mm", "2.5", "--n-modes", "3"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let f: Vec<f64> = serde_json::from_value(v["freq_hz"].clone()).unwrap();
+    assert_eq!(f.len(), 3);
+    assert!(f[0] > 50.0 && f[0] < 80.0, "f1 = {}", f[0]);
+    assert!(v["mass_kg"].as_f64().unwrap() > 5e-5 && v["mass_kg"].as_f64().unwrap() < 8e-5);
+    assert_eq!(v["a"].as_array().unwrap().len(), 3);
+    assert_eq!(
+        v["shapes"][0].as_array().unwrap().len(),
+        v["nodes"].as_array().unwrap().len()
+    );
+    assert!(v["planform_note"]
+        .as_str()
+        .unwrap()
+        .to_lowercase()
+        .contains("synthetic"));
+    assert_eq!(v["modes"][0]["strains"][0]["point"], "P");
+    let path = dir.join("modes.json");
+    std::fs::write(&path, &out).unwrap();
+    let (code, out, err) = run(&[
+        "simulate",
+        "--modes",
+        path.to_str().unwrap(),
+        "--duration",
+        "0.3",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let s: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(s["modes"].as_array().unwrap().len(), 3);
+    assert!((s["modes"][0]["freq_hz"].as_f64().unwrap() - f[0]).abs() < 1e-12);
+    assert!(s["strain"]["gamma_xy"].as_array().unwrap().len() == 3001);
+}
+
+#[test]
+fn modes_bad_input_is_named() {
+    let dir = std::env::temp_dir().join(format!("wingbeat-modes-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let two = dir.join("two.csv");
+    std::fs::write(&two, "x_mm,y_mm\n0,0\n10,-5\n").unwrap();
+    let bow = dir.join("bowtie.json");
+    std::fs::write(&bow, "[[0,0],[10,-10],[10,0],[0,-10]]").unwrap();
+    for (args, needle) in [
+        (vec!["modes", "--clamp", "glued"], "--clamp"),
+        (vec!["modes", "--camber", "2"], "camber"),
+        (vec!["modes", "--mesh-size-mm", "0.001"], "mesh_size_mm"),
+        (vec!["modes", "--e-pa", "-5"], "material.e_pa"),
+        (vec!["modes", "--nu", "0.5"], "material.nu"),
+        (vec!["modes", "--n-modes", "0"], "n_modes"),
+        (vec!["modes", "--material", "steel"], "--material"),
+        (
+            vec!["modes", "--point", "Q:200,5", "--mesh-size-mm", "3"],
+            "--point Q",
+        ),
+        (
+            vec!["modes", "--planform", two.to_str().unwrap()],
+            "planform",
+        ),
+        (
+            vec!["modes", "--planform", bow.to_str().unwrap()],
+            "intersect",
+        ),
+    ] {
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(
+            err.to_lowercase().contains(&needle.to_lowercase()),
+            "{args:?}: {err:?} lacks {needle:?}"
+        );
+        assert!(!err.contains("panicked"));
+    }
+}

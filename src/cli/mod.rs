@@ -1,5 +1,7 @@
 //! Argument parsing and the subcommands of the `wingbeat` binary.
 
+mod modes;
+
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
 use wingbeat::analysis::ic_map::{ic_map, IcAttribution, IcMapOptions};
@@ -32,6 +34,8 @@ enum Command {
     Sweep(SweepArgs),
     /// Every claim of the paper's §3–4: what it says, what wingbeat computes, whether it holds.
     Reproduce(ReproduceArgs),
+    /// Shell FE modes of a planform with camber: frequencies, a_k/b_k (SI), shapes, strains.
+    Modes(modes::ModesArgs),
 }
 
 /// Output of commands that produce tables.
@@ -51,7 +55,9 @@ enum ReportFormat {
 /// Inputs shared by every command that runs a simulation.
 #[derive(Args, Debug, Clone)]
 struct SimInput {
-    /// Start from a named preset (only `paper`: Tables 3–6, forward flight).
+    /// Start from a named preset: `paper` (Tables 3–6 as printed, forward flight) or `fe-wing`
+    /// (the same kinematics with the first four shell-FE modes of the default synthetic wing,
+    /// SI a_k, strain at P = (3, −6) mm; takes a second or two to compute).
     #[arg(long, default_value = "paper")]
     preset: String,
     /// JSON config file (SimConfig: kinematics, modes, duration_s, sample_rate_hz,
@@ -188,6 +194,7 @@ pub fn run() -> Result<String> {
         Command::Psd(a) => cmd_psd(a),
         Command::Sweep(a) => cmd_sweep(a),
         Command::Reproduce(a) => cmd_reproduce(a),
+        Command::Modes(a) => modes::run(&a, read_file),
     }
 }
 

@@ -148,3 +148,27 @@ pub fn integrate<O: LinearOde + ?Sized>(
     }
     xs
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tableau_meets_the_order_eight_conditions() {
+        let t = Tableau::new();
+        // Gauss quadrature with 4 nodes integrates polynomials up to degree 7 exactly.
+        for m in 0..8 {
+            let q: f64 = (0..STAGES).map(|j| t.b[j] * t.c[j].powi(m)).sum();
+            assert!(
+                (q - 1.0 / (m as f64 + 1.0)).abs() < 1e-14,
+                "degree {m}: {q}"
+            );
+        }
+        // Nodes symmetric about 1/2, weights symmetric, collocation rows sum to c_i.
+        for i in 0..STAGES {
+            assert!((t.c[i] + t.c[STAGES - 1 - i] - 1.0).abs() < 1e-14);
+            assert!((t.b[i] - t.b[STAGES - 1 - i]).abs() < 1e-14);
+            assert!((t.a[i].iter().sum::<f64>() - t.c[i]).abs() < 1e-14);
+        }
+    }
+}

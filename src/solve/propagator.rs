@@ -196,9 +196,16 @@ pub fn propagate<O: LinearOde + ?Sized>(ode: &O, dt: f64, n: usize) -> Result<Pr
     let mut h_q = [Vec::with_capacity(n), Vec::with_capacity(n)];
     let mut h_qdot = [Vec::with_capacity(n), Vec::with_capacity(n)];
     // Plain arrays in the hot loop: Φ(τ) row-major and p_j(τ), per checkpoint.
-    let phi: Vec<[f64; 4]> = map.phi.iter().map(|m| [m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]]).collect();
-    let part: Vec<[[f64; 2]; MAX_FORCES]> =
-        map.part.iter().map(|p| std::array::from_fn(|j| [p[j][0], p[j][1]])).collect();
+    let phi: Vec<[f64; 4]> = map
+        .phi
+        .iter()
+        .map(|m| [m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]])
+        .collect();
+    let part: Vec<[[f64; 2]; MAX_FORCES]> = map
+        .part
+        .iter()
+        .map(|p| std::array::from_fn(|j| [p[j][0], p[j][1]]))
+        .collect();
     // States at the start of period `cur`, and M^cur.
     let mut cur: u64 = 0;
     let mut xs = [Vector2::zeros(); MAX_FORCES];
@@ -258,4 +265,29 @@ pub fn propagate<O: LinearOde + ?Sized>(ode: &O, dt: f64, n: usize) -> Result<Pr
         period_error: map.error_estimate,
         periods,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn commensurate_grid_uses_one_period_of_checkpoints() {
+        let s = schedule(1e-4, 1001, 0.04);
+        assert_eq!(s.phases.len(), 400);
+        assert_eq!(s.slots[0], (0, 0));
+        assert_eq!(s.slots[399], (0, 399));
+        assert_eq!(s.slots[400], (1, 0));
+        assert_eq!(s.slots[1000], (2, 200));
+    }
+
+    #[test]
+    fn incommensurate_grid_gets_a_phase_per_sample() {
+        let s = schedule(1.0 / 7777.0, 1000, 0.04);
+        assert!(s.phases.windows(2).all(|w| w[1] > w[0]));
+        for (i, &(k, slot)) in s.slots.iter().enumerate() {
+            let t = i as f64 / 7777.0;
+            assert!((k as f64 * 0.04 + s.phases[slot as usize] - t).abs() < 1e-15);
+        }
+    }
 }

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Installs whatever the lab needs and is missing on this machine; skips what is already there.
+#   scripts/ensure-tools.sh            wasm target, wasm-bindgen CLI (exact version), npm deps
+#   scripts/ensure-tools.sh --browser  ... plus Debian's chromium + chromium-driver (tests)
+# Facts behind the choices: /work/shared/TOOLCHAIN.md (cargo install WITHOUT --locked; wasm-opt
+# only from npm's binaryen; never `npx playwright install`).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+
+want_browser=0
+for a in "$@"; do
+  case "$a" in
+    --browser) want_browser=1 ;;
+    *) echo "ensure-tools: unknown option $a" >&2; exit 2 ;;
+  esac
+done
+
+# The wasm-bindgen crate is pinned exactly in Cargo.toml; the CLI must be the same version.
+WB_VERSION=$(sed -n 's/^wasm-bindgen = { version = "=\([0-9.]*\)".*/\1/p' Cargo.toml)
+if [ -z "$WB_VERSION" ]; then
+  echo "ensure-tools: could not read the pinned wasm-bindgen version from Cargo.toml" >&2
+  exit 1
+fi
+
+if ! rustup target list --installed | grep -qx wasm32-unknown-unknown; then
+  echo "ensure-tools: adding the wasm32-unknown-unknown target"
+  rustup target add wasm32-unknown-unknown
+fi
+
+if [ "$(wasm-bindgen --version 2>/dev/null || true)" != "wasm-bindgen $WB_VERSION" ]; then
+  echo "ensure-tools: installing wasm-bindgen-cli $WB_VERSION (takes about 5 minutes)"
+  # No --locked: the CLI's lockfile pins a crate version the registry mirror lacks.
+  cargo install wasm-bindgen-cli --version "$WB_VERSION"
+fi
+
+if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/uplot ] || [ ! -d node_modules/playwright-core ] \
+   || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "ensure-tools: installing npm dependencies"
+  npm ci --no-audit --no-fund
+fi
+
+if [ "$want_browser" = 1 ] && { [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; }; then
+  echo "ensure-tools: installing chromium + chromium-driver (Debian)"
+  SUDO=""
+  if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+  $SUDO apt-get update
+  $SUDO apt-get install -y --no-install-recommends -o DPkg::Lock::Timeout=600 chromium chromium-driver
+fi

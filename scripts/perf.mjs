@@ -1,0 +1,112 @@
+#!/usr/bin/env node
+// Measures the lab's performance in headless Chromium and prints the numbers quoted in
+// docs/lab.md (also written to test-output/perf.json):
+//   * load-to-interactive: navigation start → first complete render (wasm loaded, paper case
+//     computed and drawn, sliders live), median of 5 fresh page loads;
+//   * slider latency: keydown on the γ0 slider → redraw finished (includes the wait for the next
+//     animation frame), plus its compute and draw parts, over 40 key presses;
+//   * the 101×101 initial-condition map in wasm on the main thread (median of 20);
+//   * the wasm module's size, raw and gzipped (-9).
+// Usage: node scripts/perf.mjs [--screenshot]   (--screenshot also writes docs/lab.png)
+// Run `scripts/build-web.sh www` first (`npm run perf` does both).
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { setup, openPage, waitRenders, ROOT, OUT } from '../tests/e2e/helpers.mjs';
+
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.floor(s.length / 2)];
+};
+const pct = (xs, p) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.min(s.length - 1, Math.floor(p * s.length))];
+};
+const r1 = (x) => Math.round(x * 10) / 10;
+
+const env = await setup();
+const log = (...a) => { if (process.env.PERF_DEBUG) console.error(...a); };
+const result = {};
+try {
+  // Load-to-interactive.
+  const loads = [];
+  for (let i = 0; i < 5; i++) {
+    const { page, context } = await openPage(env.browser, env.url);
+    await page.goto(env.url);
+    await waitRenders(page, 1);
+    loads.push(await page.evaluate(() => document.querySelector('wing-lab').lastTiming.end));
+    await context.close();
+  }
+  log('loads', loads);
+  result.load_to_interactive_ms = { median: r1(median(loads)), all: loads.map(r1) };
+
+  const { page, context, problems } = await openPage(env.browser, env.url);
+  await page.goto(env.url);
+  await waitRenders(page, 1);
+  // Warm up, then measure slider moves.
+  await page.focus('wing-lab input[type=range][data-key="gamma0"]');
+  const lat = [], comp = [], draw = [];
+  // Persistent listeners: every keydown on the slider and every finished render is logged.
+  await page.evaluate(() => {
+    const lab = document.querySelector('wing-lab');
+    const input = document.querySelector('wing-lab input[type=range][data-key="gamma0"]');
+    window.__perf = { downs: [], renders: [] };
+    input.addEventListener('keydown', (e) => window.__perf.downs.push(e.timeStamp));
+    lab.addEventListener('wl-rendered', (e) => window.__perf.renders.push(e.detail));
+  });
+  for (let i = 0; i < 50; i++) {
+    await page.keyboard.press(i % 2 ? 'ArrowLeft' : 'ArrowRight');
+    await page.waitForFunction((n) => window.__perf.renders.length >= n, i + 1, { timeout: 20000 });
+    await page.waitForTimeout(40);
+  }
+  const log_ = await page.evaluate(() => window.__perf);
+  log(log_.downs.length, log_.renders.length);
+  for (let i = 10; i < 50; i++) {
+    const r = log_.renders[i];
+    lat.push(r.end - log_.downs[i]);
+    comp.push(r.compute);
+    draw.push(r.draw);
+  }
+  result.slider = {
+    keydown_to_redrawn_ms: { median: r1(median(lat)), p90: r1(pct(lat, 0.9)) },
+    compute_ms: { median: r1(median(comp)), p90: r1(pct(comp, 0.9)) },
+    draw_ms: { median: r1(median(draw)), p90: r1(pct(draw, 0.9)) },
+    compute_plus_draw_ms: { median: r1(median(comp.map((c, i) => c + draw[i]))) },
+    samples: lat.length,
+  };
+
+  // IC map 101×101 in wasm, main thread.
+  result.ic_map_101x101_ms = await page.evaluate(async () => {
+    const wb = await import('./pkg/wingbeat.js');
+    const cfg = document.querySelector('wing-lab').config();
+    for (let i = 0; i < 5; i++) wb.icMap(cfg, { n_q: 101, n_qdot: 101 });
+    const ts = [];
+    for (let i = 0; i < 20; i++) {
+      const t = performance.now();
+      wb.icMap(cfg, { n_q: 101, n_qdot: 101 });
+      ts.push(performance.now() - t);
+    }
+    ts.sort((a, b) => a - b);
+    return { median: Math.round(ts[10] * 10) / 10, max: Math.round(ts[19] * 10) / 10 };
+  });
+
+  if (process.argv.includes('--screenshot')) {
+    await page.click('wing-lab .wl-preset');
+    await page.waitForTimeout(300);
+    await page.mouse.move(1000, 200);
+    await page.waitForTimeout(100);
+    await page.screenshot({ path: path.join(ROOT, 'docs', 'lab.png') });
+    result.screenshot = 'docs/lab.png';
+  }
+  result.console_problems = problems;
+  await context.close();
+} finally {
+  await env.close();
+}
+
+const wasm = fs.readFileSync(path.join(ROOT, process.env.LAB_ROOT || 'www', 'pkg', 'wingbeat_bg.wasm'));
+result.wasm_bytes = { raw: wasm.length, gzip9: zlib.gzipSync(wasm, { level: 9 }).length };
+result.machine = `${(await import('node:os')).cpus().length} cores, load average ${(await import('node:os')).loadavg().map((x) => x.toFixed(1)).join(' ')}`;
+fs.mkdirSync(OUT, { recursive: true });
+fs.writeFileSync(path.join(OUT, 'perf.json'), JSON.stringify(result, null, 2));
+console.log(JSON.stringify(result, null, 2));

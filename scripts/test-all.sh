@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Runs every test of the project (what `npm test` calls):
+#   scripts/test-all.sh [all|native|wasm|e2e]
+#   native  cargo test --all-features (core, CLI, and the wasm API's plain-Rust helpers)
+#   wasm    wasm-bindgen-test suites: tests/wasm_api.rs in node, tests/wasm_browser.rs in Chromium
+#   e2e     node --test: tests/js (state parsing) and tests/e2e (Playwright + Debian Chromium)
+# Installs what is missing first (scripts/ensure-tools.sh --browser). Honours CARGO_TARGET_DIR.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+what="${1:-all}"
+
+native() {
+  echo "== native: cargo test --all-features"
+  cargo test --all-features
+}
+
+wasm() {
+  echo "== wasm: wasm-bindgen-test in node and headless Chromium"
+  export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner
+  export WASM_BINDGEN_TEST_TIMEOUT=300
+  local args=(--release --target wasm32-unknown-unknown --no-default-features --features web)
+  cargo test "${args[@]}" --test wasm_api
+  CHROMEDRIVER=/usr/bin/chromedriver cargo test "${args[@]}" --test wasm_browser
+}
+
+e2e() {
+  echo "== e2e: build the lab, then node --test tests/js tests/e2e"
+  bash scripts/build-web.sh www
+  node --test --test-concurrency=1 tests/js/ tests/e2e/
+}
+
+case "$what" in
+  native) native ;;
+  wasm) bash scripts/ensure-tools.sh --browser; wasm ;;
+  e2e) bash scripts/ensure-tools.sh --browser; e2e ;;
+  all) bash scripts/ensure-tools.sh --browser; native; wasm; e2e; echo "== all test suites passed" ;;
+  *) echo "usage: scripts/test-all.sh [all|native|wasm|e2e]" >&2; exit 2 ;;
+esac

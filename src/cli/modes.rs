@@ -1,0 +1,179 @@
+//! `wingbeat modes`: shell FE modes of a planform (paper §3.1), JSON out.
+
+use clap::Args;
+use wingbeat::fem::{
+    compute_modes, parse_planform_csv, parse_planform_json, Clamp, FemInput, FemModes,
+    ShellMaterial,
+};
+use wingbeat::model::Mode;
+use wingbeat::{Result, WingbeatError};
+
+/// The default strain point P near the wing base (mm): the paper's Table 6 point is not
+/// given in coordinates, so wingbeat picks one at mid-root-chord, 3 mm out from the root.
+pub const DEFAULT_POINT: (f64, f64) = (3.0, -6.0);
+
+#[derive(Args, Debug, Clone)]
+pub struct ModesArgs {
+    /// Planform outline: CSV (`x_mm,y_mm` or `i,x_mm,y_mm`, `#` comments) or JSON `[[x,y],…]`, mm.
+    /// Default: the built-in SYNTHETIC Manduca-like outline (not digitised from a specimen).
+    #[arg(long, value_name = "FILE")]
+    pub planform: Option<std::path::PathBuf>,
+    /// Camber rise as a fraction of the local chord (circular arc), [0, 0.5].
+    #[arg(long, default_value_t = 0.13)]
+    pub camber: f64,
+    /// Root boundary condition: `root` (clamp the root edge on x = 0) or `strip:X_MM`
+    /// (clamp every node with x ≤ X_MM). f2/f1 depends strongly on it.
+    #[arg(long, default_value = "root")]
+    pub clamp: String,
+    /// Material preset: `paper-frequencies` (E = 13.11 GPa, reproduces f1 ≈ 62.5 Hz) or
+    /// `paper-as-printed` (E = 10 MPa as in Table 2 — a unit slip, f1 ≈ 1.7 Hz).
+    #[arg(long, default_value = "paper-frequencies")]
+    pub material: String,
+    /// Thickness, µm (overrides the preset).
+    #[arg(long, allow_negative_numbers = true)]
+    pub thickness_um: Option<f64>,
+    /// Young's modulus, Pa (overrides the preset).
+    #[arg(long, allow_negative_numbers = true)]
+    pub e_pa: Option<f64>,
+    /// Density, kg/m³ (overrides the preset).
+    #[arg(long, allow_negative_numbers = true)]
+    pub rho: Option<f64>,
+    /// Poisson's ratio, (−1, 0.5) (overrides the preset).
+    #[arg(long, allow_negative_numbers = true)]
+    pub nu: Option<f64>,
+    /// Number of modes, 1–64.
+    #[arg(long, default_value_t = 6)]
+    pub n_modes: usize,
+    /// Target element edge, mm (node count capped at 20 000).
+    #[arg(long, default_value_t = wingbeat::fem::DEFAULT_MESH_SIZE_MM, allow_negative_numbers = true)]
+    pub mesh_size_mm: f64,
+    /// Strain point(s) `NAME:X_MM,Y_MM` carried into the `modes` array for `simulate --modes`.
+    /// Default `P:3,-6`.
+    #[arg(long = "point", value_name = "NAME:X,Y")]
+    pub points: Vec<String>,
+}
+
+fn parse_point(s: &str) -> Result<(String, f64, f64)> {
+    let bad = || {
+        WingbeatError::invalid(
+            "--point",
+            s,
+            "NAME:X_MM,Y_MM with finite numbers, e.g. P:3,-6",
+        )
+    };
+    let (name, xy) = s.split_once(':').ok_or_else(bad)?;
+    let (x, y) = xy.split_once(',').ok_or_else(bad)?;
+    let x: f64 = x.trim().parse().map_err(|_| bad())?;
+    let y: f64 = y.trim().parse().map_err(|_| bad())?;
+    if name.is_empty() || !x.is_finite() || !y.is_finite() {
+        return Err(bad());
+    }
+    Ok((name.to_string(), x, y))
+}
+
+/// Builds the FE input from the flags (file reading happens here, not in the core).
+pub fn fem_input(
+    a: &ModesArgs,
+    read: impl Fn(&std::path::Path) -> Result<String>,
+) -> Result<FemInput> {
+    let mut input = FemInput::default();
+    if let Some(p) = &a.planform {
+        let text = read(p)?;
+        let is_json = p
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+            || text.trim_start().starts_with('[');
+        input.planform_mm = if is_json {
+            parse_planform_json(&text)?
+        } else {
+            parse_planform_csv(&text)?
+        };
+        input.planform_note = format!("user outline from {}", p.display());
+    }
+    input.camber = a.camber;
+    input.clamp = Clamp::parse(&a.clamp)
+        .map_err(|_| WingbeatError::invalid("--clamp", &a.clamp, "root | strip:X_MM"))?;
+    input.material = match a.material.as_str() {
+        "paper-frequencies" => ShellMaterial::paper_frequencies(),
+        "paper-as-printed" => ShellMaterial::paper_as_printed(),
+        other => {
+            return Err(WingbeatError::invalid(
+                "--material",
+                other,
+                "paper-frequencies | paper-as-printed",
+            ))
+        }
+    };
+    if let Some(t) = a.thickness_um {
+        input.material.thickness_m = t * 1e-6;
+    }
+    if let Some(e) = a.e_pa {
+        input.material.e_pa = e;
+    }
+    if let Some(r) = a.rho {
+        input.material.rho_kg_m3 = r;
+    }
+    if let Some(n) = a.nu {
+        input.material.nu = n;
+    }
+    input.n_modes = a.n_modes;
+    input.mesh_size_mm = a.mesh_size_mm;
+    Ok(input)
+}
+
+/// The strain points requested (default P).
+pub fn points(a: &ModesArgs) -> Result<Vec<(String, f64, f64)>> {
+    if a.points.is_empty() {
+        return Ok(vec![("P".into(), DEFAULT_POINT.0, DEFAULT_POINT.1)]);
+    }
+    a.points.iter().map(|s| parse_point(s)).collect()
+}
+
+/// Model modes with strains at the points; a point outside the wing is an error naming it.
+pub fn model_modes(fe: &FemModes, pts: &[(String, f64, f64)]) -> Result<Vec<Mode>> {
+    for (name, x, y) in pts {
+        fe.strain_at(0, *x, *y).map_err(|_| {
+            WingbeatError::invalid(
+                format!("--point {name}"),
+                format!("({x}, {y}) mm"),
+                "a point inside the meshed planform",
+            )
+        })?;
+    }
+    Ok(fe.to_modes(0.0, pts))
+}
+
+/// Runs `wingbeat modes`.
+pub fn run(a: &ModesArgs, read: impl Fn(&std::path::Path) -> Result<String>) -> Result<String> {
+    let input = fem_input(a, read)?;
+    let pts = points(a)?;
+    eprintln!(
+        "modes: meshing and solving ({} modes, {} mm elements)…",
+        input.n_modes, input.mesh_size_mm
+    );
+    let t0 = std::time::Instant::now();
+    let fe = compute_modes(&input)?;
+    eprintln!(
+        "modes: {} nodes, {} DOFs, done in {:.2} s",
+        fe.nodes.len(),
+        fe.n_dofs,
+        t0.elapsed().as_secs_f64()
+    );
+    let modes = model_modes(&fe, &pts)?;
+    let mut v = serde_json::to_value(&fe).map_err(|e| WingbeatError::NonFinite {
+        what: "JSON output".into(),
+        detail: e.to_string(),
+    })?;
+    v["modes"] = serde_json::to_value(&modes).map_err(|e| WingbeatError::NonFinite {
+        what: "JSON output".into(),
+        detail: e.to_string(),
+    })?;
+    v["units"] = serde_json::json!({
+        "freq_hz": "Hz", "a": "kg^0.5 m", "b": "kg^0.5 m", "mass_kg": "kg", "nodes": "m",
+        "shapes": "kg^-0.5 (mass-normalised out-of-plane displacement)", "strain_nodes": "strain per unit modal coordinate [eps_x, eps_y, gamma_xy], top surface"
+    });
+    serde_json::to_string(&v).map_err(|e| WingbeatError::NonFinite {
+        what: "JSON output".into(),
+        detail: e.to_string(),
+    })
+}

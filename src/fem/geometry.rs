@@ -1,0 +1,311 @@
+//! Planform input, validation and the camber surface.
+//!
+//! Units in this module are millimetres (the outline as the user gives it). The frame is the
+//! paper's wing frame seen from above: x spanwise from the root, y chordwise (the chord runs
+//! toward −y), origin at the root point (0, 0).
+
+use crate::error::{Result, WingbeatError};
+
+/// The built-in default outline: a SYNTHETIC Manduca-like forewing (mm), not digitised from a
+/// specimen. Copied from the project's shared data with its provenance header.
+pub const MANDUCA_CSV: &str = include_str!("../../data/planform_manduca.csv");
+
+/// Provenance note shown wherever the default outline is used.
+pub const MANDUCA_NOTE: &str =
+    "synthetic Manduca-like forewing outline (span 49 mm, area 8.70 cm^2); \
+plausible, NOT digitised from a specimen";
+
+/// Largest number of outline points accepted (the self-intersection check is O(n²)).
+pub const MAX_OUTLINE_POINTS: usize = 5000;
+
+/// Largest coordinate magnitude accepted, mm (1 km: anything bigger is a unit error).
+pub const MAX_COORD_MM: f64 = 1.0e6;
+
+fn parse_err(what: &str, msg: impl Into<String>) -> WingbeatError {
+    WingbeatError::Parse {
+        what: what.to_string(),
+        message: msg.into(),
+    }
+}
+
+/// Parses a planform outline from CSV text (mm).
+///
+/// Accepted: a header line `x_mm,y_mm` or `i,x_mm,y_mm` (optional), lines starting with `#`
+/// are comments, blank lines are skipped. Returns the points in file order.
+pub fn parse_planform_csv(text: &str) -> Result<Vec<[f64; 2]>> {
+    let what = "planform CSV";
+    let mut pts = Vec::new();
+    let mut cols: Option<(usize, usize, usize)> = None; // (n columns, x col, y col)
+    for (lineno, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let fields: Vec<&str> = line.split(',').map(|s| s.trim()).collect();
+        if cols.is_none() && fields.iter().any(|f| f.parse::<f64>().is_err()) {
+            // header line
+            let lower: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
+            let xi = lower.iter().position(|f| f == "x_mm" || f == "x");
+            let yi = lower.iter().position(|f| f == "y_mm" || f == "y");
+            match (xi, yi) {
+                (Some(xi), Some(yi)) => {
+                    cols = Some((fields.len(), xi, yi));
+                    continue;
+                }
+                _ => {
+                    return Err(parse_err(
+                        what,
+                        format!(
+                            "line {}: expected a header `x_mm,y_mm` or `i,x_mm,y_mm`, got `{line}`",
+                            lineno + 1
+                        ),
+                    ))
+                }
+            }
+        }
+        let (n, xi, yi) = *cols.get_or_insert(match fields.len() {
+            2 => (2, 0, 1),
+            3 => (3, 1, 2),
+            k => {
+                return Err(parse_err(
+                    what,
+                    format!("line {}: expected 2 or 3 columns, got {k}", lineno + 1),
+                ))
+            }
+        });
+        if fields.len() != n {
+            return Err(parse_err(
+                what,
+                format!(
+                    "line {}: expected {n} columns, got {}",
+                    lineno + 1,
+                    fields.len()
+                ),
+            ));
+        }
+        let num = |s: &str| -> Result<f64> {
+            s.parse::<f64>().map_err(|e| {
+                parse_err(
+                    what,
+                    format!("line {}: `{s}` is not a number ({e})", lineno + 1),
+                )
+            })
+        };
+        pts.push([num(fields[xi])?, num(fields[yi])?]);
+        if pts.len() > MAX_OUTLINE_POINTS {
+            return Err(WingbeatError::ResourceCap {
+                field: "planform".into(),
+                requested: format!("more than {MAX_OUTLINE_POINTS} points"),
+                cap: MAX_OUTLINE_POINTS.to_string(),
+                why: "the outline checks are quadratic in the point count".into(),
+            });
+        }
+    }
+    Ok(pts)
+}
+
+/// Parses a planform outline from a JSON array of `[x, y]` pairs (mm).
+pub fn parse_planform_json(text: &str) -> Result<Vec<[f64; 2]>> {
+    let pts: Vec<[f64; 2]> =
+        serde_json::from_str(text).map_err(|e| parse_err("planform JSON", e.to_string()))?;
+    if pts.len() > MAX_OUTLINE_POINTS {
+        return Err(WingbeatError::ResourceCap {
+            field: "planform".into(),
+            requested: format!("{} points", pts.len()),
+            cap: MAX_OUTLINE_POINTS.to_string(),
+            why: "the outline checks are quadratic in the point count".into(),
+        });
+    }
+    Ok(pts)
+}
+
+/// The default (synthetic) Manduca-like outline, mm.
+pub fn manduca_planform() -> Vec<[f64; 2]> {
+    parse_planform_csv(MANDUCA_CSV).expect("built-in planform parses")
+}
+
+/// A rectangle `span_mm` × `chord_mm` as a counter-clockwise outline with the root edge on
+/// x = 0 from (0, −chord) to (0, 0), like the wing outlines (chord toward −y).
+pub fn rectangle_planform(span_mm: f64, chord_mm: f64) -> Vec<[f64; 2]> {
+    vec![
+        [0.0, -chord_mm],
+        [span_mm, -chord_mm],
+        [span_mm, 0.0],
+        [0.0, 0.0],
+    ]
+}
+
+/// Signed area (mm²) of a closed polygon; positive when counter-clockwise.
+pub fn signed_area(p: &[[f64; 2]]) -> f64 {
+    let n = p.len();
+    (0..n)
+        .map(|i| {
+            let a = p[i];
+            let b = p[(i + 1) % n];
+            a[0] * b[1] - b[0] * a[1]
+        })
+        .sum::<f64>()
+        * 0.5
+}
+
+fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+fn on_segment(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> bool {
+    p[0] >= a[0].min(b[0])
+        && p[0] <= a[0].max(b[0])
+        && p[1] >= a[1].min(b[1])
+        && p[1] <= a[1].max(b[1])
+}
+
+fn segments_intersect(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+    let d1 = orient(c, d, a);
+    let d2 = orient(c, d, b);
+    let d3 = orient(a, b, c);
+    let d4 = orient(a, b, d);
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+    {
+        return true;
+    }
+    (d1 == 0.0 && on_segment(c, d, a))
+        || (d2 == 0.0 && on_segment(c, d, b))
+        || (d3 == 0.0 && on_segment(a, b, c))
+        || (d4 == 0.0 && on_segment(a, b, d))
+}
+
+/// Validates and normalises an outline (mm): at least 3 distinct points, finite coordinates,
+/// no repeated consecutive points (a closing copy of the first point is dropped), not
+/// self-intersecting, non-zero area. Returns it counter-clockwise.
+pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
+    if points.len() > MAX_OUTLINE_POINTS {
+        return Err(WingbeatError::ResourceCap {
+            field: "planform".into(),
+            requested: format!("{} points", points.len()),
+            cap: MAX_OUTLINE_POINTS.to_string(),
+            why: "the outline checks are quadratic in the point count".into(),
+        });
+    }
+    for (i, p) in points.iter().enumerate() {
+        for (k, c) in p.iter().enumerate() {
+            if !c.is_finite() || c.abs() > MAX_COORD_MM {
+                return Err(WingbeatError::invalid(
+                    format!("planform[{i}][{k}]"),
+                    c,
+                    format!("a finite coordinate within ±{MAX_COORD_MM} mm"),
+                ));
+            }
+        }
+    }
+    let mut p: Vec<[f64; 2]> = Vec::with_capacity(points.len());
+    for q in points {
+        if p.last() != Some(q) {
+            p.push(*q);
+        }
+    }
+    while p.len() > 1 && p.first() == p.last() {
+        p.pop();
+    }
+    if p.len() < 3 {
+        return Err(WingbeatError::invalid(
+            "planform",
+            format!("{} distinct points", p.len()),
+            "at least 3 distinct points forming a simple polygon",
+        ));
+    }
+    let n = p.len();
+    for i in 0..n {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        for j in (i + 1)..n {
+            // skip adjacent edges (they share a vertex)
+            if j == i + 1 || (i == 0 && j == n - 1) {
+                continue;
+            }
+            let (c, d) = (p[j], p[(j + 1) % n]);
+            if segments_intersect(a, b, c, d) {
+                return Err(WingbeatError::Geometry(format!(
+                    "planform outline is self-intersecting: edge {i} ({:?}–{:?}) crosses edge {j} ({:?}–{:?})",
+                    a, b, c, d
+                )));
+            }
+        }
+        // adjacent edges folding back onto each other
+        let c = p[(i + 2) % n];
+        if orient(a, b, c) == 0.0
+            && (c[0] - b[0]) * (b[0] - a[0]) + (c[1] - b[1]) * (b[1] - a[1]) < 0.0
+        {
+            return Err(WingbeatError::Geometry(format!(
+                "planform outline folds back on itself at point {}",
+                (i + 1) % n
+            )));
+        }
+    }
+    let area = signed_area(&p);
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in &p {
+        for k in 0..2 {
+            lo[k] = lo[k].min(q[k]);
+            hi[k] = hi[k].max(q[k]);
+        }
+    }
+    let diag = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2)).sqrt();
+    if area.abs() <= 1e-9 * diag * diag || diag == 0.0 {
+        return Err(WingbeatError::Geometry(format!(
+            "planform outline is degenerate (area {area:.3e} mm^2)"
+        )));
+    }
+    if area < 0.0 {
+        p.reverse();
+    }
+    Ok(p)
+}
+
+/// Local leading-edge and trailing-edge y (mm) of the outline at spanwise station `x`:
+/// the largest and smallest y where the vertical line through `x` meets the outline.
+/// Returns `None` if the line misses the outline.
+pub fn chord_extent(outline: &[[f64; 2]], x: f64) -> Option<(f64, f64)> {
+    let n = outline.len();
+    let (mut ymax, mut ymin) = (f64::NEG_INFINITY, f64::INFINITY);
+    for i in 0..n {
+        let (a, b) = (outline[i], outline[(i + 1) % n]);
+        let (x0, x1) = (a[0].min(b[0]), a[0].max(b[0]));
+        if x < x0 || x > x1 {
+            continue;
+        }
+        let ys: [f64; 2] = if (b[0] - a[0]).abs() < 1e-300 {
+            [a[1], b[1]]
+        } else {
+            let s = (x - a[0]) / (b[0] - a[0]);
+            let y = a[1] + s * (b[1] - a[1]);
+            [y, y]
+        };
+        for y in ys {
+            ymax = ymax.max(y);
+            ymin = ymin.min(y);
+        }
+    }
+    (ymax >= ymin).then_some((ymax, ymin))
+}
+
+/// Camber height (mm) at (x, y): a circular arc across the local chord at station x whose
+/// rise at mid-chord is `camber` × local chord (so the camber tapers with the chord), zero at
+/// the leading and trailing edges. Points outside the local chord get zero.
+pub fn camber_height(outline: &[[f64; 2]], camber: f64, x: f64, y: f64) -> f64 {
+    if camber == 0.0 {
+        return 0.0;
+    }
+    let Some((yle, yte)) = chord_extent(outline, x) else {
+        return 0.0;
+    };
+    let c = yle - yte;
+    if c <= 0.0 {
+        return 0.0;
+    }
+    let h = camber * c;
+    let half = 0.5 * c;
+    let r = (half * half + h * h) / (2.0 * h);
+    let d = (y.clamp(yte, yle) - 0.5 * (yle + yte)).abs();
+    let s = (r * r - d * d).max(0.0).sqrt() - (r - h);
+    s.max(0.0)
+}

@@ -1,0 +1,615 @@
+//! Shell finite-element model of the wing: the natural frequencies ω_k, mass-normalised mode
+//! shapes φ_k, the in-plane vectors a_k, b_k and the modal strains that the modal model of
+//! Eq. 13 needs (paper §3.1, Eqs. 9–12 and 14–18).
+//!
+//! Pipeline: outline (mm) → [`geometry::validate_outline`] → quality constrained Delaunay mesh
+//! with camber lifted onto z ([`mesh::mesh_planform`]) → flat DKT + membrane shell triangles
+//! ([`element`]) → skyline assembly with RCM ordering ([`assembly`]) → shift-invert block
+//! Krylov eigen-solve ([`eigen`]) → [`FemModes`].
+//!
+//! # Intended CLI (`wingbeat modes`, wired by the CLI module) → [`FemInput`] fields
+//!
+//! | flag | field |
+//! |---|---|
+//! | `--planform FILE` (`.csv` with `x_mm,y_mm` / `i,x_mm,y_mm`, or `.json` `[[x,y],...]`) | `planform_mm` via [`parse_planform_csv`] / [`parse_planform_json`]; `planform_note` = the file name |
+//! | `--camber 0.13` | `camber` (rise / local chord) |
+//! | `--clamp root` or `--clamp strip:X_MM` | `clamp` via [`Clamp::parse`] |
+//! | `--thickness-um 81` | `material.thickness_m` = value × 1e-6 |
+//! | `--e-pa 1.2e10` | `material.e_pa` |
+//! | `--rho 860` | `material.rho_kg_m3` |
+//! | `--nu 0.3` | `material.nu` |
+//! | `--n-modes 6` | `n_modes` |
+//! | `--mesh-size-mm 1.0` | `mesh_size_mm` (target triangle edge) |
+//!
+//! As JSON (`serde`), `clamp` is `"root"`, `"free"` or `{"strip": {"x_mm": 3.0}}`; every
+//! field is optional and missing ones take their default, e.g.
+//! `{"n_modes": 4, "clamp": {"strip": {"x_mm": 3.0}}, "material": {"thickness_m": 8.1e-5,
+//! "e_pa": 1.311e10, "rho_kg_m3": 860.0, "nu": 0.3}}`.
+//!
+//! Everything else defaults to [`FemInput::default`] (the synthetic Manduca-like wing, the
+//! "paper-frequencies" material, root clamp, 6 modes). Output: `serde_json` of [`FemModes`].
+
+// Element and assembly code indexes several parallel arrays per loop; ranges read clearer.
+#![allow(clippy::needless_range_loop)]
+
+pub mod assembly;
+pub mod eigen;
+pub mod element;
+pub mod geometry;
+pub mod mesh;
+pub mod sparse;
+
+pub use element::ShellMaterial;
+pub use geometry::{manduca_planform, parse_planform_csv, parse_planform_json, rectangle_planform};
+pub use mesh::{Mesh, MAX_NODES};
+
+use crate::error::{Result, WingbeatError};
+use crate::model::{ModalStrain, Mode};
+use element::{corner_surface_strain, Vec18};
+use serde::{Deserialize, Serialize};
+
+/// Young's modulus of the "paper-frequencies" preset, Pa: chosen so that the default wing
+/// (default mesh, 13 % camber, root clamp) has f1 ≈ 62.5 Hz, the paper's mode-1 frequency.
+pub const PAPER_FREQUENCIES_E_PA: f64 = 1.311e10;
+
+impl ShellMaterial {
+    /// "paper-as-printed": t = 81 µm, E = 10 MPa, ρ = 860 kg/m³, ν = 0.3 exactly as the paper
+    /// prints them (Table 2). E = 10 MPa is a unit slip: the default wing then has f1 ≈ 1.73 Hz,
+    /// not the paper's 62.5 Hz.
+    pub fn paper_as_printed() -> ShellMaterial {
+        ShellMaterial {
+            thickness_m: 81e-6,
+            e_pa: 10e6,
+            rho_kg_m3: 860.0,
+            nu: 0.3,
+        }
+    }
+
+    /// "paper-frequencies": the printed values with E = [`PAPER_FREQUENCIES_E_PA`] (GPa range),
+    /// calibrated so that the default wing's f1 lands at the paper's 62.5 Hz.
+    pub fn paper_frequencies() -> ShellMaterial {
+        ShellMaterial {
+            e_pa: PAPER_FREQUENCIES_E_PA,
+            ..ShellMaterial::paper_as_printed()
+        }
+    }
+
+    /// Checks thickness, E, ρ > 0 (finite, within generous bounds) and −1 < ν < 0.5.
+    pub fn validate(&self) -> Result<()> {
+        crate::error::check_positive("material.thickness_m", self.thickness_m, 1.0, "m")?;
+        crate::error::check_positive("material.e_pa", self.e_pa, 1e13, "Pa")?;
+        crate::error::check_positive("material.rho_kg_m3", self.rho_kg_m3, 1e5, "kg/m^3")?;
+        if !(self.nu.is_finite() && self.nu > -1.0 && self.nu < 0.5) {
+            return Err(WingbeatError::invalid(
+                "material.nu",
+                self.nu,
+                "a finite Poisson's ratio in the open interval (-1, 0.5)",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Root boundary condition (how the wing is held; f2/f1 depends strongly on it).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Clamp {
+    /// Clamp (all 6 DOFs) the nodes on the outline's root edge(s) lying on x = 0.
+    Root,
+    /// Clamp every node with x ≤ `x_mm` (a basal strip).
+    Strip {
+        /// Strip width from the root, mm.
+        x_mm: f64,
+    },
+    /// No support (free structure; six rigid-body modes). Used by verification.
+    Free,
+}
+
+impl Clamp {
+    /// Parses the CLI form: `root`, `free`, or `strip:X_MM`.
+    pub fn parse(s: &str) -> Result<Clamp> {
+        let t = s.trim().to_ascii_lowercase();
+        match t.as_str() {
+            "root" => Ok(Clamp::Root),
+            "free" => Ok(Clamp::Free),
+            _ => {
+                if let Some(v) = t.strip_prefix("strip:") {
+                    let x: f64 = v.trim().parse().map_err(|_| {
+                        WingbeatError::invalid("clamp", s, "root | free | strip:X_MM")
+                    })?;
+                    Ok(Clamp::Strip { x_mm: x })
+                } else {
+                    Err(WingbeatError::invalid(
+                        "clamp",
+                        s,
+                        "root | free | strip:X_MM",
+                    ))
+                }
+            }
+        }
+    }
+}
+
+/// Everything the shell FE step needs. `Default` is the paper's case: the synthetic
+/// Manduca-like outline, 13 % camber, root clamp, "paper-frequencies" material, 6 modes.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct FemInput {
+    /// Outline, mm, x spanwise from the root, y chordwise (chord toward −y).
+    pub planform_mm: Vec<[f64; 2]>,
+    /// Where the outline came from (copied to the output).
+    pub planform_note: String,
+    /// Camber rise as a fraction of the local chord (circular arc), 0 ..= 0.5.
+    pub camber: f64,
+    /// Root boundary condition.
+    pub clamp: Clamp,
+    /// Shell material.
+    pub material: ShellMaterial,
+    /// Number of modes, 1 ..= 64.
+    pub n_modes: usize,
+    /// Target triangle edge length, mm.
+    pub mesh_size_mm: f64,
+}
+
+/// Default target element size for the default wing, mm.
+pub const DEFAULT_MESH_SIZE_MM: f64 = 1.0;
+
+impl Default for FemInput {
+    fn default() -> Self {
+        FemInput {
+            planform_mm: manduca_planform(),
+            planform_note: geometry::MANDUCA_NOTE.to_string(),
+            camber: 0.13,
+            clamp: Clamp::Root,
+            material: ShellMaterial::paper_frequencies(),
+            n_modes: 6,
+            mesh_size_mm: DEFAULT_MESH_SIZE_MM,
+        }
+    }
+}
+
+/// Result of the shell FE step, JSON-serialisable. Frame: x spanwise, y chordwise, z up,
+/// origin at the root point (0, 0); SI units unless a name says otherwise.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FemModes {
+    /// Provenance of the outline.
+    pub planform_note: String,
+    /// Natural frequencies f_k = ω_k / 2π, Hz (ascending); ω_k² are the eigenvalues of
+    /// K φ = ω² M φ (paper Eq. 10).
+    pub freq_hz: Vec<f64>,
+    /// a_k = Σ_i φ_k,z(node i) (x_i, y_i) dm_i over the nodes with the lumped nodal masses —
+    /// the paper's discrete Eq. 14 (integral form Eq. 11) — kg^½·m, origin at the root point.
+    pub a: Vec<[f64; 2]>,
+    /// b_k = (−a_y, a_x), a_k turned 90° counter-clockwise (paper Eqs. 12 and 15), kg^½·m.
+    pub b: Vec<[f64; 2]>,
+    /// Wing mass, kg.
+    pub mass_kg: f64,
+    /// Centre of mass [x, y, z], m.
+    pub centre_of_mass_m: [f64; 3],
+    /// Node positions [x, y, z], m.
+    pub nodes: Vec<[f64; 3]>,
+    /// Triangles (node indices).
+    pub triangles: Vec<[usize; 3]>,
+    /// Indices of the clamped nodes.
+    pub clamped_nodes: Vec<usize>,
+    /// Per mode, the out-of-plane (global z) displacement of each node of the mode,
+    /// mass-normalised as in paper Eq. 9 (Σ φ_k φ_e dm = δ_ke), kg^-½.
+    pub shapes: Vec<Vec<f64>>,
+    /// Per mode, per node: top-surface strain [ε_x, ε_y, γ_xy] per unit modal coordinate
+    /// (paper Eqs. 16–18), averaged from the elements around the node, kg^-½.
+    pub strain_nodes: Vec<Vec<[f64; 3]>>,
+    /// Relative residual ‖Kφ − ω²Mφ‖ / ‖Kφ‖ per mode (see [`eigen::EigenResult::residuals`]).
+    pub residuals: Vec<f64>,
+    /// Mode classification: "spanwise bending", "torsion", "rigid body" or "other".
+    pub kinds: Vec<String>,
+    /// Largest |φᵀMφ − I| entry over the returned modes (how well Eq. 9 holds).
+    pub mass_orthonormality_error: f64,
+    /// Number of free (unclamped) DOFs.
+    pub n_dofs: usize,
+    /// Material used.
+    pub material: ShellMaterial,
+}
+
+/// Runs the whole FE step for `input`: validate, mesh, assemble, solve, post-process.
+pub fn compute_modes(input: &FemInput) -> Result<FemModes> {
+    input.material.validate()?;
+    crate::error::check_range("camber", input.camber, 0.0, 0.5, "(rise / chord)")?;
+    if input.n_modes == 0 || input.n_modes > crate::model::MAX_MODES {
+        return Err(WingbeatError::invalid(
+            "n_modes",
+            input.n_modes,
+            format!("1 ..= {}", crate::model::MAX_MODES),
+        ));
+    }
+    crate::error::check_positive("mesh_size_mm", input.mesh_size_mm, 1e6, "mm")?;
+    let outline = geometry::validate_outline(&input.planform_mm)?;
+    let mesh = mesh::mesh_planform(&outline, input.mesh_size_mm, input.camber)?;
+    let clamped = clamp_nodes(&outline, &mesh, input.clamp)?;
+    solve_mesh(
+        &mesh,
+        &clamped,
+        &input.material,
+        input.n_modes,
+        &input.planform_note,
+    )
+}
+
+/// Flags the nodes held by `clamp` (outline and clamp in mm, mesh in m).
+pub fn clamp_nodes(outline: &[[f64; 2]], mesh: &Mesh, clamp: Clamp) -> Result<Vec<bool>> {
+    let span = outline
+        .iter()
+        .map(|p| p[0].abs().max(p[1].abs()))
+        .fold(0.0, f64::max);
+    let tol = 1e-9 * span.max(1e-300);
+    let flags: Vec<bool> = match clamp {
+        Clamp::Free => return Ok(vec![false; mesh.nodes.len()]),
+        Clamp::Root => {
+            let n = outline.len();
+            let segs: Vec<(f64, f64)> = (0..n)
+                .filter_map(|i| {
+                    let (a, b) = (outline[i], outline[(i + 1) % n]);
+                    (a[0].abs() <= tol && b[0].abs() <= tol)
+                        .then(|| (a[1].min(b[1]), a[1].max(b[1])))
+                })
+                .collect();
+            if segs.is_empty() {
+                return Err(WingbeatError::invalid(
+                    "clamp",
+                    "root",
+                    "an outline with an edge on x = 0 (the root segment); use strip:X_MM otherwise",
+                ));
+            }
+            mesh.nodes
+                .iter()
+                .map(|p| {
+                    let (x, y) = (p[0] * 1e3, p[1] * 1e3);
+                    x.abs() <= 1e-6 * span.max(1.0)
+                        && segs
+                            .iter()
+                            .any(|&(lo, hi)| y >= lo - 1e-6 && y <= hi + 1e-6)
+                })
+                .collect()
+        }
+        Clamp::Strip { x_mm } => {
+            if !x_mm.is_finite() {
+                return Err(WingbeatError::invalid(
+                    "clamp.x_mm",
+                    x_mm,
+                    "a finite strip width, mm",
+                ));
+            }
+            mesh.nodes
+                .iter()
+                .map(|p| p[0] * 1e3 <= x_mm + 1e-9 * span)
+                .collect()
+        }
+    };
+    let count = flags.iter().filter(|&&f| f).count();
+    if count == 0 {
+        return Err(WingbeatError::invalid(
+            if matches!(clamp, Clamp::Root) {
+                "clamp"
+            } else {
+                "clamp.x_mm"
+            },
+            format!("{clamp:?}"),
+            "a clamp that holds at least one mesh node",
+        ));
+    }
+    if count == flags.len() {
+        return Err(WingbeatError::invalid(
+            "clamp.x_mm",
+            format!("{clamp:?}"),
+            "a strip that leaves some of the wing free",
+        ));
+    }
+    Ok(flags)
+}
+
+/// Solves the modes of an existing mesh (m) with the nodes flagged in `clamped` held in all
+/// 6 DOFs, and post-processes them into [`FemModes`].
+pub fn solve_mesh(
+    mesh: &Mesh,
+    clamped: &[bool],
+    material: &ShellMaterial,
+    n_modes: usize,
+    planform_note: &str,
+) -> Result<FemModes> {
+    material.validate()?;
+    let asm = assembly::assemble(mesh, material, clamped)?;
+    let eig = eigen::lowest_modes(&asm.k, &asm.m, n_modes, eigen::EigenOptions::default())?;
+    Ok(postprocess(
+        mesh,
+        clamped,
+        material,
+        &asm,
+        &eig,
+        planform_note,
+    ))
+}
+
+fn postprocess(
+    mesh: &Mesh,
+    clamped: &[bool],
+    material: &ShellMaterial,
+    asm: &assembly::Assembled,
+    eig: &eigen::EigenResult,
+    note: &str,
+) -> FemModes {
+    let nn = mesh.nodes.len();
+    let mass: f64 = asm.node_mass.iter().sum();
+    let mut com = [0.0; 3];
+    for (p, m) in mesh.nodes.iter().zip(&asm.node_mass) {
+        for k in 0..3 {
+            com[k] += p[k] * m / mass;
+        }
+    }
+    // mass orthonormality check
+    let mut ortho: f64 = 0.0;
+    for i in 0..eig.vectors.len() {
+        for j in 0..=i {
+            let s: f64 = (0..asm.m.len())
+                .map(|q| eig.vectors[i][q] * asm.m[q] * eig.vectors[j][q])
+                .sum();
+            ortho = ortho.max((s - if i == j { 1.0 } else { 0.0 }).abs());
+        }
+    }
+    let dof = |v: &[f64], node: usize, d: usize| -> f64 {
+        let e = asm.eq[node][d];
+        if e == assembly::CLAMPED {
+            0.0
+        } else {
+            v[e]
+        }
+    };
+    let mut freq_hz = Vec::new();
+    let mut a_vecs = Vec::new();
+    let mut b_vecs = Vec::new();
+    let mut shapes = Vec::new();
+    let mut strain_nodes = Vec::new();
+    let mut kinds = Vec::new();
+    let lam_max = eig.values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    for (lam, v) in eig.values.iter().zip(&eig.vectors) {
+        let mut w: Vec<f64> = (0..nn).map(|n| dof(v, n, 2)).collect();
+        // sign: the largest out-of-plane displacement is positive
+        let big = w
+            .iter()
+            .copied()
+            .fold(0.0f64, |m, x| if x.abs() > m.abs() { x } else { m });
+        let sgn = if big < 0.0 { -1.0 } else { 1.0 };
+        w.iter_mut().for_each(|x| *x *= sgn);
+        let mut a = [0.0; 2];
+        for n in 0..nn {
+            a[0] += asm.node_mass[n] * w[n] * mesh.nodes[n][0];
+            a[1] += asm.node_mass[n] * w[n] * mesh.nodes[n][1];
+        }
+        // nodal strains: area-weighted average of the element corner values
+        let mut acc = vec![[0.0; 3]; nn];
+        let mut wsum = vec![0.0; nn];
+        for t in &mesh.triangles {
+            let p = [mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]];
+            let mut u = Vec18::zeros();
+            for c in 0..3 {
+                for d in 0..6 {
+                    u[6 * c + d] = sgn * dof(v, t[c], d);
+                }
+            }
+            let area = element::Frame::new(&p).map(|f| f.area).unwrap_or(0.0);
+            for c in 0..3 {
+                if let Some(e) = corner_surface_strain(&p, material, &u, c) {
+                    for k in 0..3 {
+                        acc[t[c]][k] += area * e[k];
+                    }
+                    wsum[t[c]] += area;
+                }
+            }
+        }
+        for (s, wgt) in acc.iter_mut().zip(&wsum) {
+            if *wgt > 0.0 {
+                s.iter_mut().for_each(|x| *x /= wgt);
+            }
+        }
+        let f = lam.max(0.0).sqrt() / (2.0 * std::f64::consts::PI);
+        let rigid = *lam < 1e-6 * lam_max.max(1e-300) || *lam <= 0.0;
+        kinds.push(if rigid {
+            "rigid body".to_string()
+        } else {
+            classify(mesh, &asm.node_mass, &w).to_string()
+        });
+        freq_hz.push(f);
+        a_vecs.push(a);
+        b_vecs.push([-a[1], a[0]]);
+        shapes.push(w);
+        strain_nodes.push(acc);
+    }
+    FemModes {
+        planform_note: note.to_string(),
+        freq_hz,
+        a: a_vecs,
+        b: b_vecs,
+        mass_kg: mass,
+        centre_of_mass_m: com,
+        nodes: mesh.nodes.clone(),
+        triangles: mesh.triangles.clone(),
+        clamped_nodes: (0..nn).filter(|&i| clamped[i]).collect(),
+        shapes,
+        strain_nodes,
+        residuals: eig.residuals.clone(),
+        kinds,
+        mass_orthonormality_error: ortho,
+        n_dofs: asm.m.len(),
+        material: *material,
+    }
+}
+
+/// Mass-weighted R² of a least-squares fit of `w` on the columns of `basis`.
+fn r_squared(w: &[f64], m: &[f64], basis: &[Vec<f64>]) -> f64 {
+    let k = basis.len();
+    let mut g = nalgebra::DMatrix::<f64>::zeros(k, k);
+    let mut r = nalgebra::DVector::<f64>::zeros(k);
+    for i in 0..k {
+        for j in 0..k {
+            g[(i, j)] = (0..w.len()).map(|n| m[n] * basis[i][n] * basis[j][n]).sum();
+        }
+        r[i] = (0..w.len()).map(|n| m[n] * basis[i][n] * w[n]).sum();
+    }
+    let total: f64 = (0..w.len()).map(|n| m[n] * w[n] * w[n]).sum();
+    if total <= 0.0 {
+        return 0.0;
+    }
+    match g.clone().cholesky() {
+        Some(ch) => {
+            let c = ch.solve(&r);
+            (c.dot(&r) / total).clamp(0.0, 1.0)
+        }
+        None => 0.0,
+    }
+}
+
+/// Classifies an out-of-plane mode shape: "spanwise bending" if w is explained by a cubic in
+/// the spanwise coordinate x alone (mass-weighted R² ≥ 0.8), "torsion" if it is explained by
+/// a chordwise-linear twist (y − local mid-chord) × (1, x, x²) (R² ≥ 0.6), else "other".
+pub fn classify(mesh: &Mesh, node_mass: &[f64], w: &[f64]) -> &'static str {
+    let xs: Vec<f64> = mesh.nodes.iter().map(|p| p[0]).collect();
+    let xmax = xs.iter().copied().fold(f64::MIN, f64::max).max(1e-300);
+    // local mid-chord from the node cloud, in 20 spanwise bins
+    let nb = 20;
+    let mut lo = vec![f64::INFINITY; nb];
+    let mut hi = vec![f64::NEG_INFINITY; nb];
+    let bin = |x: f64| (((x / xmax) * nb as f64) as usize).min(nb - 1);
+    for p in &mesh.nodes {
+        let b = bin(p[0].max(0.0));
+        lo[b] = lo[b].min(p[1]);
+        hi[b] = hi[b].max(p[1]);
+    }
+    let s: Vec<f64> = mesh
+        .nodes
+        .iter()
+        .map(|p| {
+            let b = bin(p[0].max(0.0));
+            (p[1] - 0.5 * (lo[b] + hi[b])) / xmax
+        })
+        .collect();
+    let xn: Vec<f64> = xs.iter().map(|x| x / xmax).collect();
+    let one = vec![1.0; xs.len()];
+    let bend = vec![
+        one.clone(),
+        xn.clone(),
+        xn.iter().map(|x| x * x).collect(),
+        xn.iter().map(|x| x * x * x).collect(),
+    ];
+    let tors = vec![
+        s.clone(),
+        s.iter().zip(&xn).map(|(a, x)| a * x).collect(),
+        s.iter().zip(&xn).map(|(a, x)| a * x * x).collect(),
+    ];
+    let rb = r_squared(w, node_mass, &bend);
+    let rt = r_squared(w, node_mass, &tors);
+    if rb >= 0.8 && rb >= rt {
+        "spanwise bending"
+    } else if rt >= 0.6 && rt > rb {
+        "torsion"
+    } else {
+        "other"
+    }
+}
+
+impl FemModes {
+    /// Locates (x, y) in mm: (triangle, barycentric weights, inside?). Outside points map to
+    /// the nearest triangle with clamped weights.
+    fn locate(&self, x_mm: f64, y_mm: f64) -> Option<(usize, [f64; 3], bool)> {
+        let (x, y) = (x_mm * 1e-3, y_mm * 1e-3);
+        let mut best: Option<(usize, [f64; 3], f64)> = None;
+        for (ti, t) in self.triangles.iter().enumerate() {
+            let (a, b, c) = (self.nodes[t[0]], self.nodes[t[1]], self.nodes[t[2]]);
+            let det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+            if det == 0.0 {
+                continue;
+            }
+            let l1 = ((b[0] - x) * (c[1] - y) - (c[0] - x) * (b[1] - y)) / det;
+            let l2 = ((c[0] - x) * (a[1] - y) - (a[0] - x) * (c[1] - y)) / det;
+            let l3 = 1.0 - l1 - l2;
+            let out = (-l1).max(-l2).max(-l3).max(0.0);
+            if best.is_none_or(|bst| out < bst.2) {
+                best = Some((ti, [l1, l2, l3], out));
+            }
+            if out == 0.0 {
+                break;
+            }
+        }
+        best.map(|(ti, l, out)| {
+            let mut lc = l.map(|v| v.max(0.0));
+            let s: f64 = lc.iter().sum();
+            lc.iter_mut().for_each(|v| *v /= s);
+            (ti, lc, out <= 1e-9)
+        })
+    }
+
+    /// Top-surface modal strain [ε_x, ε_y, γ_xy] of mode `mode` (0-based) at (x, y) in mm,
+    /// linearly interpolated from the nodal averages (paper Eqs. 16–18). Errors if the mode
+    /// index is out of range or the point is outside the meshed planform.
+    pub fn strain_at(&self, mode: usize, x_mm: f64, y_mm: f64) -> Result<[f64; 3]> {
+        if mode >= self.strain_nodes.len() {
+            return Err(WingbeatError::invalid(
+                "mode",
+                mode,
+                format!("0 ..= {}", self.strain_nodes.len().saturating_sub(1)),
+            ));
+        }
+        if !(x_mm.is_finite() && y_mm.is_finite()) {
+            return Err(WingbeatError::invalid(
+                "point",
+                format!("({x_mm}, {y_mm})"),
+                "finite coordinates, mm",
+            ));
+        }
+        match self.locate(x_mm, y_mm) {
+            Some((ti, l, true)) => Ok(self.interp(mode, ti, l)),
+            _ => Err(WingbeatError::invalid(
+                "point",
+                format!("({x_mm}, {y_mm}) mm"),
+                "a point inside the meshed planform",
+            )),
+        }
+    }
+
+    fn interp(&self, mode: usize, ti: usize, l: [f64; 3]) -> [f64; 3] {
+        let t = self.triangles[ti];
+        let mut e = [0.0; 3];
+        for c in 0..3 {
+            for (k, ek) in e.iter_mut().enumerate() {
+                *ek += l[c] * self.strain_nodes[mode][t[c]][k];
+            }
+        }
+        e
+    }
+
+    /// Converts to the modal model's [`Mode`]s (Eq. 13 inputs) with damping ratio `zeta` and
+    /// modal strains at the named points `(name, x_mm, y_mm)`. Points outside the mesh take
+    /// the value at the nearest point of the mesh (use [`FemModes::strain_at`] to be strict).
+    pub fn to_modes(&self, zeta: f64, points: &[(String, f64, f64)]) -> Vec<Mode> {
+        (0..self.freq_hz.len())
+            .map(|k| Mode {
+                name: format!("{}: {}", k + 1, self.kinds[k]),
+                freq_hz: self.freq_hz[k],
+                a: self.a[k],
+                zeta,
+                strains: points
+                    .iter()
+                    .map(|(name, x, y)| {
+                        let e = self
+                            .locate(*x, *y)
+                            .map(|(ti, l, _)| self.interp(k, ti, l))
+                            .unwrap_or([f64::NAN; 3]);
+                        ModalStrain {
+                            point: name.clone(),
+                            eps_x: e[0],
+                            eps_y: e[1],
+                            gamma_xy: e[2],
+                        }
+                    })
+                    .collect(),
+            })
+            .collect()
+    }
+}

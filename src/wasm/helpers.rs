@@ -1,0 +1,207 @@
+//! Plain-Rust helpers of the wasm API: no JS types here, so they build and are tested natively
+//! (`cargo test --features web`).
+
+use crate::config::SimConfig;
+use crate::error::{Result, WingbeatError};
+
+/// Most output values per run (samples × modes) the web API accepts. Tighter than the core's
+/// [`crate::config::MAX_SAMPLE_VALUES`] because a wasm32 instance has at most 4 GiB of memory
+/// and running out of it aborts the instance instead of returning an error: with about twelve
+/// f64 series per mode alive at once (responses, forces, spectra, typed-array copies) this
+/// cap keeps a run near 200 MB.
+pub const WEB_MAX_SAMPLE_VALUES: usize = 2_000_000;
+
+/// Checks the web API's own resource caps (after the core's `validate`, which checks the rest).
+pub fn check_web_caps(cfg: &SimConfig) -> Result<()> {
+    let n = cfg.duration_s * cfg.sample_rate_hz + 1.0;
+    let values = n * cfg.modes.len() as f64;
+    if !values.is_finite() || values > WEB_MAX_SAMPLE_VALUES as f64 {
+        return Err(WingbeatError::ResourceCap {
+            field: "duration_s × sample_rate_hz × modes".into(),
+            requested: format!("{values:.0} values"),
+            cap: format!("{WEB_MAX_SAMPLE_VALUES} values in the browser lab"),
+            why: "wasm32 memory: running out aborts the page's wasm instance".into(),
+        });
+    }
+    Ok(())
+}
+
+/// The parametric-stiffness term of Eq. 13 as a force: (α̇² cos²β + β̇²) · q_k(t).
+/// `softening` and `q` must have equal lengths (the shorter one wins otherwise).
+pub fn stiffness_term(softening: &[f64], q: &[f64]) -> Vec<f64> {
+    softening.iter().zip(q).map(|(s, q)| s * q).collect()
+}
+
+/// Checks that a series given by a caller is non-empty and finite; `field` names it in errors.
+pub fn check_series(field: &str, x: &[f64]) -> Result<()> {
+    if x.is_empty() {
+        return Err(WingbeatError::invalid(
+            field,
+            "0 samples",
+            "at least 1 sample",
+        ));
+    }
+    if x.len() > crate::config::MAX_SAMPLES {
+        return Err(WingbeatError::invalid(
+            field,
+            format!("{} samples", x.len()),
+            format!("at most {} samples", crate::config::MAX_SAMPLES),
+        ));
+    }
+    if let Some(i) = x.iter().position(|v| !v.is_finite()) {
+        return Err(WingbeatError::invalid(
+            format!("{field}[{i}]"),
+            x[i],
+            "finite numbers",
+        ));
+    }
+    Ok(())
+}
+
+/// Min/max decimation for plotting: splits `x` into `buckets` equal index ranges and keeps, in
+/// time order, the minimum and the maximum of each (so peaks survive). Returns the kept
+/// indices and values; a series no longer than `2 × buckets` is returned whole.
+pub fn decimate_minmax(x: &[f64], buckets: usize) -> (Vec<usize>, Vec<f64>) {
+    let n = x.len();
+    if buckets == 0 || n <= 2 * buckets {
+        return ((0..n).collect(), x.to_vec());
+    }
+    let mut idx = Vec::with_capacity(2 * buckets);
+    for b in 0..buckets {
+        let lo = b * n / buckets;
+        let hi = ((b + 1) * n / buckets).max(lo + 1);
+        let (mut imin, mut imax) = (lo, lo);
+        for i in lo..hi {
+            if x[i] < x[imin] {
+                imin = i;
+            }
+            if x[i] > x[imax] {
+                imax = i;
+            }
+        }
+        if imin == imax {
+            idx.push(imin);
+        } else {
+            idx.push(imin.min(imax));
+            idx.push(imin.max(imax));
+        }
+    }
+    let vals = idx.iter().map(|&i| x[i]).collect();
+    (idx, vals)
+}
+
+/// Largest m ≤ n of the form 2^a·3^b·5^c (0 for n = 0): an FFT length without large prime
+/// factors.
+pub fn smooth_len(n: usize) -> usize {
+    let mut m = n;
+    while m > 1 {
+        let mut r = m;
+        for p in [2, 3, 5] {
+            while r % p == 0 {
+                r /= p;
+            }
+        }
+        if r == 1 {
+            return m;
+        }
+        m -= 1;
+    }
+    m
+}
+
+/// The core's envelope ([`crate::analysis::beat::envelope`]) over the first [`smooth_len`]
+/// samples, the rest holding its last value. For the live lab view, where the exact length
+/// (e.g. 20001 = 3·59·113) would make the FFT several times slower.
+pub fn fast_envelope(x: &[f64]) -> Vec<f64> {
+    let m = smooth_len(x.len());
+    let mut e = crate::analysis::beat::envelope(&x[..m]);
+    let last = e.last().copied().unwrap_or(0.0);
+    e.resize(x.len(), last);
+    e
+}
+
+/// `None` as NaN, for typed-array columns.
+pub fn opt_or_nan(v: Option<f64>) -> f64 {
+    v.unwrap_or(f64::NAN)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paper_case_is_within_web_caps() {
+        check_web_caps(&SimConfig::paper()).unwrap();
+    }
+
+    #[test]
+    fn web_cap_names_the_fields() {
+        let cfg = SimConfig {
+            duration_s: 1000.0,
+            ..SimConfig::paper()
+        };
+        let e = check_web_caps(&cfg).unwrap_err().to_string();
+        assert!(e.contains("duration_s × sample_rate_hz × modes"), "{e}");
+        assert!(e.contains("2000000"), "{e}");
+    }
+
+    #[test]
+    fn stiffness_term_multiplies_pointwise() {
+        assert_eq!(
+            stiffness_term(&[1.0, 2.0, 3.0], &[4.0, 5.0, 6.0]),
+            [4.0, 10.0, 18.0]
+        );
+    }
+
+    #[test]
+    fn series_checks_name_the_bad_sample() {
+        assert!(check_series("x", &[1.0, 2.0]).is_ok());
+        let e = check_series("x", &[1.0, f64::NAN]).unwrap_err().to_string();
+        assert!(e.contains("`x[1]`"), "{e}");
+        assert!(check_series("x", &[]).is_err());
+    }
+
+    #[test]
+    fn decimation_keeps_extremes_in_order() {
+        let x: Vec<f64> = (0..1000).map(|i| ((i as f64) * 0.37).sin()).collect();
+        let (idx, v) = decimate_minmax(&x, 10);
+        assert!(idx.len() <= 20 && idx.len() >= 10);
+        assert!(idx.windows(2).all(|w| w[0] < w[1]));
+        let mx = x.iter().cloned().fold(f64::MIN, f64::max);
+        let mn = x.iter().cloned().fold(f64::MAX, f64::min);
+        assert!(v.contains(&mx) && v.contains(&mn));
+        let (idx, v) = decimate_minmax(&x[..15], 10);
+        assert_eq!(idx.len(), 15);
+        assert_eq!(v, x[..15]);
+    }
+
+    #[test]
+    fn smooth_lengths() {
+        assert_eq!(smooth_len(20001), 20000);
+        assert_eq!(smooth_len(16384), 16384);
+        assert_eq!(smooth_len(7), 6);
+        assert_eq!(smooth_len(1), 1);
+        assert_eq!(smooth_len(0), 0);
+        // 5-smooth numbers are dense: never more than 10 % short for n ≥ 100.
+        for n in 100..5000 {
+            assert!(n - smooth_len(n) <= n / 10, "{n}");
+        }
+    }
+
+    #[test]
+    fn fast_envelope_matches_the_core_on_its_prefix() {
+        let x: Vec<f64> = (0..1001).map(|i| (i as f64 * 0.3).sin()).collect();
+        let e = fast_envelope(&x);
+        let core = crate::analysis::beat::envelope(&x[..1000]);
+        assert_eq!(e.len(), 1001);
+        assert_eq!(&e[..1000], &core[..]);
+        assert_eq!(e[1000], core[999]);
+        assert!(fast_envelope(&[]).is_empty());
+    }
+
+    #[test]
+    fn none_becomes_nan() {
+        assert!(opt_or_nan(None).is_nan());
+        assert_eq!(opt_or_nan(Some(2.0)), 2.0);
+    }
+}

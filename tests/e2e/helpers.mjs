@@ -1,0 +1,79 @@
+// Shared set-up for the browser end-to-end tests and the perf script: a static server on
+// 127.0.0.1 and Debian's headless Chromium driven by playwright-core (never a downloaded browser).
+import { chromium } from 'playwright-core';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { startServer } from '../../scripts/serve.mjs';
+
+export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+export const OUT = path.join(ROOT, 'test-output');
+export const CHROMIUM = process.env.CHROMIUM_PATH || '/usr/bin/chromium';
+export const ARGS = [
+  '--no-sandbox',
+  '--no-first-run',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--disable-quic',
+];
+
+export async function setup(root = process.env.LAB_ROOT || 'www') {
+  const dir = path.join(ROOT, root);
+  if (!fs.existsSync(path.join(dir, 'pkg', 'wingbeat.js'))) {
+    throw new Error(`${root}/pkg is missing: run scripts/build-web.sh ${root} first (npm test does)`);
+  }
+  fs.mkdirSync(OUT, { recursive: true });
+  const { server, url } = await startServer(dir, 0);
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS, headless: true });
+  return { server, url, browser, close: async () => { await browser.close(); server.close(); } };
+}
+
+/** A page that records console errors, page errors, failed and off-host requests and dialogs. */
+export async function openPage(browser, url, viewport = { width: 1280, height: 720 }) {
+  const context = await browser.newContext({ viewport, acceptDownloads: true });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  page.on('dialog', (d) => { problems.push(`dialog: ${d.message()}`); d.dismiss(); });
+  page.on('requestfailed', (r) => problems.push(`requestfailed: ${r.url()}`));
+  page.on('request', (r) => { if (!r.url().startsWith('http://127.0.0.1') && !r.url().startsWith('blob:') && !r.url().startsWith('data:')) problems.push(`external request: ${r.url()}`); });
+  return { context, page, problems };
+}
+
+/** Waits until the lab `sel` has rendered at least `n` times. */
+export async function waitRenders(page, n = 1, sel = 'wing-lab') {
+  await page.waitForFunction(([s, k]) => Number(document.querySelector(s)?.dataset.renders || 0) >= k, [sel, n], { timeout: 20000 });
+}
+
+export async function renders(page, sel = 'wing-lab') {
+  return page.evaluate((s) => Number(document.querySelector(s).dataset.renders || 0), sel);
+}
+
+/**
+ * Counts distinct colours and non-white pixels of a PNG screenshot by decoding it in the page
+ * (no image library needed on the node side).
+ */
+export async function pngStats(page, buf) {
+  const b64 = buf.toString('base64');
+  return page.evaluate(async (data) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${data}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width;
+    c.height = img.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    const colours = new Set();
+    let nonWhite = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const r = d[i], g = d[i + 1], b = d[i + 2];
+      if (r < 245 || g < 245 || b < 245) nonWhite++;
+      if (colours.size < 5000) colours.add((r << 16) | (g << 8) | b);
+    }
+    return { width: c.width, height: c.height, nonWhite, fraction: nonWhite / (c.width * c.height), colours: colours.size };
+  }, b64);
+}

@@ -1,0 +1,68 @@
+// Unit tests of the lab's URL/attribute state parsing (www/state.js). Run: node --test tests/js
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { parseQuery, parsePairs, toQuery, defaults, snap, NUMERIC, toConfig } from '../../www/state.js';
+
+test('empty query gives the paper defaults', () => {
+  const { state, rejected } = parseQuery('');
+  assert.deepEqual(rejected, []);
+  assert.equal(state.gamma0, 0.2);
+  assert.equal(state.flap_hz, 25);
+  assert.equal(state.modes, 'paper');
+});
+
+test('round trip of every parameter', () => {
+  const s = defaults();
+  s.gamma0 = 0.125; s.alpha_phase = -1.5; s.detrend = 'mean'; s.mode = '2'; s.duration = 1.5;
+  const { state, rejected } = parseQuery('?' + toQuery(s));
+  assert.deepEqual(rejected, []);
+  assert.deepEqual(state, s);
+});
+
+test('hostile and malformed values are rejected by name, never echoed', () => {
+  const { state, rejected } = parseQuery('?gamma0=<img src=x onerror=alert(1)>&alpha0=1e999&beta0=0x10&zeta=NaN');
+  assert.equal(state.gamma0, 0.2);
+  assert.equal(state.alpha0, 0.8);
+  assert.equal(state.beta0, 0.5);
+  assert.equal(state.zeta, 0);
+  assert.deepEqual(rejected.map((r) => r.key).sort(), ['alpha0', 'beta0', 'gamma0', 'zeta']);
+  for (const r of rejected) assert.ok(!r.why.includes('<') && !r.why.includes('onerror'));
+});
+
+test('out-of-range, disabled and unknown parameters are rejected', () => {
+  const { state, rejected } = parseQuery('?flap_hz=1000&modes=fe&bogus=1&duration=-1&gamma0=0.1&gamma0=0.2');
+  assert.equal(state.flap_hz, 25);
+  assert.equal(state.modes, 'paper');
+  assert.equal(state.gamma0, 0.1);
+  const keys = rejected.map((r) => r.key);
+  for (const k of ['flap_hz', 'modes', 'bogus', 'duration', 'gamma0']) assert.ok(keys.includes(k), k);
+});
+
+test('long hostile keys are truncated', () => {
+  const { rejected } = parsePairs([['x'.repeat(500), '1']]);
+  assert.equal(rejected[0].key.length, 41);
+});
+
+test('panels list is validated', () => {
+  assert.deepEqual(parseQuery('?panels=spectrum,time').state.panels, ['time', 'spectrum']);
+  assert.equal(parseQuery('?panels=spectrum,evil').rejected[0].key, 'panels');
+});
+
+test('snap keeps values on the slider grid', () => {
+  const g = NUMERIC.find((p) => p.key === 'gamma0');
+  assert.equal(snap(g, 0.2 + 0.005 + 1e-15), 0.205);
+  assert.equal(snap(g, -1), 0);
+  assert.equal(snap(g, 9), 0.5);
+});
+
+test('toConfig builds the SimConfig shape', () => {
+  const base = { modes: [{ name: 'm1', freq_hz: 62.5, a: [1, 0], zeta: 0, strains: [] }] };
+  const s = defaults();
+  s.zeta = 0.01; s.gamma_phase = 0.5;
+  const c = toConfig(s, base);
+  assert.equal(c.kinematics.gamma.harmonics[0].amplitude, 0.2);
+  assert.equal(c.kinematics.gamma.harmonics[0].phase, 0.5);
+  assert.equal(c.modes[0].zeta, 0.01);
+  assert.equal(base.modes[0].zeta, 0);
+  assert.equal(c.sample_rate_hz, 10000);
+});

@@ -1,0 +1,504 @@
+//! Checks shared by the wasm-bindgen-test suites: `wasm_api.rs` runs them in node,
+//! `wasm_browser.rs` in headless Chromium. Each check calls the wasm API (`wingbeat::wasm`)
+//! and the core directly — the core is compiled into the same wasm module — and compares.
+#![allow(dead_code)]
+
+use js_sys::{Float64Array, Reflect};
+use std::cell::RefCell;
+use std::rc::Rc;
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+use wingbeat::analysis::beat::envelope;
+use wingbeat::analysis::ic_map::{ic_map, IcMapOptions};
+use wingbeat::analysis::psd::{welch, WelchOptions};
+use wingbeat::analysis::sweep::{sweep, SweepOptions, SweepParam};
+use wingbeat::config::SimConfig;
+use wingbeat::simulate::{force_series, simulate};
+use wingbeat::wasm;
+
+/// Native reference numbers of the paper case (provenance: tests/lab_constants.rs, which
+/// asserts the same values natively on x86_64 and prints them).
+pub const PAPER_REFERENCE: [(&str, f64); 8] = [
+    ("mode1.effective_freq_hz", 6.030639396854428e1),
+    ("mode2.effective_freq_hz", 8.534646215176787e1),
+    ("mode1.beat_period_vs_2fd_s", 9.70271467452204e-2),
+    ("mode1.contribution.euler", 1.7770071621035974e1),
+    ("mode1.contribution.centrifugal", 3.1608272606377934e0),
+    ("mode1.contribution.coriolis", 5.379178730437413e1),
+    ("mode2.contribution.coriolis", 2.463981694964878e1),
+    ("mode1.q_total[12345]", -6.941943076968708e-7),
+];
+
+pub const TOL: f64 = 1e-12;
+
+pub fn get(o: &JsValue, path: &str) -> JsValue {
+    let mut v = o.clone();
+    for key in path.split('.') {
+        v = match key.parse::<u32>() {
+            Ok(i) => Reflect::get_u32(&v, i),
+            Err(_) => Reflect::get(&v, &JsValue::from_str(key)),
+        }
+        .unwrap_or_else(|_| panic!("no `{key}` in `{path}`"));
+    }
+    v
+}
+
+pub fn num(o: &JsValue, path: &str) -> f64 {
+    get(o, path)
+        .as_f64()
+        .unwrap_or_else(|| panic!("`{path}` is not a number"))
+}
+
+/// A Float64Array field as a Vec (panics if the field is not a Float64Array).
+pub fn f64s(o: &JsValue, path: &str) -> Vec<f64> {
+    get(o, path)
+        .dyn_into::<Float64Array>()
+        .unwrap_or_else(|_| panic!("`{path}` is not a Float64Array"))
+        .to_vec()
+}
+
+pub fn close(name: &str, got: f64, want: f64, tol: f64) {
+    let scale = got.abs().max(want.abs()).max(1e-300);
+    assert!(
+        (got - want).abs() <= tol * scale || (got.is_nan() && want.is_nan()),
+        "{name}: wasm API {got:e} vs {want:e}"
+    );
+}
+
+pub fn close_all(name: &str, got: &[f64], want: &[f64], tol: f64) {
+    assert_eq!(got.len(), want.len(), "{name}: length");
+    let scale = want.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
+    for (i, (g, w)) in got.iter().zip(want).enumerate() {
+        assert!(
+            (g - w).abs() <= tol * scale,
+            "{name}[{i}]: wasm API {g:e} vs core {w:e}"
+        );
+    }
+}
+
+pub fn to_js<T: serde::Serialize>(v: &T) -> JsValue {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .unwrap()
+}
+
+/// The error message of a failed wasm API call.
+pub fn message<T: std::fmt::Debug>(r: Result<T, JsError>) -> String {
+    let e = r.expect_err("expected an error");
+    let v: JsValue = e.into();
+    v.dyn_into::<js_sys::Error>()
+        .map(|e| String::from(e.message()))
+        .unwrap_or_default()
+}
+
+fn short_paper() -> SimConfig {
+    SimConfig {
+        duration_s: 0.4,
+        ..SimConfig::paper()
+    }
+}
+
+pub fn simulate_matches_core() {
+    let cfg = SimConfig::paper();
+    let js = wasm::simulate(to_js(&cfg)).unwrap();
+    let core = simulate(&cfg).unwrap();
+    close_all("t", &f64s(&js, "t"), &core.t, TOL);
+    assert_eq!(num(&js, "n") as usize, core.t.len());
+    for (k, m) in core.modes.iter().enumerate() {
+        let p = |s: &str| format!("modes.{k}.{s}");
+        for (name, want) in [
+            ("q.euler", &m.q.euler),
+            ("q.centrifugal", &m.q.centrifugal),
+            ("q.coriolis", &m.q.coriolis),
+            ("q.free", &m.q.free),
+            ("q.total", &m.q.total),
+            ("qdot_total", &m.qdot_total),
+        ] {
+            close_all(&p(name), &f64s(&js, &p(name)), want, TOL);
+        }
+        let c = &m.contribution_percent;
+        close(
+            "euler",
+            num(&js, &p("contribution_percent.euler")),
+            c.euler,
+            TOL,
+        );
+        close(
+            "coriolis",
+            num(&js, &p("contribution_percent.coriolis")),
+            c.coriolis,
+            TOL,
+        );
+        let f = &m.floquet;
+        close(
+            "f_eff",
+            num(&js, &p("floquet.effective_freq_hz")),
+            f.effective_freq_hz,
+            TOL,
+        );
+        close(
+            "max_modulus",
+            num(&js, &p("floquet.max_modulus")),
+            f.max_modulus,
+            TOL,
+        );
+        close(
+            "multiplier im",
+            num(&js, &p("floquet.multipliers.0.1")),
+            f.multipliers[0][1],
+            TOL,
+        );
+        assert_eq!(
+            get(&js, &p("floquet.stable")).as_bool(),
+            Some(f.stable),
+            "stable"
+        );
+        assert_eq!(
+            get(&js, &p("name")).as_string().as_deref(),
+            Some(m.name.as_str())
+        );
+    }
+    let s = core.strain.as_ref().unwrap();
+    close_all("strain.eps_y", &f64s(&js, "strain.eps_y"), &s.eps_y, TOL);
+    close_all(
+        "strain.gamma_xy",
+        &f64s(&js, "strain.gamma_xy"),
+        &s.gamma_xy,
+        TOL,
+    );
+}
+
+pub fn paper_reference_numbers() {
+    let js = wasm::simulate(to_js(&SimConfig::paper())).unwrap();
+    for (name, want) in PAPER_REFERENCE {
+        let got = match name {
+            "mode1.effective_freq_hz" => num(&js, "modes.0.floquet.effective_freq_hz"),
+            "mode2.effective_freq_hz" => num(&js, "modes.1.floquet.effective_freq_hz"),
+            "mode1.beat_period_vs_2fd_s" => num(&js, "modes.0.floquet.beat_period_vs_2fd_s"),
+            "mode1.contribution.euler" => num(&js, "modes.0.contribution_percent.euler"),
+            "mode1.contribution.centrifugal" => {
+                num(&js, "modes.0.contribution_percent.centrifugal")
+            }
+            "mode1.contribution.coriolis" => num(&js, "modes.0.contribution_percent.coriolis"),
+            "mode2.contribution.coriolis" => num(&js, "modes.1.contribution_percent.coriolis"),
+            "mode1.q_total[12345]" => f64s(&js, "modes.0.q.total")[12345],
+            other => panic!("unknown reference {other}"),
+        };
+        close(name, got, want, TOL);
+    }
+    // The headline number, to the digits quoted in docs/lab.md.
+    let f = num(&js, "modes.0.floquet.effective_freq_hz");
+    assert!((f - 60.3064).abs() < 5e-5, "{f}");
+}
+
+pub fn analyze_matches_core() {
+    let cfg = short_paper();
+    let opts = WelchOptions {
+        segment_len: 1024,
+        ..WelchOptions::default()
+    };
+    let js = wasm::analyze(to_js(&cfg), to_js(&opts), Some(1)).unwrap();
+    assert!(get(&js, "spectra.0").is_null(), "mode 1 not asked for");
+    assert!(get(&js, "forces.0").is_null());
+    assert!(get(&js, "envelope.0").is_null());
+    let sim = simulate(&cfg).unwrap();
+    let fs = force_series(&cfg).unwrap();
+    let k = 1;
+    let f = &fs[k];
+    let q = &sim.modes[k].q.total;
+    let stiff: Vec<f64> = f.softening.iter().zip(q).map(|(s, q)| s * q).collect();
+    let fsr = cfg.sample_rate_hz;
+    for (name, x) in [
+        ("euler", &f.euler),
+        ("centrifugal", &f.centrifugal),
+        ("coriolis", &f.coriolis),
+        ("stiffness", &stiff),
+        ("total", q),
+    ] {
+        let want = welch(x, fsr, &opts, Some(cfg.kinematics.flap_freq_hz)).unwrap();
+        let p = format!("spectra.1.{name}");
+        close_all(
+            &format!("{p}.freq_hz"),
+            &f64s(&js, &format!("{p}.freq_hz")),
+            &want.freq_hz,
+            TOL,
+        );
+        close_all(
+            &format!("{p}.psd"),
+            &f64s(&js, &format!("{p}.psd")),
+            &want.psd,
+            TOL,
+        );
+        close(
+            "first peak",
+            num(&js, &format!("{p}.peaks.0.freq_hz")),
+            want.peaks[0].freq_hz,
+            TOL,
+        );
+        if name != "stiffness" && name != "total" {
+            close_all(
+                &format!("forces.1.{name}"),
+                &f64s(&js, &format!("forces.1.{name}")),
+                x,
+                TOL,
+            );
+        }
+    }
+    close_all(
+        "forces.1.stiffness",
+        &f64s(&js, "forces.1.stiffness"),
+        &stiff,
+        TOL,
+    );
+    // Envelope over the 5-smooth prefix (4000 of 4001 samples), last value held.
+    let cor = &sim.modes[k].q.coriolis;
+    let mut env = envelope(&cor[..4000]);
+    env.push(env[3999]);
+    close_all("envelope.1", &f64s(&js, "envelope.1"), &env, TOL);
+    // The separate entry points agree too.
+    let js_f = wasm::force_series(to_js(&cfg)).unwrap();
+    close_all(
+        "forceSeries.0.softening",
+        &f64s(&js_f, "0.softening"),
+        &fs[0].softening,
+        TOL,
+    );
+    let js_s = wasm::spectra(to_js(&cfg), to_js(&opts), None).unwrap();
+    let want = welch(&fs[0].coriolis, fsr, &opts, Some(25.0)).unwrap();
+    close_all(
+        "spectra.0.coriolis",
+        &f64s(&js_s, "0.coriolis.psd"),
+        &want.psd,
+        TOL,
+    );
+    let full = wasm::envelope(cor).unwrap().to_vec();
+    close_all("envelope()", &full, &envelope(cor), TOL);
+}
+
+pub fn coriolis_force_peaks_at_twice_the_flap_frequency() {
+    let cfg = short_paper();
+    let opts = WelchOptions {
+        segment_len: 4000,
+        ..WelchOptions::default()
+    };
+    let js = wasm::spectra(to_js(&cfg), to_js(&opts), Some(0)).unwrap();
+    let f = f64s(&js, "0.coriolis.freq_hz");
+    let p = f64s(&js, "0.coriolis.psd");
+    // Largest non-DC bin (the Coriolis force also has a large mean: bin 0).
+    let i = (2..p.len()).max_by(|&a, &b| p[a].total_cmp(&p[b])).unwrap();
+    assert!((f[i] - 50.0).abs() < 2.6, "Coriolis peak at {} Hz", f[i]);
+    assert!(p[0] > 0.1 * p[i], "DC part visible with detrend none");
+    // γ0 = 0: no Coriolis force at all.
+    let mut c0 = cfg.clone();
+    c0 = wingbeat::analysis::sweep::apply(&c0, SweepParam::Gamma0, 0.0).unwrap();
+    let js0 = wasm::spectra(to_js(&c0), to_js(&opts), Some(0)).unwrap();
+    assert!(f64s(&js0, "0.coriolis.psd").iter().all(|v| *v == 0.0));
+}
+
+pub fn psd_matches_core() {
+    let x: Vec<f64> = (0..3000).map(|i| (i as f64 * 0.05).sin() + 0.3).collect();
+    let opts = WelchOptions {
+        segment_len: 512,
+        ..WelchOptions::default()
+    };
+    let js = wasm::psd(&x, 1000.0, to_js(&opts), Some(8.0)).unwrap();
+    let want = welch(&x, 1000.0, &opts, Some(8.0)).unwrap();
+    close_all("psd", &f64s(&js, "psd"), &want.psd, TOL);
+    close(
+        "peak multiple",
+        num(&js, "peaks.0.flap_multiple"),
+        want.peaks[0].flap_multiple.unwrap(),
+        TOL,
+    );
+}
+
+pub fn sweep_matches_core_and_reports_progress() {
+    let cfg = short_paper();
+    let opts = SweepOptions {
+        param: SweepParam::Gamma0,
+        from: 0.0,
+        to: 0.3,
+        points: 4,
+    };
+    let calls = Rc::new(RefCell::new(Vec::new()));
+    let c2 = calls.clone();
+    let cb =
+        Closure::wrap(Box::new(move |i: f64, n: f64| c2.borrow_mut().push((i, n)))
+            as Box<dyn FnMut(f64, f64)>);
+    let f: js_sys::Function = cb.as_ref().clone().unchecked_into();
+    let js = wasm::sweep(to_js(&cfg), to_js(&opts), Some(f)).unwrap();
+    assert_eq!(
+        *calls.borrow(),
+        vec![(1.0, 4.0), (2.0, 4.0), (3.0, 4.0), (4.0, 4.0)]
+    );
+    let core = sweep(&cfg, &opts, |_, _| {}).unwrap();
+    let vals: Vec<f64> = core.points.iter().map(|p| p.value).collect();
+    close_all("values", &f64s(&js, "values"), &vals, TOL);
+    for k in 0..2 {
+        let cor: Vec<f64> = core
+            .points
+            .iter()
+            .map(|p| p.modes[k].contribution_percent.coriolis)
+            .collect();
+        close_all(
+            "coriolis",
+            &f64s(&js, &format!("modes.{k}.coriolis")),
+            &cor,
+            TOL,
+        );
+        let fe: Vec<f64> = core
+            .points
+            .iter()
+            .map(|p| p.modes[k].effective_freq_hz)
+            .collect();
+        close_all(
+            "effective_freq_hz",
+            &f64s(&js, &format!("modes.{k}.effective_freq_hz")),
+            &fe,
+            TOL,
+        );
+    }
+    assert_eq!(get(&js, "param").as_string().as_deref(), Some("gamma0"));
+    // γ0 = 0: no Coriolis share.
+    assert_eq!(f64s(&js, "modes.0.coriolis")[0], 0.0);
+    // A throwing progress callback is ignored.
+    let thrower = js_sys::Function::new_with_args("i, n", "throw new Error('boom')");
+    assert!(wasm::sweep(to_js(&cfg), to_js(&opts), Some(thrower)).is_ok());
+}
+
+pub fn ic_map_matches_core() {
+    let cfg = SimConfig::paper();
+    let opts = IcMapOptions::default();
+    let js = wasm::ic_map(to_js(&cfg), to_js(&opts)).unwrap();
+    let core = ic_map(&cfg, &opts).unwrap();
+    assert_eq!(num(&js, "n_q"), 101.0);
+    assert_eq!(num(&js, "n_qdot"), 101.0);
+    close_all(
+        "coriolis_percent",
+        &f64s(&js, "coriolis_percent"),
+        &core.coriolis_percent,
+        TOL,
+    );
+    close_all("q0", &f64s(&js, "q0"), &core.q0, TOL);
+    close(
+        "fraction_above_60",
+        num(&js, "fraction_above_60"),
+        core.fraction_above_60,
+        TOL,
+    );
+}
+
+pub fn defaults_limits_reproduce() {
+    let js = wasm::default_config().unwrap();
+    let back: SimConfig = serde_wasm_bindgen::from_value(js).unwrap();
+    assert_eq!(back, SimConfig::default());
+    let l = wasm::limits().unwrap();
+    assert_eq!(num(&l, "web_max_sample_values"), 2_000_000.0);
+    assert!(wasm::validate_config(JsValue::UNDEFINED).is_ok());
+    let x = [1.0, 5.0, 2.0, 0.0, 3.0, 3.0];
+    let d = wasm::decimate_min_max(&x, 3).unwrap();
+    assert_eq!(f64s(&d, "value"), x.to_vec());
+    let d = wasm::decimate_min_max(&x, 1).unwrap();
+    assert_eq!(f64s(&d, "value"), vec![5.0, 0.0]);
+    assert_eq!(f64s(&d, "index"), vec![1.0, 3.0]);
+}
+
+pub fn reproduce_matches_core() {
+    let js = wasm::reproduce().unwrap();
+    let core = wingbeat::reproduce::reproduce().unwrap();
+    assert_eq!(num(&js, "summary.holds") as usize, core.summary.holds);
+    assert_eq!(num(&js, "summary.fails") as usize, core.summary.fails);
+    assert_eq!(wasm::reproduce_text().unwrap(), core.to_text());
+}
+
+pub fn bad_input_names_the_field() {
+    let bad = |json: &str| -> JsValue { js_sys::JSON::parse(json).unwrap() };
+    let cases: [(&str, &str); 9] = [
+        (r#"{"duration_s": -1}"#, "`duration_s`"),
+        (r#"{"duration_s": 1000}"#, "duration_s × sample_rate_hz"),
+        (r#"{"bogus": 1}"#, "bogus"),
+        (
+            r#"{"kinematics": {"flap_freq_hz": "x"}}"#,
+            "config.kinematics",
+        ),
+        (
+            r#"{"modes": [{"freq_hz": -5, "a": [1, 0]}]}"#,
+            "`modes[0].freq_hz`",
+        ),
+        (
+            r#"{"modes": [{"freq_hz": 5, "a": [1, 0, 3]}]}"#,
+            "config.modes[0].a",
+        ),
+        (
+            r#"{"kinematics": {"flap_freq_hz": 25, "alpha": {"kind": "fourier", "harmonics": [{"n": 1, "amplitude": 99}]}, "beta": {"kind": "fourier"}, "gamma": {"kind": "fourier"}}}"#,
+            "kinematics.alpha.harmonics[0].amplitude",
+        ),
+        (
+            r#"{"initial_conditions": [[0, 0], [0, 0], [0, 0]]}"#,
+            "initial_conditions",
+        ),
+        (r#"{"sample_rate_hz": null}"#, "sample_rate_hz"),
+    ];
+    for (json, field) in cases {
+        let m = message(wasm::simulate(bad(json)));
+        assert!(m.contains(field), "{json}: message `{m}` lacks {field}");
+    }
+    // NaN and Infinity from JS (JSON cannot carry them).
+    let o = js_sys::Object::new();
+    Reflect::set(&o, &"duration_s".into(), &JsValue::from_f64(f64::NAN)).unwrap();
+    let m = message(wasm::simulate(o.into()));
+    assert!(m.contains("duration_s"), "{m}");
+    let o = js_sys::Object::new();
+    Reflect::set(
+        &o,
+        &"sample_rate_hz".into(),
+        &JsValue::from_f64(f64::INFINITY),
+    )
+    .unwrap();
+    let m = message(wasm::simulate(o.into()));
+    assert!(m.contains("sample_rate_hz"), "{m}");
+    // A cyclic object cannot be serialised: an error, not a panic.
+    let o = js_sys::Object::new();
+    Reflect::set(&o, &"me".into(), &o).unwrap();
+    assert!(message(wasm::simulate(o.into())).contains("config"));
+    // Options of the other entry points.
+    let cfg = to_js(&short_paper());
+    let m = message(wasm::sweep(
+        cfg.clone(),
+        bad(r#"{"param": "gamma1", "from": 0, "to": 1, "points": 3}"#),
+        None,
+    ));
+    assert!(m.contains("sweep.param"), "{m}");
+    let m = message(wasm::sweep(
+        cfg.clone(),
+        bad(r#"{"param": "gamma0", "from": 0, "to": 1, "points": 1}"#),
+        None,
+    ));
+    assert!(m.contains("sweep.points"), "{m}");
+    let m = message(wasm::sweep(cfg.clone(), JsValue::UNDEFINED, None));
+    assert!(m.contains("sweep"), "{m}");
+    let m = message(wasm::ic_map(cfg.clone(), bad(r#"{"mode": 7}"#)));
+    assert!(m.contains("ic_map.mode"), "{m}");
+    let m = message(wasm::ic_map(cfg.clone(), bad(r#"{"n_q": 1.5}"#)));
+    assert!(m.contains("ic_map.n_q"), "{m}");
+    let m = message(wasm::analyze(cfg.clone(), JsValue::UNDEFINED, Some(9)));
+    assert!(m.contains("mode"), "{m}");
+    let m = message(wasm::analyze(
+        cfg.clone(),
+        bad(r#"{"segment_len": 3}"#),
+        None,
+    ));
+    assert!(m.contains("psd.segment_len"), "{m}");
+    let m = message(wasm::analyze(cfg, bad(r#"{"detrend": "cubic"}"#), None));
+    assert!(m.contains("psd.detrend"), "{m}");
+    let m = message(wasm::psd(
+        &[1.0, 2.0, f64::NAN, 3.0],
+        100.0,
+        JsValue::UNDEFINED,
+        None,
+    ));
+    assert!(m.contains("psd.series[2]"), "{m}");
+    let m = message(wasm::psd(&[1.0; 64], f64::NAN, JsValue::UNDEFINED, None));
+    assert!(m.contains("psd.sample_rate_hz"), "{m}");
+    let m = message(wasm::envelope(&[]));
+    assert!(m.contains("envelope.series"), "{m}");
+}

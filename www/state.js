@@ -1,0 +1,154 @@
+// Lab state <-> URL query / element attributes. Pure functions (no DOM), unit-tested in
+// tests/js/state.test.mjs. Everything read from outside is validated here: a value that is not
+// a plain decimal number inside its slider's range, or not one of an enum's choices, is dropped
+// (the default is used) and reported by name so the page can show a notice (as text only).
+
+/** Numeric parameters: URL/attribute name, label, unit, slider range and default (the paper case). */
+export const NUMERIC = [
+  { key: 'alpha0', label: 'α0, roll amplitude', sym: 'α0', unit: 'rad', min: 0, max: 1.5, step: 0.01, def: 0.8 },
+  { key: 'beta0', label: 'β0, pitch amplitude', sym: 'β0', unit: 'rad', min: 0, max: 1.0, step: 0.01, def: 0.5 },
+  { key: 'gamma0', label: 'γ0, yaw amplitude', sym: 'γ0', unit: 'rad', min: 0, max: 0.5, step: 0.005, def: 0.2 },
+  { key: 'flap_hz', label: 'Flap frequency f_d', sym: 'f_d', unit: 'Hz', min: 5, max: 60, step: 0.5, def: 25 },
+  { key: 'zeta', label: 'ζ, modal damping ratio', sym: 'ζ', unit: '', min: 0, max: 0.1, step: 0.001, def: 0 },
+  { key: 'alpha_phase', label: 'Phase of α', sym: 'φα', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
+  { key: 'beta_phase', label: 'Phase of β', sym: 'φβ', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
+  { key: 'gamma_phase', label: 'Phase of γ', sym: 'φγ', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
+  { key: 'duration', label: 'Duration', sym: 'T_sim', unit: 's', min: 0.2, max: 4, step: 0.1, def: 2 },
+];
+
+/** Enumerated parameters. `disabled` choices are shown but not selectable (and rejected from URLs). */
+export const ENUMS = [
+  { key: 'modes', label: 'Mode set', choices: ['paper', 'fe'], disabled: ['fe'], def: 'paper' },
+  { key: 'mode', label: 'Selected mode', choices: ['1', '2'], def: '1' },
+  { key: 'detrend', label: 'PSD detrend', choices: ['none', 'mean', 'linear'], def: 'none' },
+];
+
+/** Panels that can be shown; `panels=` picks a subset (comma-separated). */
+export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report'];
+
+/** Output sample rate of the live simulation, Hz (fixed). */
+export const SAMPLE_RATE_HZ = 10000;
+
+const NUMBER_RE = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
+
+export function defaults() {
+  const s = {};
+  for (const p of NUMERIC) s[p.key] = p.def;
+  for (const e of ENUMS) s[e.key] = e.def;
+  s.panels = PANELS.slice();
+  return s;
+}
+
+/** Parses one numeric value; returns a number or null when not a plain in-range decimal. */
+export function parseNumber(p, raw) {
+  if (typeof raw !== 'string' || raw.length > 32 || !NUMBER_RE.test(raw.trim())) return null;
+  const v = Number(raw.trim());
+  if (!Number.isFinite(v) || v < p.min - 1e-12 || v > p.max + 1e-12) return null;
+  return v;
+}
+
+function parseEnum(e, raw) {
+  if (typeof raw !== 'string') return null;
+  const v = raw.trim();
+  if (!e.choices.includes(v) || (e.disabled || []).includes(v)) return null;
+  return v;
+}
+
+function parsePanels(raw) {
+  if (typeof raw !== 'string' || raw.length > 200) return null;
+  const list = raw.split(',').map((s) => s.trim()).filter(Boolean);
+  if (list.length === 0 || !list.every((p) => PANELS.includes(p))) return null;
+  return PANELS.filter((p) => list.includes(p));
+}
+
+/** Why a parameter was rejected, for the notice (never echoes the value). */
+export function expectation(key) {
+  const p = NUMERIC.find((q) => q.key === key);
+  if (p) return `a number in [${p.min}, ${p.max}]${p.unit ? ' ' + p.unit : ''}`;
+  const e = ENUMS.find((q) => q.key === key);
+  if (e) return `one of ${e.choices.filter((c) => !(e.disabled || []).includes(c)).join(', ')}`;
+  if (key === 'panels') return `a comma-separated list of ${PANELS.join(', ')}`;
+  if (key === 'embed') return '0 or 1';
+  return 'a known parameter';
+}
+
+/**
+ * Reads state from name/value pairs (URLSearchParams or element attributes).
+ * Returns { state, rejected: [{ key, why }] }; `key` is truncated to 40 characters.
+ * Unknown names are rejected too, except those in `ignore`.
+ */
+export function parsePairs(pairs, ignore = []) {
+  const state = defaults();
+  const rejected = [];
+  const seen = new Set();
+  for (const [rawKey, raw] of pairs) {
+    const key = String(rawKey);
+    if (ignore.includes(key)) continue;
+    const short = key.length > 40 ? key.slice(0, 40) + '…' : key;
+    if (seen.has(key)) {
+      rejected.push({ key: short, why: 'given more than once' });
+      continue;
+    }
+    seen.add(key);
+    const p = NUMERIC.find((q) => q.key === key);
+    const e = ENUMS.find((q) => q.key === key);
+    let v = null;
+    if (p) v = parseNumber(p, raw);
+    else if (e) v = parseEnum(e, raw);
+    else if (key === 'panels') v = parsePanels(raw);
+    else if (key === 'embed') v = raw === '0' || raw === '1' ? raw === '1' : null;
+    else {
+      rejected.push({ key: short, why: 'unknown parameter' });
+      continue;
+    }
+    if (v === null) rejected.push({ key: short, why: `expected ${expectation(key)}` });
+    else state[key] = v;
+  }
+  return { state, rejected };
+}
+
+/** Parses a query string such as location.search. */
+export function parseQuery(search) {
+  let params;
+  try {
+    params = new URLSearchParams(search);
+  } catch {
+    return { state: defaults(), rejected: [{ key: '(query)', why: 'not a valid query string' }] };
+  }
+  return parsePairs(params.entries());
+}
+
+/** Serialises state to a query string (no leading '?'); all parameters, shortest exact decimals. */
+export function toQuery(state, extra = {}) {
+  const q = new URLSearchParams();
+  for (const p of NUMERIC) q.set(p.key, String(state[p.key]));
+  for (const e of ENUMS) q.set(e.key, state[e.key]);
+  if (state.panels && state.panels.length !== PANELS.length) q.set('panels', state.panels.join(','));
+  for (const [k, v] of Object.entries(extra)) q.set(k, v);
+  return q.toString();
+}
+
+/** Rounds a slider value to its step grid (avoids 0.30000000000000004 in URLs). */
+export function snap(p, v) {
+  const k = Math.round((v - p.min) / p.step);
+  const s = p.min + k * p.step;
+  const digits = Math.max(0, -Math.floor(Math.log10(p.step)) + 1);
+  return Math.min(p.max, Math.max(p.min, Number(s.toFixed(digits))));
+}
+
+/** The wasm SimConfig for a state, given the paper base config from wasm's defaultConfig(). */
+export function toConfig(state, base) {
+  const angle = (amp, phase) => ({ kind: 'fourier', mean: 0, harmonics: [{ n: 1, amplitude: amp, phase }] });
+  return {
+    kinematics: {
+      flap_freq_hz: state.flap_hz,
+      alpha: angle(state.alpha0, state.alpha_phase),
+      beta: angle(state.beta0, state.beta_phase),
+      gamma: angle(state.gamma0, state.gamma_phase),
+    },
+    modes: base.modes.map((m) => ({ ...m, zeta: state.zeta })),
+    duration_s: state.duration,
+    sample_rate_hz: SAMPLE_RATE_HZ,
+    initial_conditions: [],
+  };
+}

@@ -1,0 +1,91 @@
+// Web Worker for the lab's expensive studies, so sliders never freeze: parameter sweeps
+// (Fig. 6), the initial-condition map (Fig. 7), long damped runs (Fig. 8) and the paper report.
+// Protocol: in { id, kind, cfg, opts }; out { id, progress: [done, total] } | { id, result, ms }
+// | { id, error }. Typed arrays are transferred, not copied.
+import init, * as wb from './pkg/wingbeat.js';
+
+const ready = init({ module_or_path: new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
+
+// Min/max decimation of several series onto a shared x grid (see plot.js#decimate).
+function decimate(x, ys, buckets) {
+  const n = x.length;
+  if (n <= 2 * buckets) return [Float64Array.from(x), ...ys.map((y) => Float64Array.from(y))];
+  const xo = new Float64Array(2 * buckets);
+  const yo = ys.map(() => new Float64Array(2 * buckets));
+  for (let b = 0; b < buckets; b++) {
+    const lo = Math.floor((b * n) / buckets);
+    const hi = Math.max(lo + 1, Math.floor(((b + 1) * n) / buckets));
+    xo[2 * b] = x[lo];
+    xo[2 * b + 1] = x[Math.min(n - 1, (lo + hi) >> 1)];
+    ys.forEach((y, k) => {
+      let mn = y[lo], mx = y[lo], imn = lo, imx = lo;
+      for (let i = lo + 1; i < hi; i++) {
+        if (y[i] < mn) { mn = y[i]; imn = i; }
+        if (y[i] > mx) { mx = y[i]; imx = i; }
+      }
+      yo[k][2 * b] = imn <= imx ? mn : mx;
+      yo[k][2 * b + 1] = imn <= imx ? mx : mn;
+    });
+  }
+  return [xo, ...yo];
+}
+
+const jobs = {
+  sweep({ cfg, opts }, progress) {
+    return wb.sweep(cfg, opts, progress);
+  },
+  icmap({ cfg, opts }) {
+    return wb.icMap(cfg, opts);
+  },
+  damping({ cfg, opts }, progress) {
+    // Fig. 8: the same case undamped and with ζ = opts.zeta over a longer run.
+    const mode = opts.mode;
+    const out = { zeta: opts.zeta, duration_s: cfg.duration_s, mode };
+    const runs = [];
+    for (const [i, z] of [0, opts.zeta].entries()) {
+      const c = { ...cfg, modes: cfg.modes.map((m) => ({ ...m, zeta: z })) };
+      const r = wb.simulate(c);
+      runs.push(r);
+      progress(i + 1, 2);
+    }
+    const t = runs[0].t;
+    const [x, undamped, damped] = decimate(t, runs.map((r) => r.modes[mode].q.total), 1500);
+    Object.assign(out, {
+      t: x,
+      undamped,
+      damped,
+      floquet: runs.map((r) => r.modes[mode].floquet),
+      n: t.length,
+    });
+    return out;
+  },
+  reproduce() {
+    return wb.reproduce();
+  },
+};
+
+function transferables(v, acc = []) {
+  if (v instanceof Float64Array) acc.push(v.buffer);
+  else if (Array.isArray(v)) v.forEach((x) => transferables(x, acc));
+  else if (v && typeof v === 'object') Object.values(v).forEach((x) => transferables(x, acc));
+  return acc;
+}
+
+function transferList(v) {
+  return [...new Set(transferables(v))];
+}
+
+self.onmessage = async (ev) => {
+  const { id, kind } = ev.data || {};
+  try {
+    await ready;
+    const job = jobs[kind];
+    if (!job) throw new Error(`unknown job ${String(kind).slice(0, 40)}`);
+    const t0 = performance.now();
+    const result = job(ev.data, (done, total) => self.postMessage({ id, progress: [done, total] }));
+    const ms = performance.now() - t0;
+    self.postMessage({ id, result, ms }, transferList(result));
+  } catch (e) {
+    self.postMessage({ id, error: String(e && e.message ? e.message : e) });
+  }
+};
