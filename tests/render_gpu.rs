@@ -371,3 +371,42 @@ fn perf_1280x720_10k_triangles() {
     let readback_ms = t0.elapsed().as_secs_f64() * 1e3 / 10.0;
     println!("frame time (render + wait): {render_ms:.2} ms; with 1280×720 read-back: {readback_ms:.2} ms");
 }
+
+/// The FE module's JSON output feeds the renderer unchanged.
+#[test]
+fn fe_modes_json_renders() {
+    use wingbeat::fem::{compute_modes, FemInput};
+    let input = FemInput {
+        mesh_size_mm: 3.0,
+        n_modes: 3,
+        ..FemInput::default()
+    };
+    let fe = compute_modes(&input).unwrap();
+    let v = serde_json::to_value(&fe).unwrap();
+    let mesh = WingMesh::from_fe_json(&v).unwrap();
+    assert_eq!(mesh.n_modes(), 3);
+    assert_eq!(mesh.nodes.len(), fe.nodes.len());
+    assert!(mesh.strains[0].iter().any(|e| e[0] != 0.0));
+    let Some(mut off) = offscreen(128, 96, &mesh) else {
+        return;
+    };
+    let frame = FrameParams {
+        alpha: 0.3,
+        q: vec![1e-5, -1e-5, 0.0],
+        exaggeration: 2.0,
+        colour: ColourMode::StrainY,
+        show_axes: false,
+        show_stroke_plane: false,
+        ..FrameParams::default()
+    };
+    let (img, report) = off.render(&frame).unwrap();
+    assert!(report.warnings.is_empty(), "{:?}", report.warnings);
+    let legend = report.legend.unwrap();
+    assert!(legend.data_min < 0.0 || legend.data_max > 0.0);
+    let wing_pixels = img
+        .pixels
+        .chunks(4)
+        .filter(|p| !is_background([p[0], p[1], p[2], p[3]]))
+        .count();
+    assert!(wing_pixels > 500, "only {wing_pixels} wing pixels");
+}
