@@ -40,10 +40,18 @@ if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/uplot ] || [ ! -d 
   npm ci --no-audit --no-fund
 fi
 
-if [ "$want_browser" = 1 ] && { [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; }; then
-  echo "ensure-tools: installing chromium + chromium-driver (Debian)"
-  SUDO=""
-  if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
-  $SUDO apt-get update
-  $SUDO apt-get install -y --no-install-recommends -o DPkg::Lock::Timeout=600 chromium chromium-driver
+# Debian packages for the tests: Chromium + its driver (browser suites) and Mesa's lavapipe
+# Vulkan driver (the renderer's offscreen golden-image tests run on it; no GPU needed).
+if [ "$want_browser" = 1 ]; then
+  pkgs=()
+  { [ -x /usr/bin/chromium ] && [ -x /usr/bin/chromedriver ]; } || pkgs+=(chromium chromium-driver)
+  dpkg -s mesa-vulkan-drivers >/dev/null 2>&1 || pkgs+=(mesa-vulkan-drivers)
+  dpkg -s libvulkan1 >/dev/null 2>&1 || pkgs+=(libvulkan1)
+  if [ "${#pkgs[@]}" -gt 0 ]; then
+    echo "ensure-tools: installing ${pkgs[*]} (Debian)"
+    SUDO=""
+    if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
+    $SUDO apt-get update
+    $SUDO apt-get install -y --no-install-recommends -o DPkg::Lock::Timeout=600 "${pkgs[@]}"
+  fi
 fi

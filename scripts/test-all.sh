@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test of the project (what `npm test` calls):
 #   scripts/test-all.sh [all|native|wasm|e2e]
-#   native  cargo test --all-features (core, CLI, and the wasm API's plain-Rust helpers)
+#   native  cargo test --all-features (core, CLI, FE backends, renderer goldens on lavapipe,
+#           and the wasm API's plain-Rust helpers)
 #   wasm    wasm-bindgen-test suites: tests/wasm_api.rs in node, tests/wasm_browser.rs in Chromium
 #   e2e     node --test: tests/js (state parsing) and tests/e2e (Playwright + Debian Chromium)
 # Installs what is missing first (scripts/ensure-tools.sh --browser). Honours CARGO_TARGET_DIR.
@@ -11,7 +12,14 @@ export PATH="$HOME/.cargo/bin:$PATH"
 what="${1:-all}"
 
 native() {
-  echo "== native: cargo test --all-features"
+  echo "== native: cargo test --all-features (renderer goldens on Mesa lavapipe, required)"
+  # The renderer's GPU tests must not silently skip here: ensure-tools installed lavapipe.
+  export WINGBEAT_REQUIRE_GPU="${WINGBEAT_REQUIRE_GPU:-1}"
+  if [ -z "${XDG_RUNTIME_DIR:-}" ]; then
+    XDG_RUNTIME_DIR="$(mktemp -d)"
+    chmod 0700 "$XDG_RUNTIME_DIR"
+    export XDG_RUNTIME_DIR
+  fi
   cargo test --all-features
 }
 
@@ -31,7 +39,7 @@ e2e() {
 }
 
 case "$what" in
-  native) native ;;
+  native) bash scripts/ensure-tools.sh --browser; native ;;
   wasm) bash scripts/ensure-tools.sh --browser; wasm ;;
   e2e) bash scripts/ensure-tools.sh --browser; e2e ;;
   all) bash scripts/ensure-tools.sh --browser; native; wasm; e2e; echo "== all test suites passed" ;;

@@ -43,6 +43,8 @@ pub mod floquet;
 pub mod kinematics;
 pub mod model;
 pub mod presets;
+#[cfg(feature = "render")]
+pub mod render;
 pub mod reproduce;
 pub mod simulate;
 pub mod solve;

@@ -1,0 +1,577 @@
+//! CPU-side scene maths shared by the GPU path and the tests: the wing rotation, the orbit
+//! camera, per-frame parameters and their sanitising, the strain colour map and its legend.
+//!
+//! Matrices are column-major `[[f32; 4]; 4]` (an array of columns), exactly as uploaded.
+
+use super::MAX_MODES;
+
+/// A column-major 4×4 matrix (`m[column][row]`).
+pub type Mat4 = [[f32; 4]; 4];
+
+/// The identity matrix.
+pub const IDENTITY: Mat4 = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0, 0.0],
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, 0.0, 1.0],
+];
+
+/// `a · b`.
+pub fn mat_mul(a: &Mat4, b: &Mat4) -> Mat4 {
+    let mut out = [[0.0f32; 4]; 4];
+    for c in 0..4 {
+        for r in 0..4 {
+            out[c][r] = (0..4).map(|k| a[k][r] * b[c][k]).sum();
+        }
+    }
+    out
+}
+
+/// `m · (p, 1)`, returning all four homogeneous components.
+pub fn transform(m: &Mat4, p: [f32; 3]) -> [f32; 4] {
+    let mut out = [0.0f32; 4];
+    for r in 0..4 {
+        out[r] = m[0][r] * p[0] + m[1][r] * p[1] + m[2][r] * p[2] + m[3][r];
+    }
+    out
+}
+
+fn rot_x(a: f32) -> Mat4 {
+    let (s, c) = a.sin_cos();
+    [
+        [1.0, 0.0, 0.0, 0.0],
+        [0.0, c, s, 0.0],
+        [0.0, -s, c, 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+}
+
+fn rot_y(a: f32) -> Mat4 {
+    let (s, c) = a.sin_cos();
+    [
+        [c, 0.0, -s, 0.0],
+        [0.0, 1.0, 0.0, 0.0],
+        [s, 0.0, c, 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+}
+
+fn rot_z(a: f32) -> Mat4 {
+    let (s, c) = a.sin_cos();
+    [
+        [c, s, 0.0, 0.0],
+        [-s, c, 0.0, 0.0],
+        [0.0, 0.0, 1.0, 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ]
+}
+
+/// The rotating frame I″–J″–K″ in the fixed frame: roll α about the fixed I axis, then pitch β
+/// about the rolled axis J′, i.e. `R_x(α) · R_y(β)` (paper §2.1; its body-frame angular velocity
+/// is Eq. 1's Ω = (α̇ cos β, β̇, α̇ sin β)). Columns are I″, J″, K″.
+pub fn frame_rotation(alpha: f32, beta: f32) -> Mat4 {
+    mat_mul(&rot_x(alpha), &rot_y(beta))
+}
+
+/// The wing's rotation: the frame rotation followed by the yaw γ about K″,
+/// `R = R_x(α) · R_y(β) · R_z(γ)`. The paper keeps γ to first order (r₂ = γ(−y, x, 0) in the
+/// I″–J″ plane); rendering uses the exact R_z(γ), which agrees with it to O(γ²).
+///
+/// A wing point p = (x, y, z + w) in the wing frame is drawn at R·p in the fixed frame; the
+/// vertex shader does exactly `u.wing_rot * vec4(p, 1)` with this matrix.
+pub fn wing_rotation(alpha: f32, beta: f32, gamma: f32) -> Mat4 {
+    mat_mul(&frame_rotation(alpha, beta), &rot_z(gamma))
+}
+
+/// Where a wing-frame point lands in the fixed frame (the CPU mirror of the vertex shader).
+pub fn wing_point_to_world(alpha: f32, beta: f32, gamma: f32, p: [f32; 3]) -> [f32; 3] {
+    let v = transform(&wing_rotation(alpha, beta, gamma), p);
+    [v[0], v[1], v[2]]
+}
+
+/// A right-handed perspective projection with WebGPU's depth range [0, 1].
+pub fn perspective(fov_y: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
+    let f = 1.0 / (0.5 * fov_y).tan();
+    let r = far / (near - far);
+    [
+        [f / aspect, 0.0, 0.0, 0.0],
+        [0.0, f, 0.0, 0.0],
+        [0.0, 0.0, r, -1.0],
+        [0.0, 0.0, r * near, 0.0],
+    ]
+}
+
+fn sub(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn cross(a: [f32; 3], b: [f32; 3]) -> [f32; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn normalize(a: [f32; 3]) -> [f32; 3] {
+    let n = dot(a, a).sqrt();
+    if n > 0.0 {
+        [a[0] / n, a[1] / n, a[2] / n]
+    } else {
+        [0.0, 0.0, 1.0]
+    }
+}
+
+/// A right-handed view matrix looking from `eye` at `target` with `up`.
+pub fn look_at(eye: [f32; 3], target: [f32; 3], up: [f32; 3]) -> Mat4 {
+    let f = normalize(sub(target, eye));
+    let s = normalize(cross(f, up));
+    let u = cross(s, f);
+    [
+        [s[0], u[0], -f[0], 0.0],
+        [s[1], u[1], -f[1], 0.0],
+        [s[2], u[2], -f[2], 0.0],
+        [-dot(s, eye), -dot(u, eye), dot(f, eye), 1.0],
+    ]
+}
+
+/// Keys the orbit camera understands (the page maps arrow keys, +/− to these).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OrbitKey {
+    /// Orbit left (yaw −).
+    Left,
+    /// Orbit right (yaw +).
+    Right,
+    /// Orbit up (pitch +).
+    Up,
+    /// Orbit down (pitch −).
+    Down,
+    /// Move closer.
+    ZoomIn,
+    /// Move away.
+    ZoomOut,
+}
+
+/// An orbit camera around `target`, with K (z) up. The eye sits at
+/// `target + distance·(cos p cos y, cos p sin y, sin p)` for yaw y and pitch p.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OrbitCamera {
+    /// Point looked at, metres.
+    pub target: [f32; 3],
+    /// Azimuth about K, radians.
+    pub yaw: f32,
+    /// Elevation, radians, kept within ±(π/2 − 0.01).
+    pub pitch: f32,
+    /// Eye–target distance, metres.
+    pub distance: f32,
+    /// Vertical field of view, radians.
+    pub fov_y: f32,
+}
+
+/// Radians of orbit per pixel dragged.
+pub const ORBIT_RAD_PER_PX: f32 = 0.008;
+const PITCH_LIMIT: f32 = std::f32::consts::FRAC_PI_2 - 0.01;
+
+impl OrbitCamera {
+    /// A camera framing a wing of span `span` (metres) from above the trailing edge.
+    pub fn for_span(span: f32) -> Self {
+        let span = if span.is_finite() && span > 0.0 {
+            span
+        } else {
+            0.05
+        };
+        OrbitCamera {
+            target: [0.5 * span, -0.25 * span, 0.0],
+            yaw: -1.95,
+            pitch: 0.8,
+            distance: 2.1 * span,
+            fov_y: 45f32.to_radians(),
+        }
+    }
+
+    /// Eye position, metres.
+    pub fn eye(&self) -> [f32; 3] {
+        let (sy, cy) = self.yaw.sin_cos();
+        let (sp, cp) = self.pitch.sin_cos();
+        let d = self.distance;
+        [
+            self.target[0] + d * cp * cy,
+            self.target[1] + d * cp * sy,
+            self.target[2] + d * sp,
+        ]
+    }
+
+    /// Orbit by a mouse drag of (dx, dy) pixels. Non-finite input is ignored.
+    pub fn drag(&mut self, dx: f32, dy: f32) {
+        if !(dx.is_finite() && dy.is_finite()) {
+            return;
+        }
+        self.yaw = (self.yaw - dx * ORBIT_RAD_PER_PX) % std::f32::consts::TAU;
+        self.pitch = (self.pitch + dy * ORBIT_RAD_PER_PX).clamp(-PITCH_LIMIT, PITCH_LIMIT);
+    }
+
+    /// Multiply the distance by `factor` (> 1 moves away), kept within [0.01, 100] of the
+    /// initial-scale distance limits. Non-finite or non-positive factors are ignored.
+    pub fn zoom(&mut self, factor: f32) {
+        if factor.is_finite() && factor > 0.0 {
+            self.distance = (self.distance * factor).clamp(1e-3, 1e3);
+        }
+    }
+
+    /// One keyboard step.
+    pub fn key(&mut self, key: OrbitKey) {
+        match key {
+            OrbitKey::Left => self.drag(-12.0, 0.0),
+            OrbitKey::Right => self.drag(12.0, 0.0),
+            OrbitKey::Up => self.drag(0.0, 12.0),
+            OrbitKey::Down => self.drag(0.0, -12.0),
+            OrbitKey::ZoomIn => self.zoom(1.0 / 1.1),
+            OrbitKey::ZoomOut => self.zoom(1.1),
+        }
+    }
+
+    /// Projection × view for a viewport of the given aspect ratio (width / height).
+    pub fn view_proj(&self, aspect: f32) -> Mat4 {
+        let aspect = if aspect.is_finite() && aspect > 0.0 {
+            aspect
+        } else {
+            1.0
+        };
+        let near = self.distance * 0.02;
+        let far = self.distance * 20.0;
+        let view = look_at(self.eye(), self.target, [0.0, 0.0, 1.0]);
+        mat_mul(&perspective(self.fov_y, aspect, near, far), &view)
+    }
+
+    /// Pixel position (x right, y down, pixel centres at +0.5) of a fixed-frame point in a
+    /// `width × height` image, or `None` behind the eye.
+    pub fn project(&self, p: [f32; 3], width: u32, height: u32) -> Option<[f32; 2]> {
+        let vp = self.view_proj(width as f32 / height.max(1) as f32);
+        let c = transform(&vp, p);
+        if c[3] <= 0.0 {
+            return None;
+        }
+        let (nx, ny) = (c[0] / c[3], c[1] / c[3]);
+        Some([
+            (nx + 1.0) * 0.5 * width as f32,
+            (1.0 - ny) * 0.5 * height as f32,
+        ])
+    }
+}
+
+/// Which quantity colours the wing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ColourMode {
+    /// A plain membrane colour, no strain.
+    #[default]
+    Plain,
+    /// ε_x, spanwise normal strain.
+    StrainX,
+    /// ε_y, chordwise normal strain.
+    StrainY,
+    /// γ_xy, engineering shear strain.
+    ShearXY,
+    /// √(ε_x² + ε_y² + γ_xy²/2), the Frobenius norm of the strain tensor (≥ 0).
+    Magnitude,
+}
+
+impl ColourMode {
+    /// All modes, in index order.
+    pub const ALL: [ColourMode; 5] = [
+        ColourMode::Plain,
+        ColourMode::StrainX,
+        ColourMode::StrainY,
+        ColourMode::ShearXY,
+        ColourMode::Magnitude,
+    ];
+
+    /// The index used by the shader and the JS API (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude).
+    pub fn index(self) -> u32 {
+        match self {
+            ColourMode::Plain => 0,
+            ColourMode::StrainX => 1,
+            ColourMode::StrainY => 2,
+            ColourMode::ShearXY => 3,
+            ColourMode::Magnitude => 4,
+        }
+    }
+
+    /// From the index; unknown indices give `None`.
+    pub fn from_index(i: u32) -> Option<Self> {
+        Self::ALL.get(i as usize).copied()
+    }
+
+    /// From a name: `plain`, `ex`, `ey`, `gxy`, `mag` (and a few spelled-out aliases).
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s.trim().to_ascii_lowercase().as_str() {
+            "plain" | "none" => Some(ColourMode::Plain),
+            "ex" | "eps_x" | "strain_x" => Some(ColourMode::StrainX),
+            "ey" | "eps_y" | "strain_y" => Some(ColourMode::StrainY),
+            "gxy" | "gamma_xy" | "shear" => Some(ColourMode::ShearXY),
+            "mag" | "magnitude" => Some(ColourMode::Magnitude),
+            _ => None,
+        }
+    }
+
+    /// A label for the legend.
+    pub fn label(self) -> &'static str {
+        match self {
+            ColourMode::Plain => "none",
+            ColourMode::StrainX => "ε_x",
+            ColourMode::StrainY => "ε_y",
+            ColourMode::ShearXY => "γ_xy",
+            ColourMode::Magnitude => "|ε|",
+        }
+    }
+
+    /// The coloured value at one node from its strain `[ε_x, ε_y, γ_xy]`.
+    pub fn value(self, e: [f32; 3]) -> f32 {
+        match self {
+            ColourMode::Plain => 0.0,
+            ColourMode::StrainX => e[0],
+            ColourMode::StrainY => e[1],
+            ColourMode::ShearXY => e[2],
+            ColourMode::Magnitude => (e[0] * e[0] + e[1] * e[1] + 0.5 * e[2] * e[2]).sqrt(),
+        }
+    }
+}
+
+/// The diverging colour map (Moreland's cool–warm, sRGB), as `(t, rgb)` stops for t ∈ [0, 1].
+/// Signed components map −M…0…+M onto 0…0.5…1; the magnitude maps 0…M onto 0.5…1.
+pub const DIVERGING_STOPS: [(f32, [f32; 3]); 5] = [
+    (0.0, [0.230, 0.299, 0.754]),
+    (0.25, [0.552, 0.690, 0.996]),
+    (0.5, [0.865, 0.865, 0.865]),
+    (0.75, [0.956, 0.604, 0.486]),
+    (1.0, [0.706, 0.016, 0.150]),
+];
+
+/// The colour map at `t` (clamped to [0, 1]), sRGB; the shader evaluates the same stops.
+pub fn diverging(t: f32) -> [f32; 3] {
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    for w in DIVERGING_STOPS.windows(2) {
+        let ((t0, c0), (t1, c1)) = (w[0], w[1]);
+        if t <= t1 {
+            let f = (t - t0) / (t1 - t0);
+            return [0, 1, 2].map(|i| c0[i] + f * (c1[i] - c0[i]));
+        }
+    }
+    DIVERGING_STOPS[4].1
+}
+
+/// What the page needs to draw a legend for the current colouring.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Legend {
+    /// The component shown (`ε_x`, `ε_y`, `γ_xy`, `|ε|`).
+    pub component: &'static str,
+    /// Value at the low end of the colour bar.
+    pub min: f32,
+    /// Value at the high end of the colour bar.
+    pub max: f32,
+    /// Always `"strain"` (dimensionless).
+    pub units: &'static str,
+    /// The extreme values actually present on the wing this frame.
+    pub data_min: f32,
+    /// See `data_min`.
+    pub data_max: f32,
+}
+
+impl Legend {
+    /// Colour-map stops for the bar from `min` to `max`: `(value, sRGB)` pairs.
+    pub fn stops(&self) -> Vec<(f32, [f32; 3])> {
+        let (t0, t1) = if self.min >= 0.0 {
+            (0.5, 1.0)
+        } else {
+            (0.0, 1.0)
+        };
+        (0..=8)
+            .map(|i| {
+                let f = i as f32 / 8.0;
+                (
+                    self.min + f * (self.max - self.min),
+                    diverging(t0 + f * (t1 - t0)),
+                )
+            })
+            .collect()
+    }
+}
+
+/// Everything that changes per frame. Angles in radians; `q` the modal coordinates (true
+/// scale); the drawn deflection is `exaggeration · Σ φ_k q_k`, the strain colour always uses
+/// the true q.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrameParams {
+    /// Roll α, rad.
+    pub alpha: f64,
+    /// Pitch β, rad.
+    pub beta: f64,
+    /// Yaw γ, rad.
+    pub gamma: f64,
+    /// Modal coordinates q_k (only the first [`MAX_MODES`] are drawn).
+    pub q: Vec<f64>,
+    /// Deflection exaggeration (1 = true scale).
+    pub exaggeration: f64,
+    /// Colouring.
+    pub colour: ColourMode,
+    /// Fixed legend limit M (colours span ±M, or 0…M for the magnitude); `None`: this frame's
+    /// largest |value|.
+    pub strain_range: Option<f64>,
+    /// Draw the fixed frame, the I″–J″–K″ triad and the body axis.
+    pub show_axes: bool,
+    /// Draw the stroke plane.
+    pub show_stroke_plane: bool,
+}
+
+impl Default for FrameParams {
+    fn default() -> Self {
+        FrameParams {
+            alpha: 0.0,
+            beta: 0.0,
+            gamma: 0.0,
+            q: Vec::new(),
+            exaggeration: 1.0,
+            colour: ColourMode::Plain,
+            strain_range: None,
+            show_axes: true,
+            show_stroke_plane: true,
+        }
+    }
+}
+
+/// A frame's values after sanitising: all finite, in `f32`, q padded to [`MAX_MODES`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CleanFrame {
+    /// Roll α, rad.
+    pub alpha: f32,
+    /// Pitch β, rad.
+    pub beta: f32,
+    /// Yaw γ, rad.
+    pub gamma: f32,
+    /// True modal coordinates.
+    pub q: [f32; MAX_MODES],
+    /// Exaggeration.
+    pub exaggeration: f32,
+    /// Colouring.
+    pub colour: ColourMode,
+    /// Fixed legend limit, if any (finite, > 0).
+    pub strain_range: Option<f32>,
+    /// See [`FrameParams::show_axes`].
+    pub show_axes: bool,
+    /// See [`FrameParams::show_stroke_plane`].
+    pub show_stroke_plane: bool,
+}
+
+/// Largest |angle| (rad) and |q·exaggeration| passed on; beyond this f32 maths loses meaning.
+pub const MAX_ABS_VALUE: f64 = 1.0e6;
+
+fn clean(name: &str, v: f64, warnings: &mut Vec<String>) -> f32 {
+    if !v.is_finite() {
+        warnings.push(format!("{name} was {v}; drawn as 0"));
+        0.0
+    } else if v.abs() > MAX_ABS_VALUE {
+        warnings.push(format!("{name} = {v} clamped to ±{MAX_ABS_VALUE}"));
+        v.clamp(-MAX_ABS_VALUE, MAX_ABS_VALUE) as f32
+    } else {
+        v as f32
+    }
+}
+
+impl FrameParams {
+    /// The pose at time `t` (s) from compiled kinematics, with modal coordinates `q`; the other
+    /// fields take their defaults. (Time control lives in the caller: it picks `t` and `q`.)
+    pub fn at_time(kin: &crate::kinematics::Compiled, t: f64, q: Vec<f64>) -> Self {
+        let s = kin.state(t);
+        FrameParams {
+            alpha: s.alpha,
+            beta: s.beta,
+            gamma: s.gamma,
+            q,
+            ..FrameParams::default()
+        }
+    }
+
+    /// Replaces every non-finite value by 0 (and clamps absurd magnitudes), returning the clean
+    /// frame and one warning per value changed. Modes beyond [`MAX_MODES`] are dropped with a
+    /// warning. Nothing non-finite ever reaches the GPU.
+    pub fn sanitise(&self) -> (CleanFrame, Vec<String>) {
+        let mut w = Vec::new();
+        let mut q = [0.0f32; MAX_MODES];
+        for (k, v) in self.q.iter().enumerate() {
+            if k < MAX_MODES {
+                q[k] = clean(&format!("q[{k}]"), *v, &mut w);
+            }
+        }
+        if self.q.len() > MAX_MODES {
+            w.push(format!(
+                "{} modal coordinates given; only the first {MAX_MODES} are drawn",
+                self.q.len()
+            ));
+        }
+        let strain_range = match self.strain_range {
+            Some(r) if r.is_finite() && r > 0.0 => Some(r.min(MAX_ABS_VALUE) as f32),
+            Some(r) => {
+                w.push(format!("strain_range was {r}; using this frame's range"));
+                None
+            }
+            None => None,
+        };
+        let clean_frame = CleanFrame {
+            alpha: clean("alpha", self.alpha, &mut w),
+            beta: clean("beta", self.beta, &mut w),
+            gamma: clean("gamma", self.gamma, &mut w),
+            q,
+            exaggeration: clean("exaggeration", self.exaggeration, &mut w),
+            colour: self.colour,
+            strain_range,
+            show_axes: self.show_axes,
+            show_stroke_plane: self.show_stroke_plane,
+        };
+        (clean_frame, w)
+    }
+}
+
+/// The legend for `mode` given the nodal strain field; `None` for [`ColourMode::Plain`].
+/// With no fixed range the limit is this field's largest |value| (1e-12 if the field is zero).
+pub fn legend_for(
+    mode: ColourMode,
+    field: &[[f32; 3]],
+    fixed_range: Option<f32>,
+) -> Option<Legend> {
+    if mode == ColourMode::Plain {
+        return None;
+    }
+    let mut lo = f32::INFINITY;
+    let mut hi = f32::NEG_INFINITY;
+    for e in field {
+        let v = mode.value(*e);
+        if v.is_finite() {
+            lo = lo.min(v);
+            hi = hi.max(v);
+        }
+    }
+    if !lo.is_finite() {
+        lo = 0.0;
+        hi = 0.0;
+    }
+    let m = fixed_range
+        .unwrap_or_else(|| lo.abs().max(hi.abs()))
+        .max(1e-12);
+    let min = if mode == ColourMode::Magnitude {
+        0.0
+    } else {
+        -m
+    };
+    Some(Legend {
+        component: mode.label(),
+        min,
+        max: m,
+        units: "strain",
+        data_min: lo,
+        data_max: hi,
+    })
+}

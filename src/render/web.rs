@@ -1,0 +1,307 @@
+//! The browser API (wasm32 + feature `render`): `WingView` draws the flexing wing into a
+//! canvas, with WebGPU when the browser has it and WebGL2 otherwise.
+//!
+//! ```js
+//! const view = await WingView.create(canvas, meshJsonOrNull);
+//! view.backend();                       // "webgpu" or "webgl2"
+//! const legend = view.set_frame(alpha, beta, gamma, new Float64Array(q), exaggeration, 4);
+//! view.render();
+//! view.orbit(dx, dy); view.zoom(1.1); view.resize(w, h);
+//! ```
+//! Every failure reaches JS as a `JsError` with a readable message.
+
+use super::gpu::Renderer;
+use super::mesh::WingMesh;
+use super::scene::{ColourMode, FrameParams, Legend, OrbitKey};
+use super::RenderError;
+use wasm_bindgen::prelude::*;
+
+fn js_err(e: RenderError) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+/// A wing view bound to one canvas.
+#[wasm_bindgen]
+pub struct WingView {
+    renderer: Renderer,
+    surface: wgpu::Surface<'static>,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    config: wgpu::SurfaceConfiguration,
+    backend: String,
+    frame: FrameParams,
+    legend: Option<Legend>,
+    warnings: Vec<String>,
+}
+
+fn set(obj: &js_sys::Object, key: &str, v: JsValue) {
+    let _ = js_sys::Reflect::set(obj, &JsValue::from_str(key), &v);
+}
+
+fn parse_mesh(mesh_json: &JsValue) -> Result<WingMesh, JsError> {
+    if mesh_json.is_null() || mesh_json.is_undefined() {
+        return Ok(WingMesh::synthetic(40, 16));
+    }
+    let text = match mesh_json.as_string() {
+        Some(s) => s,
+        None => js_sys::JSON::stringify(mesh_json)
+            .map_err(|_| JsError::new("mesh: could not serialise the object to JSON"))?
+            .as_string()
+            .unwrap_or_default(),
+    };
+    let v: serde_json::Value = serde_json::from_str(&text)
+        .map_err(|e| JsError::new(&format!("mesh: invalid JSON: {e}")))?;
+    WingMesh::from_fe_json(&v).map_err(|e| JsError::new(&format!("mesh: {e}")))
+}
+
+#[wasm_bindgen]
+impl WingView {
+    /// Creates the view. `mesh_json`: the FE mesh (object or JSON string), or null for the
+    /// synthetic wing. Rejects with a clear reason when neither WebGPU nor WebGL2 works, the
+    /// canvas is zero-sized, or the mesh is invalid.
+    pub async fn create(
+        canvas: web_sys::HtmlCanvasElement,
+        mesh_json: JsValue,
+    ) -> Result<WingView, JsError> {
+        let mesh = parse_mesh(&mesh_json)?;
+        let (width, height) = (canvas.width(), canvas.height());
+        if width == 0 || height == 0 {
+            return Err(js_err(RenderError::ZeroSize { width, height }));
+        }
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL;
+        let instance = wgpu::util::new_instance_with_webgpu_detection(desc).await;
+        let surface = instance
+            .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+            .map_err(|e| {
+                js_err(RenderError::Surface(format!(
+                    "{e} (the canvas may already have a 2d context, or WebGL2 is disabled)"
+                )))
+            })?;
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::default(),
+                force_fallback_adapter: false,
+                compatible_surface: Some(&surface),
+                apply_limit_buckets: false,
+            })
+            .await
+            .map_err(|e| {
+                js_err(RenderError::NoAdapter(format!(
+                    "{e}: this browser offers neither WebGPU nor WebGL2"
+                )))
+            })?;
+        let backend = match adapter.get_info().backend {
+            wgpu::Backend::BrowserWebGpu => "webgpu".to_string(),
+            wgpu::Backend::Gl => "webgl2".to_string(),
+            other => format!("{other:?}").to_lowercase(),
+        };
+        let limits = wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits());
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("wingbeat view"),
+                required_features: wgpu::Features::empty(),
+                required_limits: limits,
+                experimental_features: wgpu::ExperimentalFeatures::disabled(),
+                memory_hints: wgpu::MemoryHints::MemoryUsage,
+                trace: wgpu::Trace::Off,
+            })
+            .await
+            .map_err(|e| js_err(RenderError::Device(e.to_string())))?;
+        let caps = surface.get_capabilities(&adapter);
+        let format = caps
+            .formats
+            .iter()
+            .copied()
+            .find(|f| f.is_srgb())
+            .or_else(|| caps.formats.first().copied())
+            .ok_or_else(|| {
+                js_err(RenderError::Surface(
+                    "the canvas offers no colour format".into(),
+                ))
+            })?;
+        let config = wgpu::SurfaceConfiguration {
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            format,
+            color_space: Default::default(),
+            width,
+            height,
+            present_mode: wgpu::PresentMode::Fifo,
+            desired_maximum_frame_latency: 2,
+            alpha_mode: caps
+                .alpha_modes
+                .first()
+                .copied()
+                .unwrap_or(wgpu::CompositeAlphaMode::Auto),
+            view_formats: vec![],
+        };
+        surface.configure(&device, &config);
+        let mut renderer = Renderer::new(&device, &queue, format, &mesh).map_err(js_err)?;
+        renderer.resize(width, height).map_err(js_err)?;
+        let warnings = renderer.warnings().to_vec();
+        Ok(WingView {
+            renderer,
+            surface,
+            device,
+            queue,
+            config,
+            backend,
+            frame: FrameParams::default(),
+            legend: None,
+            warnings,
+        })
+    }
+
+    /// `"webgpu"` or `"webgl2"`.
+    pub fn backend(&self) -> String {
+        self.backend.clone()
+    }
+
+    /// Sets the pose (radians), the modal coordinates (true scale), the exaggeration and the
+    /// colouring (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude). Non-finite values are drawn as 0
+    /// and listed in the returned object's `warnings`. Returns the legend:
+    /// `{component, min, max, units, data_min, data_max, exaggeration, max_deflection_m,
+    /// warnings}` (`component` is `"none"` for plain colouring).
+    pub fn set_frame(
+        &mut self,
+        alpha: f64,
+        beta: f64,
+        gamma: f64,
+        q: &[f64],
+        exaggeration: f64,
+        colour_mode: u32,
+    ) -> Result<JsValue, JsError> {
+        let colour = ColourMode::from_index(colour_mode).ok_or_else(|| {
+            JsError::new(&format!(
+                "invalid value for `colour_mode`: {colour_mode} (allowed: 0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude)"
+            ))
+        })?;
+        self.frame.alpha = alpha;
+        self.frame.beta = beta;
+        self.frame.gamma = gamma;
+        self.frame.q = q.to_vec();
+        self.frame.exaggeration = exaggeration;
+        self.frame.colour = colour;
+        Ok(self.update())
+    }
+
+    /// Fixes the legend limit (colours span ±limit), or `null`/non-positive for automatic.
+    pub fn set_strain_range(&mut self, limit: Option<f64>) -> JsValue {
+        self.frame.strain_range = limit.filter(|l| l.is_finite() && *l > 0.0);
+        self.update()
+    }
+
+    /// Shows or hides the axes (fixed frame, I″–J″–K″, body axis) and the stroke plane.
+    pub fn set_scene(&mut self, show_axes: bool, show_stroke_plane: bool) {
+        self.frame.show_axes = show_axes;
+        self.frame.show_stroke_plane = show_stroke_plane;
+        self.update();
+    }
+
+    fn update(&mut self) -> JsValue {
+        let report = self.renderer.update(&self.frame);
+        self.legend = report.legend.clone();
+        let obj = js_sys::Object::new();
+        let (component, min, max, units, dmin, dmax) = match &report.legend {
+            Some(l) => (l.component, l.min, l.max, l.units, l.data_min, l.data_max),
+            None => ("none", 0.0, 0.0, "strain", 0.0, 0.0),
+        };
+        set(&obj, "component", component.into());
+        set(&obj, "min", (min as f64).into());
+        set(&obj, "max", (max as f64).into());
+        set(&obj, "units", units.into());
+        set(&obj, "data_min", (dmin as f64).into());
+        set(&obj, "data_max", (dmax as f64).into());
+        set(&obj, "exaggeration", (report.exaggeration as f64).into());
+        set(
+            &obj,
+            "max_deflection_m",
+            (report.max_deflection_m as f64).into(),
+        );
+        let warnings = js_sys::Array::new();
+        for w in self.warnings.iter().chain(&report.warnings) {
+            warnings.push(&JsValue::from_str(w));
+        }
+        set(&obj, "warnings", warnings.into());
+        obj.into()
+    }
+
+    /// Draws the current frame. A lost surface is reconfigured and the frame skipped; a lost
+    /// device or a GPU error rejects with its reason.
+    pub fn render(&mut self) -> Result<(), JsError> {
+        let frame = match self.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(t)
+            | wgpu::CurrentSurfaceTexture::Suboptimal(t) => t,
+            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
+                return Ok(())
+            }
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                self.surface.configure(&self.device, &self.config);
+                return Ok(());
+            }
+            wgpu::CurrentSurfaceTexture::Validation => {
+                return Err(js_err(RenderError::Surface(
+                    "validation error acquiring the canvas texture".into(),
+                )))
+            }
+        };
+        let view = frame.texture.create_view(&Default::default());
+        let result = self.renderer.render(&view);
+        self.queue.present(frame);
+        result.map_err(js_err)
+    }
+
+    /// Resizes the drawing buffer (device pixels). Zero sizes reject with a clear message and
+    /// leave the view as it was.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), JsError> {
+        self.renderer.resize(width, height).map_err(js_err)?;
+        self.config.width = width;
+        self.config.height = height;
+        self.surface.configure(&self.device, &self.config);
+        self.update();
+        Ok(())
+    }
+
+    /// Orbits the camera by a drag of (dx, dy) CSS pixels.
+    pub fn orbit(&mut self, dx: f64, dy: f64) {
+        self.renderer.camera.drag(dx as f32, dy as f32);
+        self.update();
+    }
+
+    /// Multiplies the camera distance by `factor` (> 1 zooms out).
+    pub fn zoom(&mut self, factor: f64) {
+        self.renderer.camera.zoom(factor as f32);
+        self.update();
+    }
+
+    /// One keyboard step: `ArrowLeft`, `ArrowRight`, `ArrowUp`, `ArrowDown`, `+`, `-`
+    /// (returns false for other keys).
+    pub fn key(&mut self, key: &str) -> bool {
+        let k = match key {
+            "ArrowLeft" => OrbitKey::Left,
+            "ArrowRight" => OrbitKey::Right,
+            "ArrowUp" => OrbitKey::Up,
+            "ArrowDown" => OrbitKey::Down,
+            "+" | "=" => OrbitKey::ZoomIn,
+            "-" | "_" => OrbitKey::ZoomOut,
+            _ => return false,
+        };
+        self.renderer.camera.key(k);
+        self.update();
+        true
+    }
+
+    /// Legend colour stops as a flat array `[value, r, g, b, value, r, g, b, ...]` (sRGB 0–1)
+    /// for the current colouring; empty for plain colouring.
+    pub fn legend_stops(&self) -> Vec<f64> {
+        self.legend
+            .as_ref()
+            .map(|l| {
+                l.stops()
+                    .iter()
+                    .flat_map(|(v, c)| [*v as f64, c[0] as f64, c[1] as f64, c[2] as f64])
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+}

@@ -1,0 +1,315 @@
+//! Renderer maths that needs no GPU: rotation convention, camera, mesh input and validation,
+//! sanitising, colour map and legend.
+#![cfg(feature = "render")]
+
+use nalgebra::{Rotation3, Vector3};
+use wingbeat::render::scene::{
+    diverging, legend_for, wing_point_to_world, wing_rotation, DIVERGING_STOPS,
+};
+use wingbeat::render::{ColourMode, FrameParams, OrbitCamera, OrbitKey, WingMesh, MAX_MODES};
+use wingbeat::WingbeatError;
+
+fn field_of(e: WingbeatError) -> String {
+    match e {
+        WingbeatError::InvalidInput { field, .. } => field,
+        other => panic!("expected InvalidInput, got {other:?}"),
+    }
+}
+
+#[test]
+fn rotation_matches_nalgebra_composition() {
+    let angles = [-2.0f64, -0.8, -0.1, 0.0, 0.3, 0.8, 1.9];
+    for &a in &angles {
+        for &b in &angles {
+            for &g in &[-0.2f64, 0.0, 0.15] {
+                let r = Rotation3::from_axis_angle(&Vector3::x_axis(), a)
+                    * Rotation3::from_axis_angle(&Vector3::y_axis(), b)
+                    * Rotation3::from_axis_angle(&Vector3::z_axis(), g);
+                let m = wing_rotation(a as f32, b as f32, g as f32);
+                for c in 0..3 {
+                    for row in 0..3 {
+                        let d = (m[c][row] as f64 - r[(row, c)]).abs();
+                        assert!(d < 1e-6, "R[{row}][{c}] at α={a} β={b} γ={g}: {d}");
+                    }
+                    assert_eq!(m[c][3], 0.0);
+                    assert_eq!(m[3][c], 0.0);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn rigid_tip_follows_roll_then_pitch() {
+    let mesh = WingMesh::synthetic(20, 8);
+    let tip = mesh.nodes[mesh.tip_node()];
+    assert!((tip[0] - 0.049).abs() < 1e-6);
+    let (a, b, g) = (0.8f64, 0.5f64, 0.2f64);
+    let r = Rotation3::from_axis_angle(&Vector3::x_axis(), a)
+        * Rotation3::from_axis_angle(&Vector3::y_axis(), b)
+        * Rotation3::from_axis_angle(&Vector3::z_axis(), g);
+    let want = r * Vector3::new(tip[0] as f64, tip[1] as f64, tip[2] as f64);
+    let got = wing_point_to_world(a as f32, b as f32, g as f32, tip);
+    for c in 0..3 {
+        assert!(
+            (got[c] as f64 - want[c]).abs() < 1e-7,
+            "{got:?} vs {want:?}"
+        );
+    }
+    // Pure roll about I leaves a spanwise point fixed; pure pitch swings it toward −K.
+    let p = [0.04, 0.0, 0.0];
+    assert_eq!(wing_point_to_world(1.0, 0.0, 0.0, p), p);
+    let q = wing_point_to_world(0.0, 0.5, 0.0, p);
+    assert!((q[0] - 0.04 * 0.5f32.cos()).abs() < 1e-7);
+    assert!((q[2] + 0.04 * 0.5f32.sin()).abs() < 1e-7);
+}
+
+#[test]
+fn camera_projects_target_to_centre_and_orbits() {
+    let mut cam = OrbitCamera::for_span(0.049);
+    let c = cam.project(cam.target, 256, 192).unwrap();
+    assert!(
+        (c[0] - 128.0).abs() < 1e-3 && (c[1] - 96.0).abs() < 1e-3,
+        "{c:?}"
+    );
+    // Points above the target (+K) project above the centre.
+    let up = cam
+        .project(
+            [cam.target[0], cam.target[1], cam.target[2] + 0.01],
+            256,
+            192,
+        )
+        .unwrap();
+    assert!(up[1] < 96.0);
+    let d0 = cam.distance;
+    cam.zoom(f32::NAN);
+    cam.zoom(-1.0);
+    assert_eq!(cam.distance, d0);
+    cam.key(OrbitKey::ZoomOut);
+    assert!(cam.distance > d0);
+    cam.drag(0.0, 1e6);
+    assert!(cam.pitch < std::f32::consts::FRAC_PI_2);
+    cam.drag(f32::NAN, 3.0);
+    assert!(cam.yaw.is_finite() && cam.pitch.is_finite());
+    // Behind the eye: None.
+    let eye = cam.eye();
+    let behind = [
+        2.0 * eye[0] - cam.target[0],
+        2.0 * eye[1] - cam.target[1],
+        2.0 * eye[2] - cam.target[2],
+    ];
+    assert!(cam.project(behind, 256, 192).is_none());
+}
+
+#[test]
+fn synthetic_wing_is_manduca_like() {
+    let m = WingMesh::synthetic(40, 16);
+    m.validate().unwrap();
+    assert_eq!(m.triangles.len(), 40 * 16 * 2 - 16);
+    assert_eq!(m.n_modes(), 2);
+    let area: f32 = m
+        .triangles
+        .iter()
+        .map(|t| {
+            let [p, q, r] = t.map(|k| m.nodes[k as usize]);
+            0.5 * ((q[0] - p[0]) * (r[1] - p[1]) - (r[0] - p[0]) * (q[1] - p[1])).abs()
+        })
+        .sum();
+    let span = m.span();
+    assert!((span - 0.049).abs() < 1e-6);
+    let mean_chord = area / span;
+    assert!(
+        (mean_chord - 0.018).abs() < 0.001,
+        "mean chord {mean_chord}"
+    );
+    // Camber: the largest z is ≈ 13 % of the largest chord (≈ 24.7 mm).
+    let zmax = m.nodes.iter().map(|p| p[2]).fold(0.0, f32::max);
+    assert!(zmax > 0.13 * 0.022 && zmax < 0.13 * 0.026, "zmax {zmax}");
+    // Bending ∝ (x/L)²; torsion changes sign across y_c.
+    let tip = m.tip_node();
+    for (i, p) in m.nodes.iter().enumerate() {
+        let want = m.shapes[0][tip] * (p[0] / span).powi(2);
+        assert!((m.shapes[0][i] - want).abs() < 1e-4 * m.shapes[0][tip].abs());
+    }
+    let (lo, hi) = m.shapes[1]
+        .iter()
+        .fold((0.0f32, 0.0f32), |(a, b), v| (a.min(*v), b.max(*v)));
+    assert!(lo < 0.0 && hi > 0.0);
+    // Bending strain is spanwise only, torsion is shear only.
+    assert!(m.strains[0]
+        .iter()
+        .all(|e| e[0] < 0.0 && e[1] == 0.0 && e[2] == 0.0));
+    assert!(m.strains[1]
+        .iter()
+        .all(|e| e[0] == 0.0 && e[1] == 0.0 && e[2] != 0.0));
+    // Degenerate sizes are clamped, not panics.
+    WingMesh::synthetic(0, 0).validate().unwrap();
+}
+
+#[test]
+fn validation_names_the_field() {
+    let good = WingMesh::synthetic(4, 2);
+    let mut m = good.clone();
+    m.nodes[3][1] = f32::NAN;
+    assert_eq!(field_of(m.validate().unwrap_err()), "nodes[3][1]");
+    let mut m = good.clone();
+    m.triangles[2][2] = 10_000;
+    assert_eq!(field_of(m.validate().unwrap_err()), "triangles[2][2]");
+    let mut m = good.clone();
+    m.shapes[1].pop();
+    assert_eq!(field_of(m.validate().unwrap_err()), "shapes[1]");
+    let mut m = good.clone();
+    m.shapes[0][5] = f32::INFINITY;
+    assert_eq!(field_of(m.validate().unwrap_err()), "shapes[0][5]");
+    let mut m = good.clone();
+    m.strains.pop();
+    assert_eq!(field_of(m.validate().unwrap_err()), "strains");
+    let mut m = good.clone();
+    m.strains[1][7][2] = f32::NAN;
+    assert_eq!(field_of(m.validate().unwrap_err()), "strains[1][7][2]");
+    let mut m = good.clone();
+    m.triangles.clear();
+    assert_eq!(field_of(m.validate().unwrap_err()), "triangles");
+    let m = WingMesh::default();
+    assert_eq!(field_of(m.validate().unwrap_err()), "nodes");
+}
+
+#[test]
+fn fe_json_round_trip_and_errors() {
+    let m = WingMesh::synthetic(6, 3);
+    let v = serde_json::json!({
+        "nodes": m.nodes,
+        "triangles": m.triangles,
+        "shapes": m.shapes,
+        "strain_nodes": m.strains,
+        "freq_hz": [60.0, 84.0],
+    });
+    let back = WingMesh::from_fe_json(&v).unwrap();
+    assert_eq!(back, m);
+    // Strains are optional; [ux, uy, uz] shape entries use uz.
+    let v = serde_json::json!({
+        "nodes": [[0.0, 0.0, 0.0], [0.01, 0.0, 0.0], [0.0, -0.01, 0.0]],
+        "triangles": [[0, 1, 2]],
+        "shapes": [[[0.0, 0.0, 0.0], [0.0, 0.0, 2.0], [0.0, 0.0, 1.0]]],
+    });
+    let m = WingMesh::from_fe_json(&v).unwrap();
+    assert_eq!(m.shapes, vec![vec![0.0, 2.0, 1.0]]);
+    assert_eq!(m.strains, vec![vec![[0.0; 3]; 3]]);
+    let bad = |v: serde_json::Value| field_of(WingMesh::from_fe_json(&v).unwrap_err());
+    assert_eq!(bad(serde_json::json!({})), "nodes");
+    assert_eq!(
+        bad(serde_json::json!({"nodes": [[0, 0, 0], [1, 0]], "triangles": [], "shapes": []})),
+        "nodes[1]"
+    );
+    assert_eq!(
+        bad(
+            serde_json::json!({"nodes": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+            "triangles": [[0, 1, -2]], "shapes": []})
+        ),
+        "triangles[0][2]"
+    );
+    assert_eq!(
+        bad(
+            serde_json::json!({"nodes": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+            "triangles": [[0, 1, 2]], "shapes": [[0, 1, 2]],
+            "strain_nodes": [[[0, 0, 0], [0, 0, 0], [0, "x", 0]]]})
+        ),
+        "strain_nodes[0][2][1]"
+    );
+    assert_eq!(
+        bad(
+            serde_json::json!({"nodes": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+            "triangles": [[0, 1, 2]], "shapes": [[0, 1, 2]],
+            "strain_nodes": [[[0, 0, 0], [0, 0, 0]]]})
+        ),
+        "strain_nodes[0]"
+    );
+}
+
+#[test]
+fn non_finite_frame_values_are_sanitised() {
+    let p = FrameParams {
+        alpha: f64::NAN,
+        beta: f64::INFINITY,
+        gamma: 0.1,
+        q: vec![1.0, f64::NAN, 1e300, 0.0, 0.0, 0.0, 0.0, 0.0, 9.0, 9.0],
+        exaggeration: f64::NEG_INFINITY,
+        strain_range: Some(f64::NAN),
+        ..FrameParams::default()
+    };
+    let (c, warnings) = p.sanitise();
+    assert_eq!((c.alpha, c.beta, c.gamma), (0.0, 0.0, 0.1));
+    assert_eq!(c.q[0], 1.0);
+    assert_eq!(c.q[1], 0.0);
+    assert_eq!(c.q[2], 1.0e6);
+    assert_eq!(c.exaggeration, 0.0);
+    assert_eq!(c.strain_range, None);
+    assert_eq!(c.q.len(), MAX_MODES);
+    for w in [
+        "alpha",
+        "beta",
+        "q[1]",
+        "q[2]",
+        "exaggeration",
+        "strain_range",
+        "10 modal",
+    ] {
+        assert!(
+            warnings.iter().any(|s| s.contains(w)),
+            "no warning for {w}: {warnings:?}"
+        );
+    }
+    let (_, none) = FrameParams::default().sanitise();
+    assert!(none.is_empty());
+}
+
+#[test]
+fn colour_map_and_legend() {
+    let close = |a: [f32; 3], b: [f32; 3]| a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-6);
+    assert!(close(diverging(0.0), DIVERGING_STOPS[0].1));
+    assert!(close(diverging(1.0), DIVERGING_STOPS[4].1));
+    assert!(close(diverging(0.5), DIVERGING_STOPS[2].1));
+    assert!(close(diverging(f32::NAN), DIVERGING_STOPS[2].1));
+    let field = vec![[1e-3, -2e-3, 0.0], [-4e-3, 0.0, 3e-3]];
+    let l = legend_for(ColourMode::StrainX, &field, None).unwrap();
+    assert_eq!((l.min, l.max, l.units), (-4e-3, 4e-3, "strain"));
+    assert_eq!((l.data_min, l.data_max), (-4e-3, 1e-3));
+    let l = legend_for(ColourMode::Magnitude, &field, None).unwrap();
+    assert_eq!(l.min, 0.0);
+    let m = ((16e-6f32) + 0.5 * 9e-6).sqrt();
+    assert!((l.max - m).abs() < 1e-9);
+    assert!(close(l.stops().first().unwrap().1, DIVERGING_STOPS[2].1));
+    let l = legend_for(ColourMode::ShearXY, &field, Some(0.01)).unwrap();
+    assert_eq!((l.min, l.max), (-0.01, 0.01));
+    assert!(legend_for(ColourMode::Plain, &field, None).is_none());
+    for m in ColourMode::ALL {
+        assert_eq!(ColourMode::from_index(m.index()), Some(m));
+    }
+    assert_eq!(ColourMode::from_name("gxy"), Some(ColourMode::ShearXY));
+    assert_eq!(ColourMode::from_name("nope"), None);
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+#[test]
+fn frame_paths_are_numbered() {
+    use std::path::Path;
+    use wingbeat::render::cli::frame_path;
+    assert_eq!(frame_path(Path::new("a/f.png"), 0, 1), Path::new("a/f.png"));
+    assert_eq!(
+        frame_path(Path::new("a/f.png"), 3, 12),
+        Path::new("a/f_003.png")
+    );
+    assert_eq!(frame_path(Path::new("f"), 2, 1500), Path::new("f_0002.png"));
+}
+
+#[test]
+fn frame_at_time_uses_the_kinematics() {
+    let cfg = wingbeat::config::SimConfig::paper();
+    let kin = cfg.kinematics.compile();
+    let t = 0.0123;
+    let s = kin.state(t);
+    let f = FrameParams::at_time(&kin, t, vec![1e-5]);
+    assert_eq!((f.alpha, f.beta, f.gamma), (s.alpha, s.beta, s.gamma));
+    assert_eq!(f.q, vec![1e-5]);
+    assert_eq!(f.exaggeration, 1.0);
+}
