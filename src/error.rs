@@ -50,6 +50,9 @@ pub enum WingbeatError {
         /// Iterations used, residual reached, and so on.
         detail: String,
     },
+    /// Rendering failed (no GPU adapter, lost device, ...); see `render::RenderError`.
+    #[error("rendering failed: {0}")]
+    Render(String),
     /// A numerical result came out non-finite (overflow, parametric blow-up).
     #[error("non-finite result in {what}: {detail}")]
     NonFinite {

@@ -242,3 +242,13 @@ fn modes_bad_input_is_named() {
         assert!(!err.contains("panicked"));
     }
 }
+
+#[test]
+fn render_without_the_feature_says_how_to_get_it() {
+    if cfg!(feature = "render") {
+        return; // covered by tests/render_gpu.rs
+    }
+    let (code, _, err) = run(&["render", "--out", "/tmp/never.png"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--features render"), "{err}");
+}

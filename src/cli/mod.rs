@@ -36,6 +36,37 @@ enum Command {
     Reproduce(ReproduceArgs),
     /// Shell FE modes of a planform with camber: frequencies, a_k/b_k (SI), shapes, strains.
     Modes(modes::ModesArgs),
+    /// Render the flexing wing offscreen to PNG (wgpu; needs a build with `--features render`
+    /// and a Vulkan or GL driver, e.g. Mesa's lavapipe).
+    Render(RenderArgs),
+}
+
+#[derive(Args, Debug)]
+struct RenderArgs {
+    /// Output PNG; with --frames N > 1 the files are numbered out_000.png, out_001.png, ...
+    #[arg(long, default_value = "frame.png")]
+    out: String,
+    /// Number of frames, evenly spread over the simulated duration.
+    #[arg(long, default_value_t = 1)]
+    frames: usize,
+    /// SimConfig JSON (default: the paper's case).
+    #[arg(long, value_name = "FILE")]
+    config: Option<String>,
+    /// FE mesh JSON from `wingbeat modes` (default: a synthetic analytic wing).
+    #[arg(long, value_name = "FILE")]
+    mesh: Option<String>,
+    /// Image width, px.
+    #[arg(long, default_value_t = 960)]
+    width: u32,
+    /// Image height, px.
+    #[arg(long, default_value_t = 640)]
+    height: u32,
+    /// Deflection exaggeration factor (default: automatic, largest drawn deflection 15 % of span).
+    #[arg(long)]
+    exaggeration: Option<f64>,
+    /// Colouring: plain, ex, ey, gxy or mag (strain magnitude).
+    #[arg(long, default_value = "mag")]
+    colour: String,
 }
 
 /// Output of commands that produce tables.
@@ -195,6 +226,7 @@ pub fn run() -> Result<String> {
         Command::Sweep(a) => cmd_sweep(a),
         Command::Reproduce(a) => cmd_reproduce(a),
         Command::Modes(a) => modes::run(&a, read_file),
+        Command::Render(a) => cmd_render(a),
     }
 }
 
@@ -542,4 +574,33 @@ fn cmd_reproduce(a: ReproduceArgs) -> Result<String> {
         ReportFormat::Json => to_json(&rep),
         ReportFormat::Text => Ok(rep.to_text()),
     }
+}
+
+#[cfg(feature = "render")]
+fn cmd_render(a: RenderArgs) -> Result<String> {
+    if a.frames == 0 || a.frames > 10_000 {
+        return Err(WingbeatError::invalid(
+            "--frames",
+            a.frames,
+            "an integer in [1, 10000]",
+        ));
+    }
+    wingbeat::render::cli::run_render(
+        a.config.as_deref(),
+        a.mesh.as_deref(),
+        &a.out,
+        a.frames,
+        a.width,
+        a.height,
+        a.exaggeration,
+        &a.colour,
+    )
+    .map_err(WingbeatError::Render)
+}
+
+#[cfg(not(feature = "render"))]
+fn cmd_render(_: RenderArgs) -> Result<String> {
+    Err(WingbeatError::Render(
+        "this wingbeat was built without the renderer; rebuild with `cargo build --release --features render`".into(),
+    ))
 }

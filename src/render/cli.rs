@@ -44,21 +44,34 @@ pub fn run_render(
     exaggeration: Option<f64>,
     colour: &str,
 ) -> Result<String, String> {
-    let cfg = match config {
-        Some(p) => {
-            let text = std::fs::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
-            SimConfig::from_json(&text).map_err(|e| format!("{p}: {e}"))?
-        }
-        None => SimConfig::paper(),
-    };
+    // An FE mesh from `wingbeat modes` also carries its modal-model modes: without a config,
+    // simulate with those, so that the drawn shapes and the responses belong together.
+    let mut fe_modes = None;
     let mesh = match mesh {
         Some(p) => {
             let text = std::fs::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
             let v: serde_json::Value =
                 serde_json::from_str(&text).map_err(|e| format!("{p}: invalid JSON: {e}"))?;
+            if let Some(m) = v.get("modes") {
+                fe_modes = Some(
+                    serde_json::from_value::<Vec<crate::model::Mode>>(m.clone())
+                        .map_err(|e| format!("{p}: modes: {e}"))?,
+                );
+            }
             WingMesh::from_fe_json(&v).map_err(|e| format!("{p}: {e}"))?
         }
         None => WingMesh::synthetic(40, 16),
+    };
+    let cfg = match (config, fe_modes) {
+        (Some(p), _) => {
+            let text = std::fs::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
+            SimConfig::from_json(&text).map_err(|e| format!("{p}: {e}"))?
+        }
+        (None, Some(modes)) => SimConfig {
+            modes,
+            ..SimConfig::paper()
+        },
+        (None, None) => SimConfig::paper(),
     };
     let colour = ColourMode::from_name(colour).ok_or_else(|| {
         format!("invalid value for `colour`: {colour} (allowed: plain, ex, ey, gxy, mag)")

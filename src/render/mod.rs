@@ -82,6 +82,15 @@ pub enum RenderError {
     Io(String),
 }
 
+impl From<RenderError> for crate::WingbeatError {
+    fn from(e: RenderError) -> crate::WingbeatError {
+        match e {
+            RenderError::Input(inner) => inner,
+            other => crate::WingbeatError::Render(other.to_string()),
+        }
+    }
+}
+
 impl From<RenderError> for String {
     fn from(e: RenderError) -> String {
         e.to_string()

@@ -416,19 +416,20 @@ pub fn render_frames_report(
         .collect();
 
     let mut max_defl = 0.0f64;
-    let mut max_strain = 0.0f32;
+    // One colour scale for the whole sequence: the robust limit over all frames.
+    let mut strain_values = Vec::new();
     for q in &qs {
         let qf: Vec<f32> = q.iter().map(|&v| v as f32).collect();
         max_defl = max_defl.max(mesh.max_deflection(&qf) as f64);
         if opts.colour != ColourMode::Plain {
-            for e in mesh.strain_field(&qf) {
-                let v = opts.colour.value(e).abs();
-                if v.is_finite() {
-                    max_strain = max_strain.max(v);
-                }
-            }
+            strain_values.extend(
+                mesh.strain_field(&qf)
+                    .into_iter()
+                    .map(|e| opts.colour.value(e)),
+            );
         }
     }
+    let max_strain = super::scene::robust_range(strain_values.into_iter());
     let span = mesh.span() as f64;
     let exaggeration = match opts.exaggeration {
         Some(e) => e,

@@ -535,8 +535,22 @@ impl FrameParams {
     }
 }
 
+/// The automatic colour-scale limit: the 98th percentile of |value|. Strain is singular at
+/// the corners of a clamped root, so the plain maximum would leave the rest of the wing in the
+/// middle colour; values beyond the limit saturate, and the legend still reports the true
+/// extremes (`data_min`, `data_max`). Non-finite values are ignored; 0 if nothing is left.
+pub fn robust_range(values: impl Iterator<Item = f32>) -> f32 {
+    let mut a: Vec<f32> = values.filter(|v| v.is_finite()).map(f32::abs).collect();
+    if a.is_empty() {
+        return 0.0;
+    }
+    let k = ((a.len() - 1) as f64 * 0.98).round() as usize;
+    let (_, v, _) = a.select_nth_unstable_by(k, f32::total_cmp);
+    *v
+}
+
 /// The legend for `mode` given the nodal strain field; `None` for [`ColourMode::Plain`].
-/// With no fixed range the limit is this field's largest |value| (1e-12 if the field is zero).
+/// With no fixed range the limit is [`robust_range`] of the field (at least 1e-12).
 pub fn legend_for(
     mode: ColourMode,
     field: &[[f32; 3]],
@@ -559,7 +573,7 @@ pub fn legend_for(
         hi = 0.0;
     }
     let m = fixed_range
-        .unwrap_or_else(|| lo.abs().max(hi.abs()))
+        .unwrap_or_else(|| robust_range(field.iter().map(|e| mode.value(*e))))
         .max(1e-12);
     let min = if mode == ColourMode::Magnitude {
         0.0
