@@ -56,5 +56,26 @@ pub fn paper_kinematics() -> Kinematics {
     Kinematics::paper_forward_flight()
 }
 
+/// Number of shell-FE modes in the `fe-wing` preset.
+pub const FE_WING_MODES: usize = 4;
+
+/// The `fe-wing` preset: the paper's forward-flight kinematics (Table 5) with the first
+/// [`FE_WING_MODES`] shell-FE modes of the default wing (the synthetic Manduca-like outline,
+/// 13 % camber, root clamp, "paper-frequencies" material, 1 mm elements): SI a_k in kg^½·m and
+/// the modal strains at P = [`crate::fem::STRAIN_POINT_P_MM`]. Takes about a second natively.
+pub fn fe_wing_config() -> crate::Result<crate::config::SimConfig> {
+    let input = crate::fem::FemInput {
+        n_modes: FE_WING_MODES,
+        ..Default::default()
+    };
+    let fe = crate::fem::compute_modes(&input)?;
+    let (x, y) = crate::fem::STRAIN_POINT_P_MM;
+    let modes = fe.model_modes(0.0, &[("P".to_string(), x, y)], "strain point")?;
+    Ok(crate::config::SimConfig {
+        modes,
+        ..crate::config::SimConfig::paper()
+    })
+}
+
 /// Names of the built-in presets.
-pub const PRESETS: [&str; 1] = ["paper"];
+pub const PRESETS: [&str; 2] = ["paper", "fe-wing"];

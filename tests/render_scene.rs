@@ -226,6 +226,40 @@ fn fe_json_round_trip_and_errors() {
     );
 }
 
+/// Guards `WingMesh::from_flat`, the path the browser lab's FE wing takes (typed arrays from
+/// the wasm `feModes`): it must rebuild exactly the mesh the FE JSON path gives, and name the
+/// array that is wrong.
+#[test]
+fn flat_arrays_round_trip_and_errors() {
+    let m = WingMesh::synthetic(6, 3);
+    let nodes: Vec<f64> = m.nodes.iter().flatten().map(|&v| v as f64).collect();
+    let tris: Vec<u32> = m.triangles.iter().flatten().copied().collect();
+    let shapes: Vec<f64> = m.shapes.iter().flatten().map(|&v| v as f64).collect();
+    let strains: Vec<f64> = m.strains.iter().flatten().flatten().map(|&v| v as f64).collect();
+    assert_eq!(WingMesh::from_flat(&nodes, &tris, &shapes, &strains).unwrap(), m);
+    // No strains: zero strain fields, one per mode.
+    let plain = WingMesh::from_flat(&nodes, &tris, &shapes, &[]).unwrap();
+    assert_eq!(plain.strains.len(), m.shapes.len());
+    assert!(plain.strains.iter().flatten().flatten().all(|&v| v == 0.0));
+    let bad = |n: &[f64], t: &[u32], s: &[f64], e: &[f64]| {
+        field_of(WingMesh::from_flat(n, t, s, e).unwrap_err())
+    };
+    assert_eq!(bad(&nodes[..7], &tris, &shapes, &strains), "nodes");
+    assert_eq!(bad(&[], &tris, &shapes, &strains), "nodes");
+    assert_eq!(bad(&nodes, &tris[..4], &shapes, &strains), "triangles");
+    assert_eq!(bad(&nodes, &tris, &shapes[..5], &strains), "shapes");
+    assert_eq!(bad(&nodes, &tris, &shapes, &strains[..9]), "strain_nodes");
+    let mut t2 = tris.clone();
+    t2[5] = 10_000;
+    assert_eq!(bad(&nodes, &t2, &shapes, &strains), "triangles[1][2]");
+    let mut s2 = shapes.clone();
+    s2[3] = f64::NAN;
+    assert_eq!(bad(&nodes, &tris, &s2, &strains), "shapes[0][3]");
+    let mut e2 = strains.clone();
+    e2[4] = f64::INFINITY;
+    assert_eq!(bad(&nodes, &tris, &shapes, &e2), "strain_nodes[0][1][1]");
+}
+
 #[test]
 fn non_finite_frame_values_are_sanitised() {
     let p = FrameParams {

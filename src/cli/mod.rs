@@ -304,13 +304,20 @@ fn modes_from_json(text: &str, what: &str) -> Result<Vec<Mode>> {
 }
 
 fn build_config(inp: &SimInput) -> Result<SimConfig> {
-    if inp.preset != "paper" {
-        return Err(WingbeatError::invalid(
-            "--preset",
-            &inp.preset,
-            "one of: paper",
-        ));
-    }
+    let preset = match inp.preset.as_str() {
+        "paper" => None,
+        "fe-wing" => {
+            eprintln!("simulate: computing the fe-wing preset's shell FE modes…");
+            Some(wingbeat::presets::fe_wing_config()?)
+        }
+        other => {
+            return Err(WingbeatError::invalid(
+                "--preset",
+                other,
+                format!("one of: {}", wingbeat::presets::PRESETS.join(", ")),
+            ))
+        }
+    };
     let mut cfg = match &inp.config {
         Some(p) => SimConfig::from_json(&read_file(p)?).map_err(|e| match e {
             WingbeatError::Parse { message, .. } => WingbeatError::Parse {
@@ -321,6 +328,9 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
         })?,
         None => SimConfig::paper(),
     };
+    if let Some(fe) = preset {
+        cfg.modes = fe.modes;
+    }
     if let Some(p) = &inp.modes {
         cfg.modes = modes_from_json(&read_file(p)?, &p.display().to_string())?;
     }

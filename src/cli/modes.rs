@@ -8,9 +8,8 @@ use wingbeat::fem::{
 use wingbeat::model::Mode;
 use wingbeat::{Result, WingbeatError};
 
-/// The default strain point P near the wing base (mm): the paper's Table 6 point is not
-/// given in coordinates, so wingbeat picks one at mid-root-chord, 3 mm out from the root.
-pub const DEFAULT_POINT: (f64, f64) = (3.0, -6.0);
+/// The default strain point P (mm), shared with the browser lab: [`wingbeat::fem::STRAIN_POINT_P_MM`].
+pub const DEFAULT_POINT: (f64, f64) = wingbeat::fem::STRAIN_POINT_P_MM;
 
 #[derive(Args, Debug, Clone)]
 pub struct ModesArgs {
@@ -131,16 +130,7 @@ pub fn points(a: &ModesArgs) -> Result<Vec<(String, f64, f64)>> {
 
 /// Model modes with strains at the points; a point outside the wing is an error naming it.
 pub fn model_modes(fe: &FemModes, pts: &[(String, f64, f64)]) -> Result<Vec<Mode>> {
-    for (name, x, y) in pts {
-        fe.strain_at(0, *x, *y).map_err(|_| {
-            WingbeatError::invalid(
-                format!("--point {name}"),
-                format!("({x}, {y}) mm"),
-                "a point inside the meshed planform",
-            )
-        })?;
-    }
-    Ok(fe.to_modes(0.0, pts))
+    fe.model_modes(0.0, pts, "--point")
 }
 
 /// Runs `wingbeat modes`.

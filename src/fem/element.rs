@@ -21,6 +21,7 @@ pub const DRILL_FACTOR: f64 = 1.0e-2;
 
 /// Isotropic linear-elastic shell material (SI units).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ShellMaterial {
     /// Shell thickness t, m.
     pub thickness_m: f64,

@@ -136,7 +136,7 @@ impl Clamp {
 /// Everything the shell FE step needs. `Default` is the paper's case: the synthetic
 /// Manduca-like outline, 13 % camber, root clamp, "paper-frequencies" material, 6 modes.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct FemInput {
     /// Outline, mm, x spanwise from the root, y chordwise (chord toward −y).
     pub planform_mm: Vec<[f64; 2]>,
@@ -153,6 +153,11 @@ pub struct FemInput {
     /// Target triangle edge length, mm.
     pub mesh_size_mm: f64,
 }
+
+/// The default strain point P near the wing base, (x, y) in mm: the paper's Table 6 point is
+/// not given in coordinates, so wingbeat picks one at mid-root-chord, 3 mm out from the root.
+/// The CLI (`wingbeat modes`) and the browser lab's FE wing both use it.
+pub const STRAIN_POINT_P_MM: (f64, f64) = (3.0, -6.0);
 
 /// Default target element size for the default wing, mm.
 pub const DEFAULT_MESH_SIZE_MM: f64 = 1.0;
@@ -611,6 +616,26 @@ impl FemModes {
             }
         }
         e
+    }
+
+    /// [`FemModes::to_modes`], strict: every point must lie inside the meshed planform, else
+    /// an error naming `{field} {name}` (e.g. `--point P`), so no NaN strain reaches a plot.
+    pub fn model_modes(
+        &self,
+        zeta: f64,
+        points: &[(String, f64, f64)],
+        field: &str,
+    ) -> Result<Vec<Mode>> {
+        for (name, x, y) in points {
+            self.strain_at(0, *x, *y).map_err(|_| {
+                WingbeatError::invalid(
+                    format!("{field} {name}"),
+                    format!("({x}, {y}) mm"),
+                    "a point inside the meshed planform",
+                )
+            })?;
+        }
+        Ok(self.to_modes(zeta, points))
     }
 
     /// Converts to the modal model's [`Mode`]s (Eq. 13 inputs) with damping ratio `zeta` and

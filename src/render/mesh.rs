@@ -335,7 +335,13 @@ impl WingMesh {
             shapes,
             strains,
         };
-        mesh.validate().map_err(|e| match e {
+        mesh.validate_fe()?;
+        Ok(mesh)
+    }
+
+    /// [`WingMesh::validate`] with the FE output's field names (`strain_nodes[…]`).
+    fn validate_fe(&self) -> Result<()> {
+        self.validate().map_err(|e| match e {
             WingbeatError::InvalidInput {
                 field,
                 value,
@@ -346,7 +352,85 @@ impl WingMesh {
                 allowed,
             },
             other => other,
-        })?;
+        })
+    }
+
+    /// Builds a mesh from the flat arrays of the wasm API's `feModes` (the shell FE's output):
+    /// `nodes` = x, y, z per node (m); `triangles` = three node indices each; `shapes` =
+    /// mode-major φ_k per node (`shapes[k·n + i]`); `strain_nodes` =
+    /// `[(k·n + i)·3 + c]` for c = ε_x, ε_y, γ_xy per unit q, or empty for no strain colouring.
+    /// Lengths are checked against each other and every error names the array (and, through
+    /// [`WingMesh::validate`], the entry).
+    pub fn from_flat(
+        nodes: &[f64],
+        triangles: &[u32],
+        shapes: &[f64],
+        strain_nodes: &[f64],
+    ) -> Result<WingMesh> {
+        if nodes.len() % 3 != 0 || nodes.is_empty() {
+            return Err(bad(
+                "nodes",
+                format!("{} values", nodes.len()),
+                "x, y, z per node (a non-empty multiple of 3)",
+            ));
+        }
+        let n = nodes.len() / 3;
+        if n > MAX_NODES {
+            return Err(bad(
+                "nodes",
+                format!("{n} nodes"),
+                &format!("at most {MAX_NODES}"),
+            ));
+        }
+        if triangles.len() % 3 != 0 {
+            return Err(bad(
+                "triangles",
+                format!("{} values", triangles.len()),
+                "three node indices per triangle (a multiple of 3)",
+            ));
+        }
+        if shapes.len() % n != 0 {
+            return Err(bad(
+                "shapes",
+                format!("{} values", shapes.len()),
+                &format!("one value per node ({n}) for each mode"),
+            ));
+        }
+        let n_modes = shapes.len() / n;
+        if !strain_nodes.is_empty() && strain_nodes.len() != 3 * n * n_modes {
+            return Err(bad(
+                "strain_nodes",
+                format!("{} values", strain_nodes.len()),
+                &format!("3 per node per mode ({}), or none", 3 * n * n_modes),
+            ));
+        }
+        let mesh = WingMesh {
+            nodes: nodes
+                .chunks_exact(3)
+                .map(|p| [p[0] as f32, p[1] as f32, p[2] as f32])
+                .collect(),
+            triangles: triangles
+                .chunks_exact(3)
+                .map(|t| [t[0], t[1], t[2]])
+                .collect(),
+            shapes: shapes
+                .chunks_exact(n)
+                .map(|s| s.iter().map(|&v| v as f32).collect())
+                .collect(),
+            strains: if strain_nodes.is_empty() {
+                vec![vec![[0.0; 3]; n]; n_modes]
+            } else {
+                strain_nodes
+                    .chunks_exact(3 * n)
+                    .map(|m| {
+                        m.chunks_exact(3)
+                            .map(|e| [e[0] as f32, e[1] as f32, e[2] as f32])
+                            .collect()
+                    })
+                    .collect()
+            },
+        };
+        mesh.validate_fe()?;
         Ok(mesh)
     }
 

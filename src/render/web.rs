@@ -64,6 +64,48 @@ impl WingView {
         mesh_json: JsValue,
     ) -> Result<WingView, JsError> {
         let mesh = parse_mesh(&mesh_json)?;
+        Self::with_mesh(canvas, mesh).await
+    }
+
+    /// Creates the view from the flat arrays of `feModes` (`nodes`, `triangles`, `shapes`,
+    /// `strain_nodes`; see `WingMesh::from_flat`), so the FE wing crosses as typed arrays,
+    /// not JSON. An empty `strain_nodes` draws without strain colours.
+    #[wasm_bindgen(js_name = createFromArrays)]
+    pub async fn create_from_arrays(
+        canvas: web_sys::HtmlCanvasElement,
+        nodes: Vec<f64>,
+        triangles: Vec<u32>,
+        shapes: Vec<f64>,
+        strain_nodes: Vec<f64>,
+    ) -> Result<WingView, JsError> {
+        let mesh = WingMesh::from_flat(&nodes, &triangles, &shapes, &strain_nodes)
+            .map_err(|e| JsError::new(&format!("mesh: {e}")))?;
+        Self::with_mesh(canvas, mesh).await
+    }
+
+    /// Creates the view with the synthetic wing on an `n_span` × `n_chord` grid (each clamped
+    /// to 1..=1000; `2·n_span·n_chord − n_chord` triangles), e.g. for frame-time benchmarks.
+    #[wasm_bindgen(js_name = createSynthetic)]
+    pub async fn create_synthetic(
+        canvas: web_sys::HtmlCanvasElement,
+        n_span: u32,
+        n_chord: u32,
+    ) -> Result<WingView, JsError> {
+        let mesh = WingMesh::synthetic(n_span as usize, n_chord as usize);
+        Self::with_mesh(canvas, mesh).await
+    }
+
+    /// The number of triangles drawn.
+    pub fn triangles(&self) -> u32 {
+        self.renderer.mesh().triangles.len() as u32
+    }
+}
+
+impl WingView {
+    async fn with_mesh(
+        canvas: web_sys::HtmlCanvasElement,
+        mesh: WingMesh,
+    ) -> Result<WingView, JsError> {
         let (width, height) = (canvas.width(), canvas.height());
         if width == 0 || height == 0 {
             return Err(js_err(RenderError::ZeroSize { width, height }));
@@ -151,7 +193,10 @@ impl WingView {
             warnings,
         })
     }
+}
 
+#[wasm_bindgen]
+impl WingView {
     /// `"webgpu"` or `"webgl2"`.
     pub fn backend(&self) -> String {
         self.backend.clone()

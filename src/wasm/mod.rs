@@ -22,7 +22,7 @@ use crate::error::WingbeatError;
 use crate::simulate::{force_series as core_force_series, simulate as core_simulate, SimResult};
 use crate::simulate::{ForceSeries, StrainSeries};
 use helpers::{check_series, check_web_caps, opt_or_nan, stiffness_term};
-use js_sys::{Array, Float64Array, Function, Object, Reflect};
+use js_sys::{Array, Float64Array, Function, Object, Reflect, Uint32Array};
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -100,6 +100,25 @@ export interface IcMapResult {
   /** Row-major: row j = qdot0[j], column i = q0[i]. */
   coriolis_percent: Float64Array; min_percent: number; max_percent: number;
   fraction_above_60: number; attribution: "forced" | "carried";
+}
+/** Shell FE input (paper §3.1); every field optional (missing = the default synthetic wing). */
+export interface FemInput {
+  planform_mm?: [number, number][]; planform_note?: string; camber?: number;
+  clamp?: "root" | "free" | { strip: { x_mm: number } };
+  material?: { thickness_m: number; e_pa: number; rho_kg_m3: number; nu: number };
+  n_modes?: number; mesh_size_mm?: number;
+}
+/** Shell FE modes: SI summary, Eq. 13 inputs (`modes`, strain at P) and the mesh as flat typed arrays. */
+export interface FeModesResult {
+  planform_note: string; freq_hz: Float64Array; a: [number, number][]; b: [number, number][];
+  mass_kg: number; centre_of_mass_m: [number, number, number]; kinds: string[];
+  residuals: Float64Array; mass_orthonormality_error: number; n_dofs: number;
+  n_nodes: number; n_triangles: number; n_modes: number; mesh_size_mm: number;
+  strain_point_mm: [number, number]; modes: Mode[];
+  /** x, y, z per node, m. */ nodes: Float64Array;
+  /** Three node indices per triangle. */ triangles: Uint32Array;
+  /** Mode-major: shapes[k·n_nodes + i], kg^-½. */ shapes: Float64Array;
+  /** strain_nodes[(k·n_nodes + i)·3 + c], c = ε_x, ε_y, γ_xy per unit q. */ strain_nodes: Float64Array;
 }
 export interface Limits {
   max_duration_s: number; max_sample_rate_hz: number; max_samples: number;
@@ -610,6 +629,102 @@ pub fn ic_map(
         set(&o, k, &JsValue::from_f64(v))?;
     }
     set(&o, "attribution", &to_js(&m.attribution)?)?;
+    Ok(o.into())
+}
+
+/// Roll, pitch and yaw (rad) of the config's kinematics at each time in `times` (s),
+/// interleaved `[α(t0), β(t0), γ(t0), α(t1), …]` (paper §2.1). The 3-D view uses it to pose
+/// the wing at the same instants as the simulated responses.
+#[wasm_bindgen(js_name = anglesAt)]
+pub fn angles_at(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+    times: &[f64],
+) -> Result<Float64Array, JsError> {
+    let cfg = config_from(cfg)?;
+    check_series("anglesAt.times", times).map_err(err)?;
+    let kin = cfg.kinematics.compile();
+    let mut out = Vec::with_capacity(3 * times.len());
+    for &t in times {
+        let s = kin.state(t);
+        out.extend_from_slice(&[s.alpha, s.beta, s.gamma]);
+    }
+    Ok(Float64Array::from(&out[..]))
+}
+
+/// Shell FE modes of a wing (paper §3.1): mesh, assemble, solve `K φ = ω² M φ`, then the
+/// modal model's inputs — frequencies, SI a_k and b_k, and `modes` ready for a `SimConfig`
+/// (damping ratio `zeta`, modal strains at P = `strain_point_mm`). The mesh, shapes and nodal
+/// strains come back as flat typed arrays (see `FeModesResult`). Errors name the field
+/// (outline, material, camber, mesh size and its node cap). Seconds of work at fine meshes:
+/// call it from a Web Worker.
+#[wasm_bindgen(js_name = feModes, unchecked_return_type = "FeModesResult")]
+pub fn fe_modes(
+    #[wasm_bindgen(unchecked_param_type = "FemInput | undefined")] input: JsValue,
+    zeta: Option<f64>,
+) -> Result<JsValue, JsError> {
+    let input: crate::fem::FemInput = from_js(input, "fem")?;
+    let zeta = zeta.unwrap_or(0.0);
+    crate::error::check_range("zeta", zeta, 0.0, 10.0, "").map_err(err)?;
+    let fe = crate::fem::compute_modes(&input).map_err(err)?;
+    let (px, py) = crate::fem::STRAIN_POINT_P_MM;
+    let modes = fe
+        .model_modes(zeta, &[("P".to_string(), px, py)], "strain point")
+        .map_err(err)?;
+    #[derive(Serialize)]
+    struct Meta<'a> {
+        planform_note: &'a str,
+        a: &'a [[f64; 2]],
+        b: &'a [[f64; 2]],
+        mass_kg: f64,
+        centre_of_mass_m: [f64; 3],
+        kinds: &'a [String],
+        mass_orthonormality_error: f64,
+        n_dofs: usize,
+        n_nodes: usize,
+        n_triangles: usize,
+        n_modes: usize,
+        mesh_size_mm: f64,
+        strain_point_mm: [f64; 2],
+        modes: &'a [crate::model::Mode],
+    }
+    let o: Object = to_js(&Meta {
+        planform_note: &fe.planform_note,
+        a: &fe.a,
+        b: &fe.b,
+        mass_kg: fe.mass_kg,
+        centre_of_mass_m: fe.centre_of_mass_m,
+        kinds: &fe.kinds,
+        mass_orthonormality_error: fe.mass_orthonormality_error,
+        n_dofs: fe.n_dofs,
+        n_nodes: fe.nodes.len(),
+        n_triangles: fe.triangles.len(),
+        n_modes: fe.freq_hz.len(),
+        mesh_size_mm: input.mesh_size_mm,
+        strain_point_mm: [px, py],
+        modes: &modes,
+    })?
+    .unchecked_into();
+    set(&o, "freq_hz", &f64a(&fe.freq_hz))?;
+    set(&o, "residuals", &f64a(&fe.residuals))?;
+    let nodes: Vec<f64> = fe.nodes.iter().flatten().copied().collect();
+    set(&o, "nodes", &f64a(&nodes))?;
+    let tris: Vec<u32> = fe
+        .triangles
+        .iter()
+        .flatten()
+        .map(|&i| u32::try_from(i).unwrap_or(u32::MAX))
+        .collect();
+    set(&o, "triangles", &Uint32Array::from(&tris[..]).into())?;
+    let shapes: Vec<f64> = fe.shapes.iter().flatten().copied().collect();
+    set(&o, "shapes", &f64a(&shapes))?;
+    let strains: Vec<f64> = fe
+        .strain_nodes
+        .iter()
+        .flatten()
+        .flatten()
+        .copied()
+        .collect();
+    set(&o, "strain_nodes", &f64a(&strains))?;
     Ok(o.into())
 }
 
