@@ -10,7 +10,7 @@ dest="${1:-www}"
 case "$dest" in www|dist) ;; *) echo "build-web: destination must be www or dist" >&2; exit 2 ;; esac
 target_dir="${CARGO_TARGET_DIR:-target}"
 
-cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web
+cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web,render
 wasm="$target_dir/wasm32-unknown-unknown/release/wingbeat.wasm"
 
 if [ "$dest" = dist ]; then

@@ -6,6 +6,10 @@
 //   * slider latency: keydown on the γ0 slider → redraw finished (includes the wait for the next
 //     animation frame), plus its compute and draw parts, over 40 key presses;
 //   * the 101×101 initial-condition map in wasm on the main thread (median of 20);
+//   * the 3-D view: frame time at 1280×720 of a ~10k-triangle synthetic wing (WebGL2, default
+//     flags; set_frame + render, wall time per requestAnimationFrame with the GPU work
+//     finished: median over 120 frames) and the same for the lab's FE wing;
+//   * the shell FE wing of the lab (wasm feModes, 1.25 mm and the CLI's 1.0 mm), median of 3;
 //   * the wasm module's size, raw and gzipped (-9).
 // Usage: node scripts/perf.mjs [--screenshot]   (--screenshot also writes docs/lab.png)
 // Run `scripts/build-web.sh www` first (`npm run perf` does both).
@@ -90,8 +94,57 @@ try {
     return { median: Math.round(ts[10] * 10) / 10, max: Math.round(ts[19] * 10) / 10 };
   });
 
+  // 3-D frame time: a 1280×720 canvas, the synthetic wing on a 100 × 51 grid (10 149 triangles).
+  result.wing3d = await page.evaluate(async () => {
+    const wb = await import('./pkg/wingbeat.js');
+    const c = document.createElement('canvas');
+    c.width = 1280;
+    c.height = 720;
+    c.style.cssText = 'position:fixed;left:0;top:0;width:1280px;height:720px';
+    document.body.append(c);
+    const view = await wb.WingView.createSynthetic(c, 100, 51);
+    const q = new Float64Array([1.5e-5, -1.5e-5]);
+    const gl = c.getContext('webgl2');
+    const times = [];
+    let prev = 0;
+    for (let i = 0; i < 140; i++) {
+      await new Promise((r) => requestAnimationFrame(r));
+      const t0 = performance.now();
+      view.set_frame(0.8 * Math.sin(i / 10), 0.5 * Math.sin(i / 10), 0.2 * Math.sin(i / 10), q, 50, 4);
+      view.render();
+      if (gl) gl.finish();
+      const t1 = performance.now();
+      if (i >= 20) times.push(t1 - t0);
+      if (i === 20) prev = t0;
+      if (i === 139) prev = (t1 - prev) / 119;
+    }
+    times.sort((a, b) => a - b);
+    const out = { backend: view.backend(), triangles: view.triangles(), size: '1280x720', frame_ms_median: Math.round(times[60] * 10) / 10, frame_ms_p90: Math.round(times[108] * 10) / 10, rAF_interval_ms: Math.round(prev * 10) / 10 };
+    view.free();
+    c.remove();
+    return out;
+  });
+  result.fe_wasm_ms = await page.evaluate(async () => {
+    const wb = await import('./pkg/wingbeat.js');
+    const out = {};
+    for (const h of [1.25, 1.0]) {
+      const ts = [];
+      let fe;
+      for (let i = 0; i < 3; i++) {
+        const t = performance.now();
+        fe = wb.feModes({ n_modes: 2, mesh_size_mm: h });
+        ts.push(performance.now() - t);
+      }
+      ts.sort((a, b) => a - b);
+      out[`${h}mm`] = { median: Math.round(ts[1]), nodes: fe.n_nodes, f1_hz: Math.round(fe.freq_hz[0] * 100) / 100 };
+    }
+    return out;
+  });
+
   if (process.argv.includes('--screenshot')) {
     await page.click('wing-lab .wl-preset');
+    await page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready', null, { timeout: 90000 });
+    await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.013));
     await page.waitForTimeout(300);
     await page.mouse.move(1000, 200);
     await page.waitForTimeout(100);

@@ -27,7 +27,8 @@ wasm() {
   echo "== wasm: wasm-bindgen-test in node and headless Chromium"
   export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner
   export WASM_BINDGEN_TEST_TIMEOUT=300
-  local args=(--release --target wasm32-unknown-unknown --no-default-features --features web)
+  # The same features as the lab build (scripts/build-web.sh), so the wasm dependencies compile once.
+  local args=(--release --target wasm32-unknown-unknown --no-default-features --features web,render)
   cargo test "${args[@]}" --test wasm_api
   CHROMEDRIVER=/usr/bin/chromedriver cargo test "${args[@]}" --test wasm_browser
 }

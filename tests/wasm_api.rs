@@ -1,6 +1,6 @@
 //! The wasm API against the core, in node (wasm-bindgen-test-runner). Run:
 //! `CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner cargo test --release
-//!  --target wasm32-unknown-unknown --no-default-features --features web --test wasm_api`
+//!  --target wasm32-unknown-unknown --no-default-features --features web,render --test wasm_api`
 //! (`npm run test:wasm` does this and the Chromium suite).
 #![cfg(target_arch = "wasm32")]
 
@@ -55,4 +55,14 @@ fn reproduce_matches_core() {
 #[wasm_bindgen_test]
 fn bad_input_names_the_field() {
     wasm_common::bad_input_names_the_field();
+}
+
+#[wasm_bindgen_test]
+fn fe_modes_match_core() {
+    wasm_common::fe_modes_match_core();
+}
+
+#[wasm_bindgen_test]
+fn angles_match_core() {
+    wasm_common::angles_match_core();
 }

@@ -9,8 +9,9 @@
 // Several labs on one page are independent: each has its own state and its own worker; they
 // share the (stateless) wasm module. Assets resolve relative to this file, so the element
 // works from any static host without a bundler, CDN or COOP/COEP headers.
-import { NUMERIC, ENUMS, PANELS, SAMPLE_RATE_HZ, defaults, parsePairs, parseQuery, toQuery, snap, toConfig } from './state.js';
+import { NUMERIC, ENUMS, PANELS, SAMPLE_RATE_HZ, FE_LAB_INPUT, defaults, parsePairs, parseQuery, toQuery, snap, toConfig } from './state.js';
 import { linePlot, autoWidth, decimate, toCSV, download, panelPNG, drawHeatmap, color, fmt, log10OrNull } from './plot.js';
+import { Wing3D } from './wing3d.js';
 
 const HERE = new URL('.', import.meta.url);
 
@@ -116,6 +117,7 @@ export class WingLab extends HTMLElement {
         this.limits = wb.limits();
         this.root.classList.remove('wl-loading');
         this.render();
+        if (this.state.panels.includes('wing3d')) this.wing3d.startWhenVisible(wb);
         this.dispatchEvent(new CustomEvent('wl-ready', { bubbles: true }));
       })
       .catch((e) => this.error(`Could not load the wasm module: ${e && e.message ? e.message : e}`));
@@ -124,6 +126,7 @@ export class WingLab extends HTMLElement {
   disconnectedCallback() {
     if (this.worker) this.worker.terminate();
     this.worker = null;
+    if (this.wing3d) this.wing3d.stop();
     for (const ro of this.observers || []) ro.disconnect();
   }
 
@@ -226,7 +229,7 @@ export class WingLab extends HTMLElement {
     sec.append(form);
     const selects = el('div', { class: 'wl-selects' });
     const enumText = {
-      modes: { paper: 'Paper table (Tables 3–4)', fe: 'FE wing (not yet available)' },
+      modes: { paper: 'Paper table (Tables 3–4)', fe: 'FE wing (shell FE, computed here)' },
       mode: { 1: 'Mode 1: spanwise bending', 2: 'Mode 2: spanwise torsion' },
       detrend: { none: 'none (DC visible)', mean: 'mean', linear: 'linear' },
     };
@@ -244,8 +247,8 @@ export class WingLab extends HTMLElement {
     sec.append(
       el('p', {
         class: 'wl-note',
-        text: 'The FE wing mode set is disabled until the shell finite-element modes land. Sampling: 10 kHz. ' +
-          'Paper preset: Table 4’s a_k are used as printed (not SI), so absolute q, forces and strains are in the paper’s units; shares, spectra shapes and frequencies are unaffected.',
+        text: 'Sampling: 10 kHz. Paper table: Table 4’s a_k are used as printed (not SI), so absolute q, forces and strains are in the paper’s units; shares, spectra shapes and frequencies are unaffected. ' +
+          `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker.`,
       }),
     );
     this.timingEl = el('p', { class: 'wl-timing', 'aria-live': 'off', text: 'loading wasm…' });
@@ -303,9 +306,10 @@ export class WingLab extends HTMLElement {
       this.observers.push(autoWidth(u, box));
       return box;
     };
-    mk('time', {
+    const timeBox = mk('time', {
       xLabel: 't',
       xUnit: 's',
+      markers: () => (this.timeCursor == null ? [] : [{ x: this.timeCursor, label: '3-D t', color: '#7a3cc2', row: 0 }]),
       yScales: { y: { label: 'q', unit: Q_UNIT } },
       series: [
         { label: 'Euler response', unit: Q_UNIT, color: color('euler') },
@@ -315,6 +319,12 @@ export class WingLab extends HTMLElement {
         { label: 'Coriolis envelope', unit: Q_UNIT, color: color('envelope'), dash: [6, 4] },
       ],
     });
+    // A click on the responses plot poses the 3-D wing at that instant.
+    const tu = this.plots.time;
+    tu.over.addEventListener('click', (e) => {
+      if (this.wing3d && this.wing3d.view) this.wing3d.setTime(tu.posToVal(e.offsetX, 'x'));
+    });
+    timeBox.title = 'Click to show this instant in the 3-D wing panel';
     const spec = this.panels.spectrum;
     mk('spectrum', {
       xLabel: 'f',
@@ -350,7 +360,7 @@ export class WingLab extends HTMLElement {
       ],
     });
     this.panels.strain.append(
-      el('p', { class: 'wl-note', text: 'Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). Paper units: Table 4/6 data are not SI.' }),
+      (this.strainNote = el('p', { class: 'wl-note' })),
     );
   }
 
@@ -427,12 +437,45 @@ export class WingLab extends HTMLElement {
   }
 
   buildWing3d() {
-    const sec = this.panels.wing3d;
-    const box = el('div', { class: 'wl-wing3d-box', 'data-wing3d': '' });
-    // One id per page: the primary (URL-synced or first) lab owns #wing3d.
-    if (!document.getElementById('wing3d')) box.id = 'wing3d';
-    box.append(el('p', { text: '3-D wing renderer: coming with the wgpu renderer' }));
-    sec.append(box);
+    // One id per page: the primary (URL-synced or first) lab owns #wing3d (see wing3d.js).
+    this.wing3d = new Wing3D(this, this.panels.wing3d);
+  }
+
+  /** Marks the 3-D view's instant on the responses plot (a redraw without recomputing paths). */
+  showTimeCursor(t) {
+    this.timeCursor = t;
+    const u = this.plots.time;
+    if (u && !this.panels.time.hidden) u.redraw(false, false);
+  }
+
+  /**
+   * The shell-FE wing of the lab (FE_LAB_INPUT), computed once per element in its worker.
+   * Resolves to the wasm `feModes` result (typed arrays for the mesh and shapes).
+   */
+  ensureFe() {
+    if (!this.fePromise) {
+      this.fePromise = new Promise((resolve, reject) => {
+        const id = ++this.jobId;
+        this.jobs.set(id, { resolve: ([r]) => resolve(r), reject: (e) => reject(new Error(e)), progress: () => {} });
+        this.ensureWorker().postMessage({ id, kind: 'fe', input: FE_LAB_INPUT });
+      }).then((fe) => {
+        this.fe = fe;
+        const opts = this.selects.mode.options;
+        fe.modes.slice(0, opts.length).forEach((m, k) => { opts[k].dataset.fe = `Mode ${k + 1}: ${fe.kinds[k]} (FE, ${fmt(fe.freq_hz[k], 4)} Hz)`; });
+        this.labelModes();
+        return fe;
+      });
+      this.fePromise.catch(() => { this.fePromise = null; });
+    }
+    return this.fePromise;
+  }
+
+  /** Mode-select labels for the active mode set (the FE wing's modes have their own kinds). */
+  labelModes() {
+    for (const o of this.selects.mode.options) {
+      if (!o.dataset.paper) o.dataset.paper = o.textContent;
+      o.textContent = this.state.modes === 'fe' && o.dataset.fe ? o.dataset.fe : o.dataset.paper;
+    }
   }
 
   buildReport() {
@@ -513,7 +556,8 @@ export class WingLab extends HTMLElement {
   }
 
   config() {
-    return toConfig(this.state, this.base);
+    const base = this.state.modes === 'fe' && this.fe ? { modes: this.fe.modes } : this.base;
+    return toConfig(this.state, base);
   }
 
   schedule() {
@@ -528,11 +572,21 @@ export class WingLab extends HTMLElement {
 
   render() {
     if (!this.wb) return;
+    if (this.state.modes === 'fe' && !this.fe) {
+      this.timingEl.textContent = 'computing the FE wing’s modes in a worker…';
+      this.ensureFe().then(
+        () => this.schedule(),
+        (e) => this.error(`The FE wing could not be computed: ${e && e.message ? e.message : e}`),
+      );
+      return;
+    }
+    this.labelModes();
     const k = this.modeIndex();
     const t0 = performance.now();
     let a;
+    const cfg = this.config();
     try {
-      a = this.wb.analyze(this.config(), { detrend: this.state.detrend, segment_len: 8192 }, k);
+      a = this.wb.analyze(cfg, { detrend: this.state.detrend, segment_len: 8192 }, k);
     } catch (e) {
       this.error(`Computation rejected: ${e && e.message ? e.message : e}`);
       return;
@@ -544,6 +598,7 @@ export class WingLab extends HTMLElement {
     this.drawTime(a, k);
     this.drawSpectrum(a, k);
     this.drawStrain(a);
+    this.wing3d.update(a, cfg);
     const warnings = a.sim.warnings || [];
     this.warnEl.hidden = warnings.length === 0;
     this.warnEl.textContent = warnings.join(' ');
@@ -647,7 +702,15 @@ export class WingLab extends HTMLElement {
     this.markers = marks;
   }
 
+  /** Units of the strain series: SI (dimensionless) for the FE wing, the paper's otherwise. */
+  strainUnit() {
+    return this.state.modes === 'fe' ? 'strain (–)' : 'paper units';
+  }
+
   drawStrain(a) {
+    this.strainNote.textContent = this.state.modes === 'fe'
+      ? 'Σ_k ε_k q_k(t) at P = (3, −6) mm from the FE modal strain fields (top surface, dimensionless, SI).'
+      : 'Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). Paper units: Table 4/6 data are not SI.';
     const s = a.sim.strain;
     if (!s) {
       this.plots.strain.setData([[0], [null], [null], [null]]);
@@ -816,9 +879,9 @@ export class WingLab extends HTMLElement {
       return toCSV(
         [
           { name: 't', unit: 's', values: a.sim.t },
-          { name: 'eps_x', unit: 'paper units', values: s.eps_x },
-          { name: 'eps_y', unit: 'paper units', values: s.eps_y },
-          { name: 'gamma_xy', unit: 'paper units', values: s.gamma_xy },
+          { name: 'eps_x', unit: this.strainUnit(), values: s.eps_x },
+          { name: 'eps_y', unit: this.strainUnit(), values: s.eps_y },
+          { name: 'gamma_xy', unit: this.strainUnit(), values: s.gamma_xy },
         ],
         [case_, `strain at point ${s.point}`],
       );

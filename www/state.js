@@ -18,13 +18,21 @@ export const NUMERIC = [
 
 /** Enumerated parameters. `disabled` choices are shown but not selectable (and rejected from URLs). */
 export const ENUMS = [
-  { key: 'modes', label: 'Mode set', choices: ['paper', 'fe'], disabled: ['fe'], def: 'paper' },
+  { key: 'modes', label: 'Mode set', choices: ['paper', 'fe'], def: 'paper' },
   { key: 'mode', label: 'Selected mode', choices: ['1', '2'], def: '1' },
   { key: 'detrend', label: 'PSD detrend', choices: ['none', 'mean', 'linear'], def: 'none' },
 ];
 
 /** Panels that can be shown; `panels=` picks a subset (comma-separated). */
 export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report'];
+
+/**
+ * The lab's FE wing (wasm `feModes` input): the default synthetic outline, camber, clamp,
+ * material and 1 mm elements, the same as `wingbeat modes`, so the lab and the CLI agree
+ * (f1 = 62.49 Hz); two modes, like the paper table. About 1–3 s in a worker (1.25 mm would
+ * take a third of that but put f1 at 63.8 Hz).
+ */
+export const FE_LAB_INPUT = Object.freeze({ n_modes: 2, mesh_size_mm: 1.0 });
 
 /** Output sample rate of the live simulation, Hz (fixed). */
 export const SAMPLE_RATE_HZ = 10000;

@@ -62,10 +62,14 @@ const jobs = {
   reproduce() {
     return wb.reproduce();
   },
+  fe({ input }) {
+    // Shell FE modes of the wing (mesh, assembly, shift-invert eigen-solve): about a second.
+    return wb.feModes(input);
+  },
 };
 
 function transferables(v, acc = []) {
-  if (v instanceof Float64Array) acc.push(v.buffer);
+  if (ArrayBuffer.isView(v)) acc.push(v.buffer);
   else if (Array.isArray(v)) v.forEach((x) => transferables(x, acc));
   else if (v && typeof v === 'object') Object.values(v).forEach((x) => transferables(x, acc));
   return acc;

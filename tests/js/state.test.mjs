@@ -29,13 +29,20 @@ test('hostile and malformed values are rejected by name, never echoed', () => {
   for (const r of rejected) assert.ok(!r.why.includes('<') && !r.why.includes('onerror'));
 });
 
-test('out-of-range, disabled and unknown parameters are rejected', () => {
-  const { state, rejected } = parseQuery('?flap_hz=1000&modes=fe&bogus=1&duration=-1&gamma0=0.1&gamma0=0.2');
+test('out-of-range, unknown-choice and unknown parameters are rejected', () => {
+  const { state, rejected } = parseQuery('?flap_hz=1000&modes=abaqus&bogus=1&duration=-1&gamma0=0.1&gamma0=0.2');
   assert.equal(state.flap_hz, 25);
   assert.equal(state.modes, 'paper');
   assert.equal(state.gamma0, 0.1);
   const keys = rejected.map((r) => r.key);
   for (const k of ['flap_hz', 'modes', 'bogus', 'duration', 'gamma0']) assert.ok(keys.includes(k), k);
+});
+
+test('the FE wing mode set is a valid choice', () => {
+  const { state, rejected } = parseQuery('?modes=fe&mode=2');
+  assert.equal(state.modes, 'fe');
+  assert.equal(state.mode, '2');
+  assert.deepEqual(rejected, []);
 });
 
 test('long hostile keys are truncated', () => {

@@ -502,3 +502,120 @@ pub fn bad_input_names_the_field() {
     let m = message(wasm::envelope(&[]));
     assert!(m.contains("envelope.series"), "{m}");
 }
+
+/// `feModes` against the core's `compute_modes` on a coarse mesh: frequencies, a_k, mass,
+/// the flat mesh arrays and the Eq. 13 modes with strain at P, all to 1e-12.
+pub fn fe_modes_match_core() {
+    use wingbeat::fem::{compute_modes, FemInput, STRAIN_POINT_P_MM};
+    let input = FemInput {
+        n_modes: 3,
+        mesh_size_mm: 2.5,
+        ..Default::default()
+    };
+    let core = compute_modes(&input).unwrap();
+    let js = wasm::fe_modes(
+        js_sys::JSON::parse(r#"{"n_modes": 3, "mesh_size_mm": 2.5}"#).unwrap(),
+        Some(0.01),
+    )
+    .unwrap();
+    close_all("freq_hz", &f64s(&js, "freq_hz"), &core.freq_hz, TOL);
+    close_all("residuals", &f64s(&js, "residuals"), &core.residuals, TOL);
+    for k in 0..3 {
+        close(
+            &format!("a[{k}].x"),
+            num(&js, &format!("a.{k}.0")),
+            core.a[k][0],
+            TOL,
+        );
+        close(
+            &format!("a[{k}].y"),
+            num(&js, &format!("a.{k}.1")),
+            core.a[k][1],
+            TOL,
+        );
+        close(
+            &format!("modes[{k}].a.x"),
+            num(&js, &format!("modes.{k}.a.0")),
+            core.a[k][0],
+            TOL,
+        );
+        close(
+            &format!("modes[{k}].zeta"),
+            num(&js, &format!("modes.{k}.zeta")),
+            0.01,
+            TOL,
+        );
+    }
+    close("mass_kg", num(&js, "mass_kg"), core.mass_kg, TOL);
+    assert_eq!(num(&js, "n_nodes") as usize, core.nodes.len());
+    assert_eq!(num(&js, "n_triangles") as usize, core.triangles.len());
+    let nodes: Vec<f64> = core.nodes.iter().flatten().copied().collect();
+    close_all("nodes", &f64s(&js, "nodes"), &nodes, TOL);
+    let tris = get(&js, "triangles")
+        .dyn_into::<js_sys::Uint32Array>()
+        .expect("triangles is a Uint32Array")
+        .to_vec();
+    let want: Vec<u32> = core.triangles.iter().flatten().map(|&i| i as u32).collect();
+    assert_eq!(tris, want);
+    let shapes: Vec<f64> = core.shapes.iter().flatten().copied().collect();
+    close_all("shapes", &f64s(&js, "shapes"), &shapes, TOL);
+    let strains: Vec<f64> = core
+        .strain_nodes
+        .iter()
+        .flatten()
+        .flatten()
+        .copied()
+        .collect();
+    close_all("strain_nodes", &f64s(&js, "strain_nodes"), &strains, TOL);
+    // The modal strain at P equals the core's interpolation there.
+    let (px, py) = STRAIN_POINT_P_MM;
+    let e = core.strain_at(0, px, py).unwrap();
+    close(
+        "modes[0].strains[0].gamma_xy",
+        num(&js, "modes.0.strains.0.gamma_xy"),
+        e[2],
+        TOL,
+    );
+    assert_eq!(
+        get(&js, "modes.0.strains.0.point").as_string().unwrap(),
+        "P"
+    );
+    // Bad input names the field.
+    let bad = |json: &str| js_sys::JSON::parse(json).unwrap();
+    for (json, field) in [
+        (r#"{"camber": 2}"#, "camber"),
+        (r#"{"mesh_size_mm": 0.01}"#, "node"),
+        (r#"{"n_modes": 0}"#, "n_modes"),
+        (r#"{"planform_mm": [[0, 0], [1, 1]]}"#, "planform"),
+        (
+            r#"{"material": {"thickness_m": 8e-5, "e_pa": -1, "rho_kg_m3": 860, "nu": 0.3}}"#,
+            "e_pa",
+        ),
+        (r#"{"bogus": 1}"#, "bogus"),
+    ] {
+        let m = message(wasm::fe_modes(bad(json), None));
+        assert!(m.contains(field), "{json}: message `{m}` lacks {field}");
+    }
+    let m = message(wasm::fe_modes(JsValue::UNDEFINED, Some(f64::NAN)));
+    assert!(m.contains("zeta"), "{m}");
+}
+
+/// `anglesAt` against the core's compiled kinematics (paper §2.1), and its input checks.
+pub fn angles_match_core() {
+    let cfg = short_paper();
+    let kin = cfg.kinematics.compile();
+    let times = [0.0, 0.0013, 0.01, 0.037, 0.4];
+    let got = wasm::angles_at(to_js(&cfg), &times).unwrap().to_vec();
+    assert_eq!(got.len(), 15);
+    for (i, &t) in times.iter().enumerate() {
+        let s = kin.state(t);
+        close(&format!("alpha({t})"), got[3 * i], s.alpha, TOL);
+        close(&format!("beta({t})"), got[3 * i + 1], s.beta, TOL);
+        close(&format!("gamma({t})"), got[3 * i + 2], s.gamma, TOL);
+    }
+    // A quarter period (0.01 s at 25 Hz) puts every sinusoid at its amplitude.
+    close("alpha(T/4)", got[6], 0.8, 1e-12);
+    close("gamma(T/4)", got[8], 0.2, 1e-12);
+    let m = message(wasm::angles_at(to_js(&cfg), &[0.0, f64::NAN]));
+    assert!(m.contains("anglesAt.times[1]"), "{m}");
+}

@@ -1,0 +1,172 @@
+// The 3-D wing panel in real headless Chromium: WebGL2 with default flags, WebGPU with the
+// flag set from the toolchain notes, and the no-adapter fallback. Pixels are checked, not just
+// the absence of errors (a blank canvas raises no error). Run after scripts/build-web.sh www.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+import { setup, openPage, waitRenders, pngStats, OUT, CHROMIUM, ARGS } from './helpers.mjs';
+
+const WEBGPU_FLAGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader', '--use-angle=swiftshader'];
+
+let env;
+before(async () => {
+  env = await setup();
+});
+after(async () => {
+  if (env) await env.close();
+});
+
+async function ready3d(page, timeout = 90000) {
+  // The panel starts when it scrolls into sight.
+  await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => {
+    const b = document.querySelector('#wing3d');
+    return b && (b.dataset.state === 'ready' || b.dataset.state === 'unavailable') && (b.dataset.state !== 'ready' || Number(b.dataset.frames || 0) > 0);
+  }, null, { timeout });
+  return page.evaluate(() => ({ ...document.querySelector('#wing3d').dataset }));
+}
+
+const frames = (page) => page.evaluate(() => Number(document.querySelector('#wing3d').dataset.frames || 0));
+
+/** Screenshot of the 3-D canvas: distinct colours, and the share of pixels unlike the corner (background). */
+async function canvasStats(page, name) {
+  const buf = await page.locator('#wing3d canvas.wl-w3-canvas').screenshot({ path: path.join(OUT, name) });
+  const st = await pngStats(page, buf);
+  const fg = await page.evaluate(async (data) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${data}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width;
+    c.height = img.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    // Background: the most common colour.
+    const count = new Map();
+    for (let i = 0; i < d.length; i += 4) {
+      const k = (d[i] << 16) | (d[i + 1] << 8) | d[i + 2];
+      count.set(k, (count.get(k) || 0) + 1);
+    }
+    const bg = [...count.entries()].sort((x, y) => y[1] - x[1])[0][0];
+    const [r0, g0, b0] = [bg >> 16, (bg >> 8) & 255, bg & 255];
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - r0) + Math.abs(d[i + 1] - g0) + Math.abs(d[i + 2] - b0) > 30) n++;
+    return n / (c.width * c.height);
+  }, buf.toString('base64'));
+  return { ...st, foreground: fg, buf };
+}
+
+test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  await page.goto(env.url);
+  await waitRenders(page, 1);
+  const ds = await ready3d(page);
+  assert.equal(ds.state, 'ready', await page.textContent('#wing3d'));
+  assert.equal(ds.backend, 'webgl2');
+  assert.match(await page.textContent('.wl-w3-status'), /WebGL2 · \d+ triangles/);
+  // Paper mode set: the paper's q on the FE shapes, said so.
+  assert.match(await page.textContent('section.wl-wing3d .wl-note'), /Table 4 units, not SI/);
+
+  // A pose mid-stroke, γ_xy colouring: a wing with many colours over a plain background.
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.01));
+  const a = await canvasStats(page, 'wing3d-webgl2-gxy.png');
+  assert.ok(a.foreground > 0.03 && a.foreground < 0.9, `wing covers part of the view: ${JSON.stringify({ ...a, buf: undefined })}`);
+  assert.ok(a.colours > 40, `strain colours and shading: ${a.colours}`);
+  // The legend says what the colours mean, with units.
+  assert.match(await page.textContent('.wl-w3-legend-text'), /gamma_xy|γ_xy|gxy/i);
+
+  // Plain shading has far fewer hues than the strain colouring; the image changes.
+  await page.selectOption('#wing3d ~ .wl-w3-controls select[aria-label="Colour the wing by"]', '0');
+  const plain = await canvasStats(page, 'wing3d-webgl2-plain.png');
+  assert.ok(!plain.buf.equals(a.buf), 'colour mode changes the picture');
+
+  // A quarter flap period later (25 Hz → 0.01 s) the wing has rolled: the picture moves.
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.02));
+  const later = await canvasStats(page, 'wing3d-webgl2-later.png');
+  assert.ok(!later.buf.equals(plain.buf), 'the pose follows time');
+
+  // Play advances time and draws frames; the responses plot carries the 3-D cursor.
+  const f0 = await frames(page);
+  await page.click('.wl-w3-play');
+  await page.waitForFunction((n) => Number(document.querySelector('#wing3d').dataset.frames) >= n + 10, f0, { timeout: 20000 });
+  await page.click('.wl-w3-play');
+  const t = await page.evaluate(() => document.querySelector('wing-lab').wing3d.t);
+  assert.ok(t > 0.02, `time advanced: ${t}`);
+  assert.ok(Math.abs((await page.evaluate(() => document.querySelector('wing-lab').timeCursor)) - t) < 2e-4);
+
+  // Orbit by keyboard on the focused canvas redraws.
+  const f1 = await frames(page);
+  await page.focus('#wing3d canvas');
+  await page.keyboard.press('ArrowLeft');
+  assert.ok((await frames(page)) > f1);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('FE wing mode set: SI responses drive the 3-D wing; numbers come from the shell FE', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url);
+  await page.goto(env.url + '?modes=fe&gamma0=0.2');
+  await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => document.querySelector('wing-lab').fe && Number(document.querySelector('wing-lab').dataset.renders || 0) > 0, null, { timeout: 90000 });
+  const f1 = Number(await page.textContent('wing-lab [data-field="freq-0"]'));
+  // The lab's FE wing is the CLI's default (1 mm elements), calibrated to the paper's 62.5 Hz.
+  assert.ok(Math.abs(f1 - 62.49) < 0.02, `FE f1 = ${f1}`);
+  const feff = Number(await page.textContent('wing-lab [data-field="feff-0"]'));
+  assert.ok(feff < f1 && feff > f1 - 4, `centrifugal softening lowers f_eff: ${feff} vs ${f1}`);
+  // The selected-mode labels name the FE modes.
+  assert.match(await page.textContent('wing-lab select[data-key="mode"] option[value="1"]'), /FE, 6\d\.\d+ Hz/);
+  const ds = await ready3d(page);
+  assert.equal(ds.state, 'ready');
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.5));
+  assert.match(await page.textContent('.wl-w3-status'), /true largest deflection [\d.e+-]+ mm/);
+  assert.match(await page.textContent('wing-lab .wl-strain .wl-note'), /SI/);
+  const st = await canvasStats(page, 'wing3d-fe.png');
+  assert.ok(st.foreground > 0.03 && st.colours > 40, JSON.stringify({ ...st, buf: undefined }));
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('WebGPU (flags from the toolchain notes): same panel on the WebGPU backend, non-blank', async () => {
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: [...ARGS, ...WEBGPU_FLAGS], headless: true });
+  try {
+    const { page, context } = await openPage(browser, env.url);
+    await page.goto(env.url + '?panels=controls,wing3d');
+    const ds = await ready3d(page);
+    assert.equal(ds.state, 'ready', await page.textContent('#wing3d'));
+    assert.equal(ds.backend, 'webgpu');
+    await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.01));
+    await page.waitForTimeout(300);
+    const st = await canvasStats(page, 'wing3d-webgpu.png');
+    assert.ok(st.foreground > 0.03 && st.colours > 40, JSON.stringify({ ...st, buf: undefined }));
+    await context.close();
+  } finally {
+    await browser.close();
+  }
+});
+
+test('no WebGPU and no WebGL2: the panel says why and the rest of the lab works', async () => {
+  const { page, context } = await openPage(env.browser, env.url);
+  await page.addInitScript(() => {
+    Object.defineProperty(Navigator.prototype, 'gpu', { get: () => undefined, configurable: true });
+    const orig = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (kind, ...rest) {
+      if (/webgl|webgpu/.test(String(kind))) return null;
+      return orig.call(this, kind, ...rest);
+    };
+  });
+  await page.goto(env.url);
+  await waitRenders(page, 1);
+  const ds = await ready3d(page);
+  assert.equal(ds.state, 'unavailable');
+  assert.match(await page.textContent('#wing3d'), /3-D view unavailable: .+\. Everything else in the lab works without it\./);
+  // The live panels are unaffected: numbers, and a slider recomputes.
+  assert.equal(await page.textContent('wing-lab [data-field="feff-0"]'), '60.3064');
+  const before = Number(await page.evaluate(() => document.querySelector('wing-lab').dataset.renders));
+  await page.focus('wing-lab input[type=range][data-key="gamma0"]');
+  await page.keyboard.press('ArrowLeft');
+  await waitRenders(page, before + 1);
+  assert.notEqual(await page.textContent('wing-lab [data-field="coriolis-0"]'), '53.79');
+  await context.close();
+});
