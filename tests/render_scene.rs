@@ -235,8 +235,17 @@ fn flat_arrays_round_trip_and_errors() {
     let nodes: Vec<f64> = m.nodes.iter().flatten().map(|&v| v as f64).collect();
     let tris: Vec<u32> = m.triangles.iter().flatten().copied().collect();
     let shapes: Vec<f64> = m.shapes.iter().flatten().map(|&v| v as f64).collect();
-    let strains: Vec<f64> = m.strains.iter().flatten().flatten().map(|&v| v as f64).collect();
-    assert_eq!(WingMesh::from_flat(&nodes, &tris, &shapes, &strains).unwrap(), m);
+    let strains: Vec<f64> = m
+        .strains
+        .iter()
+        .flatten()
+        .flatten()
+        .map(|&v| v as f64)
+        .collect();
+    assert_eq!(
+        WingMesh::from_flat(&nodes, &tris, &shapes, &strains).unwrap(),
+        m
+    );
     // No strains: zero strain fields, one per mode.
     let plain = WingMesh::from_flat(&nodes, &tris, &shapes, &[]).unwrap();
     assert_eq!(plain.strains.len(), m.shapes.len());
@@ -346,4 +355,30 @@ fn frame_at_time_uses_the_kinematics() {
     assert_eq!((f.alpha, f.beta, f.gamma), (s.alpha, s.beta, s.gamma));
     assert_eq!(f.q, vec![1e-5]);
     assert_eq!(f.exaggeration, 1.0);
+}
+
+/// Guards the WebGPU canvas background: on a plain-UNORM target the clear colour is
+/// sRGB-encoded by hand (as the shaders encode their output), on sRGB targets left linear.
+#[test]
+fn background_is_encoded_for_unorm_targets() {
+    use wingbeat::render::gpu::{background_for, BACKGROUND};
+    let srgb = background_for(wgpu::TextureFormat::Rgba8UnormSrgb);
+    assert_eq!(srgb, BACKGROUND);
+    let unorm = background_for(wgpu::TextureFormat::Bgra8Unorm);
+    let dec = |c: f64| {
+        if c <= 0.04045 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    for (e, l) in [
+        (unorm.r, BACKGROUND.r),
+        (unorm.g, BACKGROUND.g),
+        (unorm.b, BACKGROUND.b),
+    ] {
+        assert!(e > 5.0 * l, "encoded {e} vs linear {l}");
+        assert!((dec(e) - l).abs() < 1e-12);
+    }
+    assert_eq!(unorm.a, 1.0);
 }

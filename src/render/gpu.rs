@@ -29,6 +29,28 @@ pub const BACKGROUND: wgpu::Color = wgpu::Color {
     a: 1.0,
 };
 
+/// [`BACKGROUND`] as the clear value for a target of `format`: unchanged on sRGB targets (the
+/// hardware encodes), sRGB-encoded by hand on plain-UNORM ones (WebGPU's `bgra8unorm` canvas),
+/// where the shaders also encode, so both backends show the same background.
+pub fn background_for(format: wgpu::TextureFormat) -> wgpu::Color {
+    if format.is_srgb() {
+        return BACKGROUND;
+    }
+    let enc = |c: f64| {
+        if c <= 0.003_130_8 {
+            12.92 * c
+        } else {
+            1.055 * c.powf(1.0 / 2.4) - 0.055
+        }
+    };
+    wgpu::Color {
+        r: enc(BACKGROUND.r),
+        g: enc(BACKGROUND.g),
+        b: enc(BACKGROUND.b),
+        a: BACKGROUND.a,
+    }
+}
+
 /// The per-frame uniform block, `std140`-compatible (only `mat4` and `vec4` members).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Pod, Zeroable)]
@@ -556,7 +578,7 @@ impl Renderer {
                     depth_slice: None,
                     resolve_target: None,
                     ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(BACKGROUND),
+                        load: wgpu::LoadOp::Clear(background_for(self.format)),
                         store: wgpu::StoreOp::Store,
                     },
                 })],
