@@ -97,6 +97,7 @@ try {
   // 3-D frame time: a 1280×720 canvas, the synthetic wing on a 100 × 51 grid (10 149 triangles).
   result.wing3d = await page.evaluate(async () => {
     const wb = await import('./pkg/wingbeat.js');
+    if (typeof wb.WingView !== 'function') return 'this build has no renderer';
     const c = document.createElement('canvas');
     c.width = 1280;
     c.height = 720;
@@ -143,13 +144,19 @@ try {
 
   if (process.argv.includes('--screenshot')) {
     await page.click('wing-lab .wl-preset');
-    await page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready', null, { timeout: 90000 });
-    await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.013));
     await page.waitForTimeout(300);
     await page.mouse.move(1000, 200);
     await page.waitForTimeout(100);
     await page.screenshot({ path: path.join(ROOT, 'docs', 'lab.png') });
-    result.screenshot = 'docs/lab.png';
+    // The 3-D panel (it starts when scrolled into sight), FE wing mode set, mid-run.
+    await page.selectOption('wing-lab select[data-key="modes"]', 'fe');
+    await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
+    await page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready' && document.querySelector('wing-lab').fe, null, { timeout: 90000 });
+    await page.waitForTimeout(500);
+    await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.5125));
+    await page.waitForTimeout(300);
+    await page.locator('section.wl-wing3d').screenshot({ path: path.join(ROOT, 'docs', 'lab_wing3d.png') });
+    result.screenshot = ['docs/lab.png', 'docs/lab_wing3d.png'];
   }
   result.console_problems = problems;
   await context.close();

@@ -84,7 +84,10 @@ export class Wing3D {
     });
     this.timeText = el('span', { class: 'wl-w3-time', 'aria-live': 'off' });
     this.exag = el('input', { type: 'range', id: `${uid}-w3-exag`, min: 0, max: 3, step: 0.05, value: 1, 'aria-label': 'Deflection exaggeration, as a power of ten' });
-    this.exag.addEventListener('input', () => this.draw());
+    this.exag.addEventListener('input', () => {
+      this.exagTouched = true;
+      this.draw();
+    });
     this.exagText = el('span', { class: 'wl-w3-exag' });
     this.colour = el('select', { id: `${uid}-w3-colour`, 'aria-label': 'Colour the wing by' });
     for (const [v, t] of COLOURS) this.colour.append(el('option', { value: v, text: t }));
@@ -147,6 +150,8 @@ export class Wing3D {
       this.unavailable(e && e.message ? e.message : String(e));
       return;
     }
+    // Back the camera off a little so the whole stroke (α up to ±0.8 rad) stays in view.
+    this.view.zoom(1.35);
     this.box.dataset.state = 'ready';
     this.box.dataset.backend = this.view.backend();
     this.observer = new ResizeObserver(() => {
@@ -296,6 +301,10 @@ export class Wing3D {
       return;
     }
     const q = new Float64Array(sim.modes.map((m) => m.q.total[i]));
+    const fe = this.lab.state.modes === 'fe';
+    // Until the user moves it: true scale for the FE wing (its SI deflection is millimetres);
+    // ×10 for the paper table, whose q are about ten times smaller than SI (Table 4).
+    if (!this.exagTouched) this.exag.value = fe ? '0' : '1';
     const exag = 10 ** Number(this.exag.value);
     let legend;
     try {
@@ -308,7 +317,6 @@ export class Wing3D {
     this.frames += 1;
     this.box.dataset.frames = String(this.frames);
     this.describeTime();
-    const fe = this.lab.state.modes === 'fe';
     const defl = legend.max_deflection_m;
     this.exagText.textContent = `×${fmtNum(exag)}`;
     this.status.textContent =
