@@ -52,8 +52,8 @@ export async function renders(page, sel = 'wing-lab') {
 }
 
 /**
- * Counts distinct colours and non-white pixels of a PNG screenshot by decoding it in the page
- * (no image library needed on the node side).
+ * Counts distinct colours, non-white pixels and foreground pixels (unlike the most common
+ * colour) of a PNG screenshot by decoding it in the page (no image library on the node side).
  */
 export async function pngStats(page, buf) {
   const b64 = buf.toString('base64');
@@ -68,12 +68,22 @@ export async function pngStats(page, buf) {
     ctx.drawImage(img, 0, 0);
     const d = ctx.getImageData(0, 0, c.width, c.height).data;
     const colours = new Set();
+    const count = new Map();
     let nonWhite = 0;
     for (let i = 0; i < d.length; i += 4) {
       const r = d[i], g = d[i + 1], b = d[i + 2];
       if (r < 245 || g < 245 || b < 245) nonWhite++;
-      if (colours.size < 5000) colours.add((r << 16) | (g << 8) | b);
+      const k = (r << 16) | (g << 8) | b;
+      if (colours.size < 5000) colours.add(k);
+      count.set(k, (count.get(k) || 0) + 1);
     }
-    return { width: c.width, height: c.height, nonWhite, fraction: nonWhite / (c.width * c.height), colours: colours.size };
+    // Foreground: pixels clearly unlike the most common colour (the background).
+    const bg = [...count.entries()].sort((x, y) => y[1] - x[1])[0][0];
+    let fg = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.abs(d[i] - (bg >> 16)) + Math.abs(d[i + 1] - ((bg >> 8) & 255)) + Math.abs(d[i + 2] - (bg & 255)) > 30) fg++;
+    }
+    const n = c.width * c.height;
+    return { width: c.width, height: c.height, nonWhite, fraction: nonWhite / n, colours: colours.size, foreground: fg / n };
   }, b64);
 }
