@@ -283,6 +283,7 @@ export class Wing3D {
     const fd = a ? a.sim.flap_freq_hz : 25;
     const s = Number(this.slow.value);
     this.timeText.textContent = `t = ${this.t.toFixed(4)} s · flap ${fmtNum(fd)} Hz shown at ${fmtNum(fd * s)} Hz`;
+    this.time.setAttribute('aria-valuetext', `${this.t.toFixed(4)} s`);
   }
 
   /** Draws the frame at this.t. Cheap enough for every animation frame. */
@@ -319,6 +320,7 @@ export class Wing3D {
     this.describeTime();
     const defl = legend.max_deflection_m;
     this.exagText.textContent = `×${fmtNum(exag)}`;
+    this.exag.setAttribute('aria-valuetext', `deflection drawn ${fmtNum(exag)} times true scale`);
     this.status.textContent =
       `${this.view.backend() === 'webgpu' ? 'WebGPU' : 'WebGL2'} · ${this.view.triangles()} triangles · ` +
       `α ${ang[0].toFixed(3)}, β ${ang[1].toFixed(3)}, γ ${ang[2].toFixed(3)} rad · ` +

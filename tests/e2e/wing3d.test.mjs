@@ -63,6 +63,7 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   // A quarter flap period later (25 Hz → 0.01 s) the wing has rolled: the picture moves.
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.02));
   const later = await canvasStats(page, 'wing3d-webgl2-later.png');
+  assert.equal(await page.getAttribute('section.wl-wing3d input[aria-label^="Simulated time"]', 'aria-valuetext'), '0.0200 s');
   assert.ok(!later.buf.equals(plain.buf), 'the pose follows time');
 
   // Play advances time and draws frames; the responses plot carries the 3-D cursor.
