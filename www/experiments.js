@@ -15,14 +15,22 @@
 
 import { defaults, toQuery } from './state.js';
 
-/** Compact number formatting (like plot.js's fmt, without its uPlot import). */
+/**
+ * Compact number formatting in the lab's rich-label markup (www/format.js): exponents as
+ * ×10^{k}, a real minus sign. The sentences below are markup too (f_{eff}, γ_0, ω_1), rendered
+ * with sub/superscripts by the view and as plain text by `plain`.
+ */
 export function fmt(v, digits = 4) {
   if (v == null || Number.isNaN(v)) return '—';
   if (!Number.isFinite(v)) return v > 0 ? '∞' : '−∞';
   if (v === 0) return '0';
   const a = Math.abs(v);
-  if (a >= 1e5 || a < 1e-3) return v.toExponential(digits - 1).replace('e', '×10^').replace('^+', '^');
-  return Number(v.toPrecision(digits)).toString();
+  const minus = (t) => t.replace(/-/g, '−');
+  if (a >= 1e5 || a < 1e-3) {
+    const [m, e] = v.toExponential(digits - 1).split('e');
+    return minus(`${m}×10^{${Number(e)}}`);
+  }
+  return minus(Number(v.toPrecision(digits)).toString());
 }
 
 const peakAbs = (x) => {
@@ -144,8 +152,8 @@ function coriolisBeat(a, k) {
 }
 
 function beatLines(b, duration) {
-  return `f_eff = ${fmt(b.feff, 4)} Hz and the Coriolis force drives at 2 f_d = ${fmt(2 * b.fd, 4)} Hz, so the envelope should repeat every ` +
-    `T_beat = 1/|${fmt(b.feff, 4)} − ${fmt(2 * b.fd, 4)}| = ${fmt(b.predicted, 3)} s (${fmt(duration / b.predicted, 3)} beats in the ${fmt(duration, 3)} s run).`;
+  return `f_{eff} = ${fmt(b.feff, 4)} Hz and the Coriolis force drives at 2 f_d = ${fmt(2 * b.fd, 4)} Hz, so the envelope should repeat every ` +
+    `T_{beat} = 1/|${fmt(b.feff, 4)} − ${fmt(2 * b.fd, 4)}| = ${fmt(b.predicted, 3)} s (${fmt(duration / b.predicted, 3)} beats in the ${fmt(duration, 3)} s run).`;
 }
 
 function beatCheck(b, tol) {
@@ -197,7 +205,7 @@ export const EXPERIMENTS = [
       const shares = a.sim.modes.map((m) => m.contribution_percent.coriolis);
       const c = a.sim.modes[k].contribution_percent;
       const lines = [
-        `The Coriolis force is −2 γ̇ Ω·a_k: with ${gamma0 == null ? 'no yaw' : `γ0 = ${fmt(gamma0, 3)} rad`} the yaw rate γ̇ is zero at every instant, so the force, its response and its envelope are exactly zero — measured max |q_Coriolis| = ${peaks.map((p) => fmt(p, 3)).join(' and ')} (modes ${peaks.map((_, j) => j + 1).join(', ')}), Coriolis share ${shares.map((s) => fmt(s, 3)).join(' / ')} %.`,
+        `The Coriolis force is −2 γ̇ Ω·a_k: with ${gamma0 == null ? 'no yaw' : `γ_0 = ${fmt(gamma0, 3)} rad`} the yaw rate γ̇ is zero at every instant, so the force, its response and its envelope are exactly zero — measured max |q_{Coriolis}| = ${peaks.map((p) => fmt(p, 3)).join(' and ')} (modes ${peaks.map((_, j) => j + 1).join(', ')}), Coriolis share ${shares.map((s) => fmt(s, 3)).join(' / ')} %.`,
         `What is left is the Euler (${fmt(c.euler, 3)} %) and centrifugal (${fmt(c.centrifugal, 3)} %) response of ${modeName(a, k)}: no Coriolis beat, so nothing here could tell the insect that its body turned.`,
       ];
       const checks = [
@@ -229,7 +237,7 @@ export const EXPERIMENTS = [
       const ratio = late.modulation_index > 0 ? early.modulation_index / late.modulation_index : Infinity;
       const decay = Math.exp(-0.7 * dur / tau);
       const lines = [
-        `With ζ = ${fmt(zeta, 3)} the free vibration at f_eff = ${fmt(m.floquet.effective_freq_hz, 4)} Hz decays as e^(−ζω_${k + 1}t), time constant 1/(ζ·2π·${fmt(m.freq_hz, 4)} Hz) = ${fmt(tau, 3)} s; by the last fifth of the ${fmt(dur, 3)} s run it is down to ${fmt(decay, 2)} of its start, so the beat should vanish and only the forced vibration at 2 f_d = ${fmt(2 * fd, 4)} Hz stay.`,
+        `With ζ = ${fmt(zeta, 3)} the free vibration at f_{eff} = ${fmt(m.floquet.effective_freq_hz, 4)} Hz decays as exp(−ζ ω_${k + 1} t), time constant 1/(ζ·2π·${fmt(m.freq_hz, 4)} Hz) = ${fmt(tau, 3)} s; by the last fifth of the ${fmt(dur, 3)} s run it is down to ${fmt(decay, 2)} of its start, so the beat should vanish and only the forced vibration at 2 f_d = ${fmt(2 * fd, 4)} Hz stay.`,
         `Envelope modulation index (max − min)/(max + min): ${fmt(early.modulation_index, 3)} in the first tenth, ${fmt(late.modulation_index, 2)} in the last fifth — ${Number.isFinite(ratio) ? fmt(ratio, 3) + '×' : 'infinitely'} lower.`,
       ];
       const checks = [
@@ -246,14 +254,14 @@ export const EXPERIMENTS = [
     params: { gamma0: 0.1 },
     mode: 0,
     study: { kind: 'sweep', opts: { param: 'gamma0', from: 0, to: 0.3, points: 7 } },
-    look: 'Compare the Coriolis response with the paper case (γ0 = 0.2 rad): half the yaw, half the Coriolis response. The sweep study (Studies → Contribution vs parameter) draws the whole curve.',
+    look: 'Compare the Coriolis response with the paper case (γ_0 = 0.2 rad): half the yaw, half the Coriolis response. The sweep study (Studies → Contribution vs parameter) draws the whole curve.',
     predict(a, ctx = {}) {
       const k = ctx.mode ?? 0;
       const m = a.sim.modes[k];
       const g = ctx.state ? ctx.state.gamma0 : null;
       const peak = peakAbs(m.q.coriolis);
       const lines = [
-        `The Coriolis force −2 γ̇ Ω·a_k is proportional to γ0, and so is its response (here peak |q_C| = ${fmt(peak, 3)}${g ? `, i.e. ${fmt(peak / g, 4)} per rad of γ0` : ''}); the Euler and centrifugal forces depend on γ only through small terms. So the Coriolis share should rise with γ0: ${fmt(m.contribution_percent.coriolis, 3)} % at γ0 = ${g == null ? '?' : fmt(g, 3)} rad for ${modeName(a, k)}.`,
+        `The Coriolis force −2 γ̇ Ω·a_k is proportional to γ_0, and so is its response (here peak |q_{C}| = ${fmt(peak, 3)}${g ? `, i.e. ${fmt(peak / g, 4)} per rad of γ_0` : ''}); the Euler and centrifugal forces depend on γ only through small terms. So the Coriolis share should rise with γ_0: ${fmt(m.contribution_percent.coriolis, 3)} % at γ_0 = ${g == null ? '?' : fmt(g, 3)} rad for ${modeName(a, k)}.`,
       ];
       const checks = [];
       const s = ctx.study;
@@ -261,18 +269,18 @@ export const EXPERIMENTS = [
         const sm = s.modes[k];
         const cor = Array.from(sm.coriolis);
         const vals = Array.from(s.values);
-        lines.push(`The sweep over γ0 = ${fmt(vals[0], 3)} … ${fmt(vals[vals.length - 1], 3)} rad gives the Coriolis share ${cor.map((v) => fmt(v, 3)).join(', ')} %.`);
+        lines.push(`The sweep over γ_0 = ${fmt(vals[0], 3)} … ${fmt(vals[vals.length - 1], 3)} rad gives the Coriolis share ${cor.map((v) => fmt(v, 3)).join(', ')} %.`);
         let rising = true;
         for (let i = 1; i < cor.length; i++) if (!(cor[i] >= cor[i - 1] - 1e-9)) rising = false;
-        checks.push({ id: 'share-rises', label: `Coriolis share rises with γ0 over the sweep (${fmt(cor[0], 3)} → ${fmt(cor[cor.length - 1], 3)} %)`, holds: rising && cor[cor.length - 1] > cor[0], value: cor[cor.length - 1] - cor[0], expected: 0 });
+        checks.push({ id: 'share-rises', label: `Coriolis share rises with γ_0 over the sweep (${fmt(cor[0], 3)} → ${fmt(cor[cor.length - 1], 3)} %)`, holds: rising && cor[cor.length - 1] > cor[0], value: cor[cor.length - 1] - cor[0], expected: 0 });
         if (g != null) {
           const j = vals.findIndex((v) => Math.abs(v - g) < 1e-9);
           if (j >= 0) {
-            checks.push({ id: 'share-matches', label: `Sweep at γ0 = ${fmt(g, 3)} rad equals this run (${fmt(cor[j], 6)} vs ${fmt(m.contribution_percent.coriolis, 6)} %)`, holds: Math.abs(cor[j] - m.contribution_percent.coriolis) < 1e-6, value: cor[j], expected: m.contribution_percent.coriolis });
+            checks.push({ id: 'share-matches', label: `Sweep at γ_0 = ${fmt(g, 3)} rad equals this run (${fmt(cor[j], 6)} vs ${fmt(m.contribution_percent.coriolis, 6)} %)`, holds: Math.abs(cor[j] - m.contribution_percent.coriolis) < 1e-6, value: cor[j], expected: m.contribution_percent.coriolis });
           }
         }
       } else {
-        lines.push('The γ0 sweep is computing in the worker…');
+        lines.push('The γ_0 sweep is computing in the worker…');
       }
       return { lines, checks, values: { coriolis_share: m.contribution_percent.coriolis, coriolis_peak: peak } };
     },
@@ -284,18 +292,18 @@ export const EXPERIMENTS = [
     params: {},
     mode: 0,
     study: { kind: 'icmap', opts: { n_q: 41, n_qdot: 41, attribution: 'forced' } },
-    look: 'Initial conditions only add a free vibration at f_eff; the forced responses stay the same. The initial-condition map (Studies → Initial-condition map) shows how the Coriolis share moves with them.',
+    look: 'Initial conditions only add a free vibration at f_{eff}; the forced responses stay the same. The initial-condition map (Studies → Initial-condition map) shows how the Coriolis share moves with them.',
     predict(a, ctx = {}) {
       const k = ctx.mode ?? 0;
       const m = a.sim.modes[k];
       const rest = m.contribution_percent.coriolis;
       const lines = [
-        `Starting from rest, the Coriolis share of ${modeName(a, k)} is ${fmt(rest, 4)} %. A start (q0, q̇0) adds a free vibration at f_eff = ${fmt(m.floquet.effective_freq_hz, 4)} Hz to the total but leaves the forced Coriolis response unchanged, so the share moves with the initial conditions.`,
+        `Starting from rest, the Coriolis share of ${modeName(a, k)} is ${fmt(rest, 4)} %. A start (q_0, q̇_0) adds a free vibration at f_{eff} = ${fmt(m.floquet.effective_freq_hz, 4)} Hz to the total but leaves the forced Coriolis response unchanged, so the share moves with the initial conditions.`,
       ];
       const checks = [];
       const r = ctx.study;
       if (r && r.coriolis_percent) {
-        lines.push(`Over ${r.n_q}×${r.n_qdot} starts spanning the forced response’s own range (q0 ${fmt(r.q0[0], 3)} … ${fmt(r.q0[r.q0.length - 1], 3)}, “${r.attribution}” attribution) the share runs from ${fmt(r.min_percent, 3)} % to ${fmt(r.max_percent, 3)} %; ${fmt(100 * r.fraction_above_60, 3)} % of the starts give more than 60 % (the paper: most of them).`);
+        lines.push(`Over ${r.n_q}×${r.n_qdot} starts spanning the forced response’s own range (q_0 ${fmt(r.q0[0], 3)} … ${fmt(r.q0[r.q0.length - 1], 3)}, “${r.attribution}” attribution) the share runs from ${fmt(r.min_percent, 3)} % to ${fmt(r.max_percent, 3)} %; ${fmt(100 * r.fraction_above_60, 3)} % of the starts give more than 60 % (the paper: most of them).`);
         checks.push({ id: 'rest-inside', label: `The share from rest (${fmt(rest, 4)} %) lies inside the map’s range ${fmt(r.min_percent, 3)}–${fmt(r.max_percent, 3)} %`, holds: rest >= r.min_percent - 1e-9 && rest <= r.max_percent + 1e-9, value: rest, expected: [r.min_percent, r.max_percent] });
       } else {
         lines.push('The initial-condition map is computing in the worker…');
@@ -318,8 +326,8 @@ export const EXPERIMENTS = [
       const dur = a.sim.t[a.sim.t.length - 1];
       const n = Math.max(1, Math.round(b.feff / b.fd));
       const lines = [
-        `f_d = ${fmt(b.fd, 4)} Hz is close to f_eff/2 (f_${k + 1}/2 = ${fmt(m.freq_hz / 2, 4)} Hz unsoftened): the Coriolis force’s line at 2 f_d sits ${fmt(Math.abs(b.feff - 2 * b.fd), 3)} Hz from the effective natural frequency. ` + beatLines(b, dur),
-        `The nearer n·f_d comes to f_eff, the longer and larger the beat; at f_eff = n·f_d exactly the response would grow without bound (here n = ${n}: ${n}·f_d = ${fmt(n * b.fd, 4)} Hz). Max |λ| = ${fmt(m.floquet.max_modulus, 6)}: ${m.floquet.stable ? 'still stable' : 'unstable'}.`,
+        `f_d = ${fmt(b.fd, 4)} Hz is close to f_{eff}/2 (f_${k + 1}/2 = ${fmt(m.freq_hz / 2, 4)} Hz unsoftened): the Coriolis force’s line at 2 f_d sits ${fmt(Math.abs(b.feff - 2 * b.fd), 3)} Hz from the effective natural frequency. ` + beatLines(b, dur),
+        `The nearer n·f_d comes to f_{eff}, the longer and larger the beat; at f_{eff} = n·f_d exactly the response would grow without bound (here n = ${n}: ${n}·f_d = ${fmt(n * b.fd, 4)} Hz). Max |λ| = ${fmt(m.floquet.max_modulus, 6)}: ${m.floquet.stable ? 'still stable' : 'unstable'}.`,
       ];
       const checks = [beatCheck(b, 0.03), { id: 'stable', label: `Still Floquet-stable (max |λ| = ${fmt(m.floquet.max_modulus, 8)})`, holds: m.floquet.max_modulus <= 1 + 1e-9, value: m.floquet.max_modulus, expected: 1 }];
       const r = ctx.study;
@@ -331,10 +339,10 @@ export const EXPERIMENTS = [
     id: 'instability',
     title: 'A parametric instability',
     figure: 'resonance map',
-    params: { flap_hz: 41.5, mode: '2' },
-    mode: 1,
+    params: { alpha0: 0.87, flap_hz: 29.5, duration: 4 },
+    mode: 0,
     study: { kind: 'resonance', opts: { from_hz: 5, to_hz: 60, points: 221 } },
-    look: 'Look at the total response: instead of beating it grows flap after flap. The stiffness ω_k² − (α̇²cos²β + β̇²) pulses at 2 f_d, and at this flap frequency the pulsing pumps energy into the mode (parametric resonance, like a child pumping a swing).',
+    look: 'Look at the total response: instead of beating, it grows flap after flap (0.5 Hz and a little more roll away from the resonance experiment). The stiffness ω_k² − (α̇²cos²β + β̇²) pulses at 2 f_d, and at this flap frequency the pulsing pumps energy into the mode (parametric resonance, like a child pumping a swing).',
     predict(a, ctx = {}) {
       const k = leastStableMode(a);
       const m = a.sim.modes[k];
@@ -346,7 +354,7 @@ export const EXPERIMENTS = [
       const ratio = f.effective_freq_hz / fd;
       const lines = [
         `Floquet, ${modeName(a, k)}: max |λ| = ${fmt(f.max_modulus, 6)} per flap period ${f.max_modulus > 1 ? '> 1' : '≤ 1'}, so a disturbance is multiplied by ${fmt(f.max_modulus, 4)} every 1/f_d = ${fmt(1000 / fd, 4)} ms: growth rate σ = f_d·ln|λ| = ${fmt(sigma, 4)} 1/s, ×${fmt(Math.exp(sigma * dur), 3)} over the ${fmt(dur, 3)} s run.`,
-        `Here f_eff/f_d = ${fmt(ratio, 4)}: the mode sits in an instability tongue near f_eff = ${Math.round(ratio)}·f_d. Measured from the peaks of q_total over the second half of the run: σ = ${fmt(measured, 4)} 1/s.`,
+        `Here f_{eff}/f_d = ${fmt(ratio, 4)}: the mode sits in an instability tongue near f_{eff} = ${Math.round(ratio)}·f_d. Measured from the peaks of q_{total} over the second half of the run: σ = ${fmt(measured, 4)} 1/s.`,
       ];
       const checks = [
         { id: 'unstable', label: `max |λ| = ${fmt(f.max_modulus, 8)} > 1 (unstable)`, holds: f.max_modulus > 1 && !f.stable, value: f.max_modulus, expected: 1 },
@@ -410,16 +418,19 @@ export function bands(x, flag) {
 }
 
 /**
- * Flap frequencies where f_eff of a mode crosses n·f_d (n = 1..nMax): the resonances
- * (linear interpolation between grid points; NaN values skipped).
+ * Flap frequencies where f_{eff} of a mode crosses n·f_d (n = 1..nMax): the resonances
+ * (linear interpolation between grid points; NaN values skipped, and with `stable` given, only
+ * between two stable points).
  */
-export function resonanceCrossings(fd, feff, nMax = 4) {
+export function resonanceCrossings(fd, feff, nMax = 4, stable = null) {
   const out = [];
+  const ok = (i) => Number.isFinite(feff[i]) && (!stable || stable[i]);
   for (let n = 1; n <= nMax; n++) {
     for (let i = 1; i < fd.length; i++) {
+      // Inside an unstable band f_eff locks onto n·f_d: those are bands, not crossings.
+      if (!ok(i - 1) || !ok(i)) continue;
       const g0 = feff[i - 1] - n * fd[i - 1];
       const g1 = feff[i] - n * fd[i];
-      if (!Number.isFinite(g0) || !Number.isFinite(g1)) continue;
       const last = i === fd.length - 1 && g1 === 0;
       if (g0 === 0 || g0 * g1 < 0 || last) {
         const t = g0 === 0 ? 0 : last ? 1 : g0 / (g0 - g1);
@@ -433,7 +444,7 @@ export function resonanceCrossings(fd, feff, nMax = 4) {
 /**
  * A plain-text summary of a resonanceMap result (1-D: no alpha0 axis, or the row of a given
  * alpha0 index): per mode, the unstable bands of f_d, the largest |multiplier| and where, and
- * the flap frequencies where f_eff = n·f_d. Returns { modes: [...], sentence }.
+ * the flap frequencies where f_{eff} = n·f_d. Returns { modes: [...], sentence }.
  */
 export function resonanceSummary(r, row = 0) {
   const nx = r.flap_hz.length;
@@ -452,7 +463,7 @@ export function resonanceSummary(r, row = 0) {
       unstable,
       max_modulus: mod[im],
       max_at_hz: fd[im],
-      resonances: resonanceCrossings(fd, feff),
+      resonances: resonanceCrossings(fd, feff, 4, stable.map(Boolean)),
     };
   });
   const parts = modes.map((m) => {
@@ -460,8 +471,8 @@ export function resonanceSummary(r, row = 0) {
       ? `unstable for f_d in ${m.unstable.map(([a, b]) => (a === b ? `${fmt(a, 4)}` : `${fmt(a, 4)}–${fmt(b, 4)}`)).join(', ')} Hz (largest |λ| ${fmt(m.max_modulus, 5)} at ${fmt(m.max_at_hz, 4)} Hz)`
       : `stable over the whole range (largest |λ| ${fmt(m.max_modulus, 6)})`;
     const res = m.resonances.length
-      ? `; f_eff = n·f_d at ${m.resonances.map((c) => `${fmt(c.flap_hz, 4)} Hz (n = ${c.n})`).join(', ')}`
-      : '; f_eff meets no n·f_d line (n ≤ 4)';
+      ? `; f_{eff} = n·f_d at ${m.resonances.map((c) => `${fmt(c.flap_hz, 4)} Hz (n = ${c.n})`).join(', ')}`
+      : '; f_{eff} meets no n·f_d line (n ≤ 4)';
     return `mode ${m.mode} (f = ${fmt(m.freq_hz, 4)} Hz): ${u}${res}`;
   });
   const range = `f_d = ${fmt(fd[0], 4)}–${fmt(fd[nx - 1], 4)} Hz`;

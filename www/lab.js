@@ -50,12 +50,14 @@ import * as strain from './views/strain.js';
 import * as studies from './views/studies.js';
 import * as wing3d from './views/wing3d.js';
 import * as report from './views/report.js';
+import * as experiments from './views/experiments.js';
+import * as resonance from './views/resonance.js';
 
 export { loadWasm } from './engine.js';
 
-const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report };
+const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance };
 /** DOM (= tab) order of the panels; style.css places them so that it is also the visual order. */
-export const LAYOUT = ['wing3d', 'controls', 'time', 'spectrum', 'numbers', 'strain', 'studies', 'report'];
+export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'spectrum', 'numbers', 'strain', 'studies', 'resonance', 'report'];
 const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key)];
 const FIG_W = 900, FIG_H = 560;
 let instances = 0;
@@ -114,6 +116,7 @@ export class WingLab extends HTMLElement {
         if (this.hasAttribute('sync-url')) this.scheduleUrl();
       }),
       this.store.subscribe(['panels'], () => this.applyPanels()),
+      this.store.subscribe(['exp'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
     );
     this.engine
       .load()

@@ -13,7 +13,7 @@ export const NUMERIC = [
   { key: 'alpha_phase', label: 'Phase of α', sym: 'φ_α', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
   { key: 'beta_phase', label: 'Phase of β', sym: 'φ_β', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
   { key: 'gamma_phase', label: 'Phase of γ', sym: 'φ_γ', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
-  { key: 'duration', label: 'Duration', sym: 'T_{sim}', unit: 's', min: 0.2, max: 4, step: 0.1, def: 2 },
+  { key: 'duration', label: 'Duration', sym: 'T_{sim}', unit: 's', min: 0.2, max: 10, step: 0.1, def: 2 },
 ];
 
 /** Enumerated parameters. `disabled` choices are shown but not selectable (and rejected from URLs). */
@@ -24,7 +24,10 @@ export const ENUMS = [
 ];
 
 /** Panels that can be shown; `panels=` picks a subset (comma-separated). */
-export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report'];
+export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance'];
+
+/** Guided experiments (www/experiments.js); `exp=<id>` opens one. */
+export const EXPERIMENT_IDS = ['beat', 'no-yaw', 'damping', 'yaw', 'ic', 'resonance', 'instability'];
 
 /**
  * The lab's FE wing (wasm `feModes` input): the default synthetic outline, camber, clamp,
@@ -44,6 +47,7 @@ export function defaults() {
   for (const p of NUMERIC) s[p.key] = p.def;
   for (const e of ENUMS) s[e.key] = e.def;
   s.panels = PANELS.slice();
+  s.exp = '';
   return s;
 }
 
@@ -77,6 +81,7 @@ export function expectation(key) {
   if (e) return `one of ${e.choices.filter((c) => !(e.disabled || []).includes(c)).join(', ')}`;
   if (key === 'panels') return `a comma-separated list of ${PANELS.join(', ')}`;
   if (key === 'embed') return '0 or 1';
+  if (key === 'exp') return `one of ${EXPERIMENT_IDS.join(', ')}`;
   return 'a known parameter';
 }
 
@@ -105,6 +110,7 @@ export function parsePairs(pairs, ignore = []) {
     else if (e) v = parseEnum(e, raw);
     else if (key === 'panels') v = parsePanels(raw);
     else if (key === 'embed') v = raw === '0' || raw === '1' ? raw === '1' : null;
+    else if (key === 'exp') v = EXPERIMENT_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
     else {
       rejected.push({ key: short, why: 'unknown parameter' });
       continue;
@@ -132,6 +138,7 @@ export function toQuery(state, extra = {}) {
   for (const p of NUMERIC) q.set(p.key, String(state[p.key]));
   for (const e of ENUMS) q.set(e.key, state[e.key]);
   if (state.panels && state.panels.length !== PANELS.length) q.set('panels', state.panels.join(','));
+  if (state.exp) q.set('exp', state.exp);
   for (const [k, v] of Object.entries(extra)) q.set(k, v);
   return q.toString();
 }
@@ -170,6 +177,7 @@ export function paramsOf(s) {
   for (const p of NUMERIC) out[p.key] = s[p.key];
   for (const e of ENUMS) out[e.key] = s[e.key];
   out.panels = s.panels;
+  out.exp = s.exp || '';
   return out;
 }
 

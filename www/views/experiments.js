@@ -1,155 +1,145 @@
 // Guided experiments panel: one link per experiment (a shareable URL: every parameter plus
 // exp=<id>), and for the active one what to look at and what the model predicts, recomputed
-// from each new analysis (www/experiments.js), with the numeric checks shown as ✓ / ✗.
-//
-// host:
-//   state() → the lab state;  analysis() → the latest wasm `analyze` result (or null)
-//   apply(state) → sets the lab state (recomputes, rewrites the URL)
-//   config() → the current SimConfig
-//   job(kind, payload, onProgress) → { promise, cancel }   the engine's worker jobs
-//   href(query) → an absolute URL for a query string (the page's own, or index.html's)
-//   show?(panel)                                         scrolls a panel into view
-// Returns { box, select(id, {apply}), refresh(), active() }.
+// from every new analysis by www/experiments.js, with its numeric checks shown as ✓ / ✗.
+// Experiments that need a study (γ_0 sweep, initial-condition map) run it through the engine's
+// worker; the prediction fills in when it arrives. Reads the store; writes only `exp` and the
+// experiment's parameters (ctx.setParams).
+import { el } from '../dom.js';
+import { plain } from '../format.js';
+import { NUMERIC, ENUMS } from '../state.js';
 import { EXPERIMENTS, experiment, experimentState, experimentQuery, predict } from '../experiments.js';
 
-function el(tag, props = {}, ...children) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(props)) {
-    if (k === 'class') e.className = v;
-    else if (k === 'text') e.textContent = v;
-    else if (k.startsWith('aria-') || k.startsWith('data-') || k === 'role' || k === 'for' || k === 'hidden') {
-      if (v !== false && v != null) e.setAttribute(k, v === true ? '' : v);
-    } else e[k] = v;
-  }
-  for (const c of children) if (c != null) e.append(c);
-  return e;
+export const title = 'Guided experiments';
+
+const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.filter((e) => e.key !== 'modes').map((e) => e.key)];
+
+/** An absolute link to the lab page (index.html next to lab.js) with `query`. */
+export function experimentHref(id) {
+  return new URL(`../index.html?${experimentQuery(id)}`, import.meta.url).href;
 }
 
-/** Key of the inputs a study result depends on (the study is rerun when they change). */
-const studyKey = (id, cfg) => `${id}|${JSON.stringify(cfg)}`;
-
-export function mountExperiments(box, host) {
-  box.classList.add('wl-experiments');
-  const list = el('ul', { class: 'wl-exp-list', role: 'list' });
+export function mount(ctx) {
+  const { store, section, engine } = ctx;
+  section.append(el('p', {
+    class: 'wl-note wl-exp-intro',
+    text: 'Each experiment sets the parameters for one effect of the model and says what to look for. The prediction is computed from the current results and checked against the simulation; it stays live if you move the sliders. Every link can be shared.',
+  }));
+  const list = el('ul', { class: 'wl-exp-list' });
   const links = new Map();
   for (const e of EXPERIMENTS) {
-    const a = el('a', {
-      class: 'wl-exp-link',
-      href: host.href(experimentQuery(e.id)),
-      'data-exp': e.id,
-      text: e.title,
-    });
-    a.append(el('span', { class: 'wl-exp-fig', text: ` (${e.figure})` }));
+    const a = el('a', { class: 'wl-exp-link', href: experimentHref(e.id), 'data-exp': e.id }, el('span', { rich: e.title }), el('span', { class: 'wl-exp-fig', text: ` · ${e.figure}` }));
     a.addEventListener('click', (ev) => {
-      if (ev.button !== 0 || ev.ctrlKey || ev.metaKey || ev.shiftKey || ev.altKey) return; // new tab etc.
+      if (ev.button !== 0 || ev.ctrlKey || ev.metaKey || ev.shiftKey || ev.altKey) return; // new tab / window
       ev.preventDefault();
-      select(e.id, { apply: true });
+      choose(e.id);
     });
     links.set(e.id, a);
     list.append(el('li', {}, a));
   }
-  const detail = el('div', { class: 'wl-exp-detail', 'aria-live': 'polite' });
-  const intro = el('p', { class: 'wl-note', text: 'Each experiment sets the parameters for one effect of the model and says what to look for. Its prediction is computed from the current results and checked against the simulation; the links can be shared.' });
-  box.append(intro, list, detail);
+  const detail = el('div', { class: 'wl-exp-detail' });
+  const live = el('div', { class: 'wl-sr', 'aria-live': 'polite' });
+  section.append(list, detail, live);
 
-  let activeId = null;
-  const studies = new Map(); // key -> { result } | { pending }
+  const studies = new Map(); // key → { result, error, job }
+  let lastAnnounced = '';
 
-  function select(id, { apply = false } = {}) {
-    const e = experiment(id);
-    activeId = e ? e.id : null;
-    for (const [k, a] of links) {
-      if (k === activeId) a.setAttribute('aria-current', 'true');
-      else a.removeAttribute('aria-current');
-    }
-    if (e && apply) host.apply(experimentState(e.id, host.state().panels), e.id);
+  /** Applies an experiment: its parameters (on the paper defaults, mode set kept) and exp=id. */
+  function choose(id) {
+    const s = experimentState(id);
+    const patch = { exp: id };
+    for (const k of PARAM_KEYS) patch[k] = s[k];
+    ctx.setParams(patch);
     refresh();
   }
 
-  function ensureStudy(e) {
+  function studyFor(e) {
     if (!e.study) return null;
-    const cfg = host.config();
-    const key = studyKey(e.id, cfg);
-    const have = studies.get(key);
-    if (have) return have.result || null;
-    const entry = { pending: true, result: null };
-    studies.set(key, entry);
+    const s = store.get();
+    const cfg = engine.config(s);
     const opts = { ...e.study.opts };
-    if (e.study.kind === 'icmap') opts.mode = Number(host.state().mode) - 1;
-    let payload;
-    if (e.study.kind === 'resonance') payload = { cfg, opts };
-    else payload = { cfg, opts };
-    const job = host.job(e.study.kind, payload, () => {});
-    job.promise.then(
-      (r) => {
-        entry.result = r;
-        entry.pending = false;
-        if (activeId === e.id) refresh();
-      },
-      (err) => {
-        entry.pending = false;
-        entry.error = String(err && err.message ? err.message : err);
-        if (activeId === e.id) refresh();
-      },
-    );
-    return null;
+    if (e.study.kind === 'icmap') opts.mode = Number(s.mode) - 1;
+    const key = `${e.study.kind}|${JSON.stringify(opts)}|${JSON.stringify(cfg)}`;
+    let entry = studies.get(key);
+    if (!entry) {
+      entry = { result: null, error: null };
+      studies.set(key, entry);
+      const job = engine.run(e.study.kind, { cfg, opts });
+      job.promise.then(
+        ({ result }) => { entry.result = result; refresh(); },
+        (err) => {
+          if (err && err.message === 'cancelled') studies.delete(key); // another study was cancelled: rerun later
+          else entry.error = String(err && err.message ? err.message : err);
+          refresh();
+        },
+      );
+    }
+    return entry;
   }
 
   function refresh() {
-    const e = activeId ? experiment(activeId) : null;
+    const s = store.get();
+    const e = s.exp ? experiment(s.exp) : null;
+    for (const [k, a] of links) {
+      if (e && k === e.id) a.setAttribute('aria-current', 'true');
+      else a.removeAttribute('aria-current');
+    }
+    section.dataset.exp = e ? e.id : '';
     if (!e) {
-      detail.replaceChildren();
-      box.dataset.exp = '';
+      detail.replaceChildren(el('p', { class: 'wl-note', text: 'Choose an experiment above.' }));
       return;
     }
-    box.dataset.exp = e.id;
-    const a = host.analysis();
-    const state = host.state();
-    const study = ensureStudy(e);
-    const cfg = e.study ? studies.get(studyKey(e.id, host.config())) : null;
-    const head = el('h3', { class: 'wl-exp-title', text: `${e.title}` });
-    const url = host.href(experimentQuery(e.id));
-    const copy = el('button', { type: 'button', class: 'wl-exp-copy', text: 'Copy link', 'aria-label': `Copy the link to the experiment “${e.title}”` });
-    copy.addEventListener('click', async () => {
-      try {
-        await navigator.clipboard.writeText(url);
-        copy.textContent = 'Link copied';
-      } catch {
-        copy.textContent = 'Copy failed: use the link above';
-      }
-      setTimeout(() => { copy.textContent = 'Copy link'; }, 2000);
-    });
-    const parts = [el('div', { class: 'wl-head' }, head, copy), el('p', { class: 'wl-exp-look', text: e.look })];
-    if (!a) {
-      parts.push(el('p', { class: 'wl-note', text: 'Computing…' }));
-    } else {
-      const p = predict(e.id, a, { mode: Number(state.mode) - 1, state, study });
+    const a = s.result && s.result.analysis;
+    const entry = a ? studyFor(e) : null;
+    const parts = [el('h3', { class: 'wl-exp-title', rich: e.title }), el('p', { class: 'wl-exp-look', rich: e.look })];
+    if (!a) parts.push(el('p', { class: 'wl-note', text: 'Computing…' }));
+    else {
+      const p = predict(e.id, a, { mode: Number(s.mode) - 1, state: s, study: entry && entry.result });
       const pred = el('div', { class: 'wl-exp-predict', 'data-exp-predict': e.id });
-      pred.append(el('p', { class: 'wl-exp-label', text: 'The model predicts:' }));
-      for (const line of p.lines) pred.append(el('p', { class: 'wl-exp-line', text: line }));
-      if (cfg && cfg.error) pred.append(el('p', { class: 'wl-error', text: `The study failed: ${cfg.error}` }));
+      pred.append(el('p', { class: 'wl-exp-label', text: 'The model predicts' }));
+      for (const line of p.lines) pred.append(el('p', { class: 'wl-exp-line', rich: line }));
+      if (entry && entry.error) pred.append(el('p', { class: 'wl-error', text: `The study failed: ${entry.error}` }));
       if (p.checks.length) {
         const ul = el('ul', { class: 'wl-exp-checks', 'aria-label': 'Checks of the prediction against the simulation' });
         for (const c of p.checks) {
           ul.append(el('li', { class: c.holds ? 'wl-ok' : 'wl-bad', 'data-check': c.id, 'data-holds': String(c.holds) },
             el('span', { class: 'wl-exp-mark', 'aria-hidden': 'true', text: c.holds ? '✓' : '✗' }),
-            el('span', { text: `${c.holds ? 'Holds' : 'Does not hold'}: ${c.label}` })));
+            el('span', { rich: `${c.holds ? 'Holds' : 'Does not hold'}: ${c.label}` })));
         }
         pred.append(ul);
       }
       parts.push(pred);
-      box.dataset.checks = p.checks.map((c) => `${c.id}:${c.holds ? 1 : 0}`).join(',');
-      box.dataset.values = JSON.stringify(p.values, (k, v) => (typeof v === 'number' && !Number.isFinite(v) ? String(v) : v));
+      section.dataset.checks = p.checks.map((c) => `${c.id}:${c.holds ? 1 : 0}`).join(',');
+      section.dataset.values = JSON.stringify(p.values, (k, v) => (typeof v === 'number' && !Number.isFinite(v) ? String(v) : v));
+      const say = `${plain(e.title)}: ${p.checks.length ? p.checks.map((c) => (c.holds ? 'holds' : 'does not hold')).join(', ') : 'computing'}`;
+      if (say !== lastAnnounced) {
+        live.textContent = say;
+        lastAnnounced = say;
+      }
     }
-    if (e.study && host.show) {
+    if (e.study) {
       const target = e.study.kind === 'resonance' ? 'resonance' : 'studies';
-      const go = el('button', { type: 'button', class: 'wl-exp-go', text: e.study.kind === 'resonance' ? 'Open the resonance map' : e.study.kind === 'sweep' ? 'Open the sweep study' : 'Open the initial-condition map' });
-      go.addEventListener('click', () => host.show(target, e.study));
+      const label = { resonance: 'Go to the resonance map', sweep: 'Go to the sweep study (Fig. 6)', icmap: 'Go to the initial-condition map (Fig. 7)' }[e.study.kind];
+      const go = el('button', { type: 'button', class: 'wl-exp-go', text: label });
+      go.addEventListener('click', () => {
+        const sec = section.parentElement && section.parentElement.querySelector(`[data-panel="${target}"]`);
+        if (!sec) return;
+        sec.scrollIntoView({ behavior: 'smooth', block: 'start' });
+        const h = sec.querySelector(e.study.kind === 'resonance' ? '[data-run="resonance"]' : `[data-study="${e.study.kind}"] [data-run]`);
+        if (h) h.focus({ preventScroll: true });
+      });
       parts.push(go);
     }
     detail.replaceChildren(...parts);
-    box.dispatchEvent(new CustomEvent('wl-experiment', { bubbles: true, detail: { id: e.id } }));
+    ctx.emit('wl-experiment', { id: e.id });
   }
 
-  return { box, select, refresh, active: () => activeId };
+  const unsub = store.subscribe(['exp', 'result'], refresh);
+  refresh();
+  return {
+    choose,
+    refresh,
+    destroy() {
+      unsub();
+    },
+  };
 }

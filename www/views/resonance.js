@@ -1,31 +1,21 @@
-// Resonance map study view: the Floquet effective frequency of each mode and the largest
-// |multiplier| over a range of flap frequencies (wasm `resonanceMap`, run as a worker job), with
-// the lines f = n·f_d (n = 1…4) over the f_eff curves and the unstable bands shaded; optionally
-// α0 as a second axis, drawn as a heat map of the largest |multiplier|. Every axis has units;
-// the text alternative (summary sentence + table) says where the wing is unstable and where
-// f_eff meets n·f_d. CSV export of the full grid.
-//
-// The view owns its DOM only. It talks to the computation through `run(cfg, opts, onProgress)`
-// → { promise, cancel } (the engine's worker job) and asks the host for the current config and
-// case line; see `mountResonance` below.
-import { uPlot, fmt, toCSV, download, viridis } from '../plot.js';
-import { resonanceSummary, resonanceCrossings, bands } from '../experiments.js';
+// Resonance map study panel: the Floquet effective frequency of each mode and the largest
+// |multiplier| over a range of flap frequencies (wasm `resonanceMap`, a worker job through the
+// engine, with progress and cancel), the lines f = n·f_d (n = 1…4) over the f_eff curves, and
+// the unstable bands shaded and labelled; optionally α_0 as a second axis, drawn as a heat map
+// of the largest |multiplier| with the f_eff = n·f_d crossings marked. Units on every axis, a
+// text alternative (summary sentence + table: where unstable, where resonant), CSV, PNG and
+// SVG export (the f_eff plot as a figure).
+import { el } from '../dom.js';
+import { plain } from '../format.js';
+import { linePlot, viridis } from '../plot.js';
+import { describe, toQuery } from '../state.js';
+import { toCSV } from '../export.js';
+import { resonanceSummary, resonanceCrossings, bands, fmt } from '../experiments.js';
+
+export const title = 'Resonance map: f_{eff} and stability vs flap frequency';
 
 const MODE_COLORS = ['#1f5fbf', '#c2410c', '#2e7d32', '#7b1fa2'];
 const N_LINES = 4;
-
-function el(tag, props = {}, ...children) {
-  const e = document.createElement(tag);
-  for (const [k, v] of Object.entries(props)) {
-    if (k === 'class') e.className = v;
-    else if (k === 'text') e.textContent = v;
-    else if (k.startsWith('aria-') || k.startsWith('data-') || k === 'role' || k === 'for' || k === 'hidden') {
-      if (v !== false && v != null) e.setAttribute(k, v === true ? '' : v);
-    } else e[k] = v;
-  }
-  for (const c of children) if (c != null) e.append(c);
-  return e;
-}
 
 const hexA = (hex, a) => {
   const n = parseInt(hex.slice(1), 16);
@@ -69,110 +59,6 @@ export function resonanceCSV(r, caseLine) {
     cols.push({ name: `mode${k + 1}_stable`, unit: '1 = stable', values: Array.from(m.stable) });
   });
   return toCSV(cols, [caseLine, 'Floquet analysis per flap frequency (wasm resonanceMap); natural frequencies ' + r.modes.map((m, k) => `f${k + 1} = ${m.freq_hz} Hz`).join(', ')]);
-}
-
-/** uPlot draw hook: shaded unstable bands (per mode) and labels of the n·f_d lines. */
-function bandHook(getRow, labelLines) {
-  return (u) => {
-    const row = getRow();
-    if (!row) return;
-    const ctx = u.ctx;
-    const { left, top, width, height } = u.bbox;
-    const dpr = devicePixelRatio;
-    ctx.save();
-    ctx.beginPath();
-    ctx.rect(left, top, width, height);
-    ctx.clip();
-    const dx = row.fd.length > 1 ? (row.fd[1] - row.fd[0]) / 2 : 0;
-    row.modes.forEach((m, k) => {
-      for (const [a, b] of bands(row.fd, m.stable.map((s) => !s))) {
-        const x0 = u.valToPos(a - dx, 'x', true);
-        const x1 = u.valToPos(b + dx, 'x', true);
-        ctx.fillStyle = hexA(MODE_COLORS[k % MODE_COLORS.length], 0.18);
-        ctx.fillRect(x0, top, Math.max(x1 - x0, 2 * dpr), height);
-        // hatch, so the band does not rely on colour alone
-        ctx.strokeStyle = hexA(MODE_COLORS[k % MODE_COLORS.length], 0.55);
-        ctx.lineWidth = dpr;
-        for (let x = x0 - height; x < x1; x += 8 * dpr) {
-          ctx.beginPath();
-          ctx.moveTo(Math.max(x, x0), top + height - Math.max(0, x0 - x));
-          ctx.lineTo(Math.min(x + height, x1), top + height - Math.min(height, x1 - x));
-          ctx.stroke();
-        }
-      }
-    });
-    if (labelLines) {
-      ctx.fillStyle = '#555';
-      ctx.font = `${Math.round(11 * dpr)}px system-ui, sans-serif`;
-      ctx.textBaseline = 'bottom';
-      const xmax = u.scales.x.max;
-      const ymax = u.scales.y.max;
-      for (let n = 1; n <= N_LINES; n++) {
-        // label where the line leaves the plot (top edge or right edge)
-        const xe = Math.min(xmax, ymax / n);
-        const px = u.valToPos(xe, 'x', true);
-        const py = u.valToPos(n * xe, 'y', true);
-        const text = `${n}·f_d`;
-        const w = ctx.measureText(text).width;
-        ctx.fillText(text, Math.min(px - w - 3 * dpr, left + width - w - 2 * dpr), Math.max(py + 14 * dpr, top + 14 * dpr));
-      }
-    }
-    ctx.restore();
-  };
-}
-
-function plotSpec(kind, row, height, getRow) {
-  const modes = row.modes;
-  const isF = kind === 'feff';
-  const series = [
-    { label: 'f_d (Hz)', value: (u, v) => (v == null ? '—' : `${fmt(v, 4)} Hz`) },
-    ...modes.map((m, k) => ({
-      label: isF ? `Mode ${k + 1}: f_eff (f${k + 1} = ${fmt(m.freq_hz, 4)} Hz)` : `Mode ${k + 1}: max |λ|`,
-      stroke: MODE_COLORS[k % MODE_COLORS.length],
-      width: 2,
-      points: { show: false },
-      value: (u, v) => (v == null ? '—' : isF ? `${fmt(v, 5)} Hz` : fmt(v, 6)),
-    })),
-  ];
-  if (isF) {
-    for (let n = 1; n <= N_LINES; n++) {
-      series.push({ label: `${n}·f_d`, stroke: '#8a8a8a', width: 1, dash: n === 2 ? [] : [5, 4], points: { show: false }, value: (u, v) => (v == null ? '—' : `${fmt(v, 4)} Hz`) });
-    }
-  }
-  const nm = modes.length;
-  // y range from the data shown (recomputed when the α0 row changes)
-  const yRange = (u) => {
-    const vals = [];
-    for (let k = 1; k <= nm; k++) for (const v of u.data[k] || []) if (v != null && Number.isFinite(v)) vals.push(v);
-    if (isF) return [0, Math.max(10, ...vals) * 1.15];
-    const hi = Math.max(1.0, ...vals);
-    const lo = Math.min(1.0, ...vals);
-    const pad = Math.max(1e-3, (hi - lo) * 0.08);
-    return [lo - pad, hi + pad];
-  };
-  return {
-    width: 600,
-    height,
-    scales: { x: { time: false }, y: { range: yRange } },
-    axes: [
-      { label: 'flap frequency f_d (Hz)', stroke: '#333', grid: { stroke: '#e5e5e5' } },
-      { label: isF ? 'frequency f (Hz)' : 'largest |Floquet multiplier| (per flap period, –)', stroke: '#333', grid: { stroke: '#e5e5e5' }, size: 64, values: (u, vals) => vals.map((v) => fmt(v, isF ? 3 : 5)) },
-    ],
-    series,
-    cursor: { drag: { x: true, y: false }, points: { show: false } },
-    legend: { live: true },
-    hooks: { draw: [bandHook(getRow, isF)] },
-  };
-}
-
-function plotData(kind, row) {
-  const x = row.fd;
-  if (kind === 'feff') {
-    const lines = [];
-    for (let n = 1; n <= N_LINES; n++) lines.push(x.map((f) => n * f));
-    return [x, ...row.modes.map((m) => m.feff.map((v) => (Number.isFinite(v) ? v : null))), ...lines];
-  }
-  return [x, ...row.modes.map((m) => m.mod.map((v) => (Number.isFinite(v) ? v : null)))];
 }
 
 /**
@@ -228,7 +114,8 @@ export function drawResonanceHeatmap(canvas, r) {
     const pts = new Map();
     for (let j = 0; j < ny; j++) {
       const feff = Array.from(m.effective_freq_hz.slice(j * nx, j * nx + nx));
-      for (const c of resonanceCrossings(Array.from(r.flap_hz), feff, N_LINES)) {
+      const st = Array.from(m.stable.slice(j * nx, j * nx + nx)).map(Boolean);
+      for (const c of resonanceCrossings(Array.from(r.flap_hz), feff, N_LINES, st)) {
         if (!pts.has(c.n)) pts.set(c.n, []);
         pts.get(c.n).push([c.flap_hz, r.alpha0[j]]);
       }
@@ -254,15 +141,15 @@ export function drawResonanceHeatmap(canvas, r) {
   ctx.textAlign = 'center';
   for (let k = 0; k <= 5; k++) {
     const f = f0 + ((f1 - f0) * k) / 5;
-    ctx.fillText(fmt(f, 3), X(f), T + ph + 14);
+    ctx.fillText(plain(fmt(f, 3)), X(f), T + ph + 14);
   }
   ctx.textAlign = 'right';
   for (let k = 0; k <= 4; k++) {
     const a = a0 + ((a1 - a0) * k) / 4;
-    ctx.fillText(fmt(a, 3), L - 4, Y(a) + 4);
+    ctx.fillText(plain(fmt(a, 3)), L - 4, Y(a) + 4);
   }
   ctx.textAlign = 'center';
-  ctx.fillText('flap frequency f_d (Hz)', L + pw / 2, cssH - 10);
+  ctx.fillText('flap frequency fd (Hz)', L + pw / 2, cssH - 10);
   ctx.save();
   ctx.translate(14, T + ph / 2);
   ctx.rotate(-Math.PI / 2);
@@ -277,8 +164,8 @@ export function drawResonanceHeatmap(canvas, r) {
   ctx.strokeRect(cx, T, 14, ph);
   ctx.fillStyle = '#222';
   ctx.textAlign = 'left';
-  ctx.fillText(fmt(zmax, 5), cx + 18, T + 9);
-  ctx.fillText(fmt(zmin, 5), cx + 18, T + ph);
+  ctx.fillText(plain(fmt(zmax, 5)), cx + 18, T + 9);
+  ctx.fillText(plain(fmt(zmin, 5)), cx + 18, T + ph);
   ctx.save();
   ctx.translate(cssW - 8, T + ph / 2);
   ctx.rotate(-Math.PI / 2);
@@ -287,144 +174,178 @@ export function drawResonanceHeatmap(canvas, r) {
   return { zmin, zmax };
 }
 
-/** The text alternative: a sentence and a table (per mode: unstable bands, largest |λ|, resonances). */
+/** The text alternative: a table per mode (unstable bands, largest |λ|, resonances). */
 function summaryTable(sum, caption) {
   const t = el('table', { class: 'wl-numtable wl-res-table' });
-  t.append(el('caption', { class: 'wl-note', text: caption }));
-  t.append(el('thead', {}, el('tr', {}, ...['Mode', 'Unstable f_d bands (Hz)', 'Largest |λ| (at f_d)', 'f_eff = n·f_d at f_d (Hz)'].map((h) => el('th', { scope: 'col', text: h })))));
+  t.append(el('caption', { class: 'wl-note', rich: caption }));
+  t.append(el('thead', {}, el('tr', {}, ...['Mode', 'Unstable for f_d in (Hz)', 'Largest |λ| (at f_d)', 'f_{eff} = n·f_d at f_d (Hz)'].map((h) => el('th', { scope: 'col', rich: h })))));
   const tb = el('tbody');
   for (const m of sum.modes) {
     tb.append(el('tr', {},
-      el('th', { scope: 'row', text: `${m.mode} (f = ${fmt(m.freq_hz, 4)} Hz)` }),
-      el('td', { text: m.unstable.length ? m.unstable.map(([a, b]) => (a === b ? fmt(a, 4) : `${fmt(a, 4)}–${fmt(b, 4)}`)).join(', ') : 'none' }),
-      el('td', { text: `${fmt(m.max_modulus, 6)} (${fmt(m.max_at_hz, 4)} Hz)` }),
-      el('td', { text: m.resonances.length ? m.resonances.map((c) => `${fmt(c.flap_hz, 4)} (n = ${c.n})`).join(', ') : 'none' }),
+      el('th', { scope: 'row', text: `${m.mode} (f = ${plain(fmt(m.freq_hz, 4))} Hz)` }),
+      el('td', { text: m.unstable.length ? m.unstable.map(([a, b]) => (a === b ? plain(fmt(a, 4)) : `${plain(fmt(a, 4))}–${plain(fmt(b, 4))}`)).join(', ') : 'none' }),
+      el('td', { text: `${plain(fmt(m.max_modulus, 6))} (${plain(fmt(m.max_at_hz, 4))} Hz)` }),
+      el('td', { text: m.resonances.length ? m.resonances.map((c) => `${plain(fmt(c.flap_hz, 4))} (n = ${c.n})`).join(', ') : 'none' }),
     ));
   }
   t.append(tb);
   return t;
 }
 
-/**
- * Mounts the resonance-map study in `box` (an element). host:
- *   run(cfg, opts, onProgress(done, total)) → { promise, cancel }   the engine's worker job
- *   config() → the current SimConfig;  caseLine() → the CSV's parameter comment
- *   state() → the lab state (for the default α0 range)
- *   onResult?(r)                                    called after each finished map
- * Returns { box, run(opts?), data() }.
- */
-export function mountResonance(box, host) {
-  box.classList.add('wl-study', 'wl-resonance');
-  box.dataset.study = 'resonance';
-  const uid = `res${Math.random().toString(36).slice(2, 8)}`;
-  const title = 'Resonance map: f_eff and stability vs flap frequency';
-  const head = el('div', { class: 'wl-head' }, el('h3', { id: `${uid}-h`, text: title }));
-  const csvBtn = el('button', { type: 'button', text: 'CSV', 'data-export': 'csv', 'data-target': 'resonance', 'aria-label': `Export ${title} as CSV` });
-  head.append(el('span', { class: 'wl-export' }, csvBtn));
-  const num = (label, value, min, max, step, unit) => {
-    const i = el('input', { type: 'number', value, min, max, step, 'aria-label': `${label}${unit ? ` (${unit})` : ''}` });
-    return [el('label', { class: 'wl-inline' }, `${label}${unit ? ` (${unit})` : ''} `, i), i];
+/** Unstable bands of a row for linePlot (half a grid step either side); the widest one labelled. */
+function plotBands(row) {
+  const dx = row.fd.length > 1 ? (row.fd[1] - row.fd[0]) / 2 : 0;
+  const out = [];
+  row.modes.forEach((m, k) => {
+    const bs = bands(row.fd, m.stable.map((s) => !s));
+    let widest = -1;
+    bs.forEach(([a, b], i) => { if (widest < 0 || b - a > bs[widest][1] - bs[widest][0]) widest = i; });
+    bs.forEach(([a, b], i) => {
+      const c = MODE_COLORS[k % MODE_COLORS.length];
+      out.push({ x0: a - dx, x1: b + dx, fill: hexA(c, 0.16), color: c, label: i === widest ? `mode ${k + 1} unstable` : undefined });
+    });
+  });
+  return out;
+}
+
+export function mount(ctx) {
+  const { store, section, engine } = ctx;
+  const uid = ctx.id('res');
+  const num = (label, value, min, max, step) => {
+    const i = el('input', { type: 'number', value, min, max, step, 'aria-label': plain(label) });
+    return [el('label', { class: 'wl-inline' }, el('span', { rich: label }), ' ', i), i];
   };
-  const [lf, from] = num('f_d from', 5, 0.1, 200, 'any', 'Hz');
-  const [lt, to] = num('to', 60, 0.1, 200, 'any', 'Hz');
-  const [ln, pts] = num('points', 221, 2, 2001, 1, '');
+  const [lf, from] = num('f_d from (Hz)', 5, 0.1, 1000, 'any');
+  const [lt, to] = num('to (Hz)', 60, 0.1, 1000, 'any');
+  const [ln, pts] = num('points', 221, 2, 2001, 1);
   const two = el('input', { type: 'checkbox', id: `${uid}-2d` });
-  const l2 = el('label', { class: 'wl-inline', for: `${uid}-2d` }, two, ' α0 as a second axis');
-  const [la0, a0from] = num('α0 from', 0.2, 0, 1.5, 0.05, 'rad');
-  const [la1, a0to] = num('α0 to', 1.2, 0, 1.5, 0.05, 'rad');
-  const [lan, a0n] = num('α0 values', 21, 2, 101, 1, '');
+  const l2 = el('label', { class: 'wl-inline wl-check', for: `${uid}-2d` }, two, ' ', el('span', { rich: 'α_0 as a second axis' }));
+  const [la0, a0from] = num('α_0 from (rad)', 0.2, 0, 1.5, 0.05);
+  const [la1, a0to] = num('α_0 to (rad)', 1.2, 0, 1.5, 0.05);
+  const [lan, a0n] = num('α_0 values', 21, 2, 101, 1);
   const axis2 = el('span', { class: 'wl-res-axis2', hidden: true }, la0, la1, lan);
   two.addEventListener('change', () => { axis2.hidden = !two.checked; });
   const runBtn = el('button', { type: 'button', class: 'wl-run', text: 'Run', 'data-run': 'resonance' });
   const cancelBtn = el('button', { type: 'button', class: 'wl-cancel', text: 'Cancel', 'data-cancel': 'resonance', hidden: true });
-  const prog = el('progress', { class: 'wl-progress', max: 1, value: 0, hidden: true, 'aria-label': `${title} progress` });
+  const prog = el('progress', { class: 'wl-progress', max: 1, value: 0, hidden: true, 'aria-label': 'Resonance map progress' });
   const status = el('span', { class: 'wl-status', role: 'status' });
-  const note = el('p', { class: 'wl-note', text: 'Floquet analysis of Eq. 13 at each flap frequency (no time series): the effective natural frequency f_eff of each mode, and the largest |multiplier| of the monodromy matrix over one flap period (> 1: the mode grows without bound — a parametric instability). Where f_eff meets a line n·f_d the flapping drives the mode at resonance and the beat period 1/|f_eff − n·f_d| becomes infinite. Hatched bands: unstable. The other parameters are the current ones.' });
+  const box = el('div', { class: 'wl-study wl-resonance', 'data-study': 'resonance' });
   const out = el('div', { class: 'wl-study-out' });
-  box.replaceChildren(head, el('div', { class: 'wl-study-controls' }, lf, lt, ln, l2, axis2, runBtn, cancelBtn, prog, status), note, out);
+  box.append(
+    el('div', { class: 'wl-study-controls' }, lf, lt, ln, l2, axis2, runBtn, cancelBtn, prog, status),
+    el('p', { class: 'wl-note', rich: 'Floquet analysis of Eq. 13 at each flap frequency, with the other parameters as set (no time series): the effective natural frequency f_{eff} of each mode (top) and the largest |multiplier| of the monodromy matrix over one flap period (bottom; above 1 the mode grows without bound — a parametric instability; shaded bands). Where f_{eff} meets a grey line n·f_d the flapping drives the mode at resonance and the beat period 1/|f_{eff} − n·f_d| becomes infinite.' }),
+    out,
+  );
+  section.append(box);
 
   let result = null;
   let current = null;
-  let plots = [];
-  let ro = null;
   let rowIndex = 0;
-
-  const clearPlots = () => {
-    for (const u of plots) u.destroy();
-    plots = [];
-    if (ro) ro.disconnect();
-    ro = null;
+  let fPlot = null;
+  let mPlot = null;
+  let heat = null;
+  const cleanup = () => {
+    for (const p of [fPlot, mPlot]) if (p) p.destroy();
+    if (heat) heat.disconnect();
+    fPlot = mPlot = heat = null;
   };
 
   function draw(r) {
-    clearPlots();
+    cleanup();
     out.replaceChildren();
     const sumBox = el('div', { class: 'wl-res-summary' });
     if (r.alpha0) {
-      const canvas = el('canvas', { class: 'wl-heatmap wl-res-heatmap', role: 'img', 'aria-label': `Heat map of the largest Floquet multiplier modulus over flap frequency ${fmt(r.flap_hz[0], 3)}–${fmt(r.flap_hz[r.flap_hz.length - 1], 3)} Hz and roll amplitude α0 ${fmt(r.alpha0[0], 3)}–${fmt(r.alpha0[r.alpha0.length - 1], 3)} rad; dots mark f_eff = n·f_d; the table below gives the numbers per α0 row.` });
-      canvas.style.width = '100%';
+      const canvas = el('canvas', {
+        class: 'wl-heatmap wl-res-heatmap',
+        role: 'img',
+        'aria-label': `Heat map of the largest Floquet multiplier modulus over flap frequency ${plain(fmt(r.flap_hz[0], 3))}–${plain(fmt(r.flap_hz[r.flap_hz.length - 1], 3))} Hz (across) and roll amplitude α0 ${plain(fmt(r.alpha0[0], 3))}–${plain(fmt(r.alpha0[r.alpha0.length - 1], 3))} rad (up); dots mark f_eff = n·f_d. The table below gives the numbers for the chosen α0 row.`,
+      });
       out.append(canvas);
-      const rowSel = el('select', { 'aria-label': 'α0 row shown in the curves below' });
-      r.alpha0.forEach((a, j) => rowSel.append(el('option', { value: String(j), text: `α0 = ${fmt(a, 4)} rad` })));
-      const state = host.state ? host.state() : null;
+      const rowSel = el('select', { id: `${uid}-row` });
+      r.alpha0.forEach((a, j) => rowSel.append(el('option', { value: String(j), text: `α0 = ${plain(fmt(a, 4))} rad` })));
       let best = 0;
-      if (state) r.alpha0.forEach((a, j) => { if (Math.abs(a - state.alpha0) < Math.abs(r.alpha0[best] - state.alpha0)) best = j; });
+      const a0 = store.get().alpha0;
+      r.alpha0.forEach((a, j) => { if (Math.abs(a - a0) < Math.abs(r.alpha0[best] - a0)) best = j; });
       rowSel.value = String(best);
       rowIndex = best;
-      rowSel.addEventListener('change', () => { rowIndex = Number(rowSel.value); drawRows(r, sumBox); });
-      out.append(el('label', { class: 'wl-inline' }, 'Curves for ', rowSel));
-      requestAnimationFrame(() => drawResonanceHeatmap(canvas, r));
-      const ro2 = new ResizeObserver(() => drawResonanceHeatmap(canvas, r));
-      ro2.observe(canvas);
-      plots.push({ destroy: () => ro2.disconnect() });
-    } else {
-      rowIndex = 0;
-    }
-    const fBox = el('div', { class: 'wl-plot', 'data-plot': 'resonance-feff', role: 'img', 'aria-label': 'Effective frequency of each mode against flap frequency, with the lines n·f_d; summary in the table below' });
-    const mBox = el('div', { class: 'wl-plot', 'data-plot': 'resonance-modulus', role: 'img', 'aria-label': 'Largest Floquet multiplier modulus of each mode against flap frequency; summary in the table below' });
-    out.append(fBox, mBox, sumBox);
-    const row = resonanceRow(r, rowIndex);
-    const getRow = () => resonanceRow(r, rowIndex);
-    const fu = new uPlot(plotSpec('feff', row, 260, getRow), plotData('feff', row), fBox);
-    const mu = new uPlot(plotSpec('mod', row, 180, getRow), plotData('mod', row), mBox);
-    plots.push(fu, mu);
-    const resize = () => {
-      const w = Math.max(280, fBox.clientWidth);
-      for (const u of [fu, mu]) if (Math.abs(u.width - w) > 2) u.setSize({ width: w, height: u.height });
+      rowSel.addEventListener('change', () => { rowIndex = Number(rowSel.value); drawRow(r, sumBox); });
+      out.append(el('p', { class: 'wl-inline' }, el('label', { for: `${uid}-row`, text: 'Curves and table below for ' }), rowSel));
+      const paint = () => drawResonanceHeatmap(canvas, r);
+      requestAnimationFrame(paint);
+      if (typeof ResizeObserver === 'function') {
+        heat = new ResizeObserver(paint);
+        heat.observe(canvas);
+      }
+    } else rowIndex = 0;
+    const row0 = resonanceRow(r, rowIndex);
+    const modeSeries = row0.modes.map((m, k) => ({ label: `mode ${k + 1}: f_{eff} (f_${k + 1} = ${fmt(m.freq_hz, 4)} Hz)`, unit: 'Hz', color: MODE_COLORS[k % MODE_COLORS.length], width: 2 }));
+    const lineSeries = [];
+    for (let n = 1; n <= N_LINES; n++) lineSeries.push({ label: `${n}·f_d`, unit: 'Hz', color: ['#6b6b6b', '#8a8a8a', '#9e9e9e', '#b0b0b0'][n - 1], dash: [6, 3 + n], width: 1 });
+    fPlot = linePlot(out, {
+      name: 'resonance-feff',
+      title: 'Effective frequency vs flap frequency',
+      xLabel: 'flap frequency f_d',
+      xUnit: 'Hz',
+      yLabel: 'frequency f (Hz)',
+      series: [...modeSeries, ...lineSeries],
+      height: 260,
+      bands: () => plotBands(resonanceRow(r, rowIndex)),
+      ariaLabel: 'Effective frequency of each mode against flap frequency, with the lines n·f_d and the unstable bands shaded',
+      keys: true,
+    });
+    // Keep the n·f_d lines from stretching the axis: the y range follows the f_eff curves.
+    const nm = row0.modes.length;
+    fPlot.u.scales.y.range = (u) => {
+      let hi = 10;
+      for (let k = 1; k <= nm; k++) for (const v of u.data[k] || []) if (v != null && Number.isFinite(v)) hi = Math.max(hi, v);
+      return [0, hi * 1.15];
     };
-    ro = new ResizeObserver(resize);
-    ro.observe(fBox);
-    resize();
-    drawRows(r, sumBox);
+    mPlot = linePlot(out, {
+      name: 'resonance-modulus',
+      title: 'Largest Floquet multiplier vs flap frequency',
+      xLabel: 'flap frequency f_d',
+      xUnit: 'Hz',
+      yLabel: 'largest |multiplier| per flap period (–)',
+      series: row0.modes.map((m, k) => ({ label: `mode ${k + 1}: max |λ|`, unit: '', color: MODE_COLORS[k % MODE_COLORS.length], width: 2 })),
+      height: 170,
+      bands: () => plotBands(resonanceRow(r, rowIndex)),
+      ariaLabel: 'Largest Floquet multiplier modulus of each mode against flap frequency; above 1 is unstable',
+      keys: true,
+    });
+    mPlot.u.scales.y.range = (u) => {
+      let lo = 1, hi = 1;
+      for (let k = 1; k <= nm; k++) for (const v of u.data[k] || []) if (v != null && Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+      const pad = Math.max(1e-3, (hi - lo) * 0.08);
+      return [lo - pad, hi + pad];
+    };
+    out.append(sumBox);
+    drawRow(r, sumBox);
   }
 
-  function drawRows(r, sumBox) {
+  function drawRow(r, sumBox) {
     const row = resonanceRow(r, rowIndex);
-    for (const u of plots) {
-      if (u.data && u.series) {
-        const kind = u.series.length > r.modes.length + 1 ? 'feff' : 'mod';
-        u.setData(plotData(kind, row));
-      }
-    }
+    const x = row.fd;
+    const lines = [];
+    for (let n = 1; n <= N_LINES; n++) lines.push(x.map((f) => n * f));
+    fPlot.setData([x, ...row.modes.map((m) => m.feff.map((v) => (Number.isFinite(v) ? v : null))), ...lines]);
+    mPlot.setData([x, ...row.modes.map((m) => m.mod.map((v) => (Number.isFinite(v) ? v : null)))]);
     const sum = resonanceSummary(r, rowIndex);
-    const which = r.alpha0 ? ` (α0 = ${fmt(r.alpha0[rowIndex], 4)} rad)` : '';
+    const which = r.alpha0 ? ` (α_0 = ${fmt(r.alpha0[rowIndex], 4)} rad)` : '';
+    const sentence = sum.sentence.replace('Resonance map,', `Resonance map${which},`);
+    fPlot.setSummary(plain(sentence));
+    mPlot.setSummary(plain(sentence));
     sumBox.replaceChildren(
-      el('p', { class: 'wl-res-sentence', 'data-summary': 'resonance', text: sum.sentence.replace('Resonance map,', `Resonance map${which},`) }),
-      summaryTable(sum, `Where each mode is unstable and where f_eff meets n·f_d${which}`),
+      el('p', { class: 'wl-res-sentence', 'data-summary': 'resonance', rich: sentence }),
+      summaryTable(sum, `Where each mode is unstable and where f_{eff} meets n·f_d${which}`),
     );
   }
 
-  function start(opts) {
-    if (current) return current.promise;
-    const o = opts || {
-      from_hz: Number(from.value),
-      to_hz: Number(to.value),
-      points: Math.round(Number(pts.value)),
-    };
+  function run(opts) {
+    if (current) return current;
+    const o = opts || { from_hz: Number(from.value), to_hz: Number(to.value), points: Math.round(Number(pts.value)) };
     if (!opts && two.checked) {
       const n = Math.max(2, Math.round(Number(a0n.value)));
-      const lo = Number(a0from.value);
-      const hi = Number(a0to.value);
+      const lo = Number(a0from.value), hi = Number(a0to.value);
       o.alpha0_values = Array.from({ length: n }, (_, j) => lo + ((hi - lo) * j) / (n - 1));
     }
     runBtn.disabled = true;
@@ -432,50 +353,63 @@ export function mountResonance(box, host) {
     prog.hidden = false;
     prog.removeAttribute('value');
     status.textContent = 'computing…';
-    const t0 = performance.now();
-    const job = host.run(host.config(), o, (done, total) => {
+    const job = engine.run('resonance', { cfg: engine.config(store.get()), opts: o }, (done, total) => {
       prog.max = total;
       prog.value = done;
       status.textContent = `${done} / ${total}`;
     });
+    cancelBtn.onclick = () => engine.cancel(job.id);
     const finish = () => {
       current = null;
       runBtn.disabled = false;
       cancelBtn.hidden = true;
       prog.hidden = true;
     };
-    current = {
-      cancel: job.cancel,
-      promise: job.promise.then(
-        (r) => {
-          finish();
-          result = r;
-          draw(r);
-          const cells = r.flap_hz.length * (r.alpha0 ? r.alpha0.length : 1);
-          status.textContent = `${cells} Floquet analyses × ${r.modes.length} modes in ${(performance.now() - t0).toFixed(0)} ms (worker)`;
-          box.dataset.done = String(Number(box.dataset.done || 0) + 1);
-          if (host.onResult) host.onResult(r);
-          return r;
-        },
-        (e) => {
-          finish();
-          const msg = String(e && e.message ? e.message : e);
-          status.textContent = /cancel/i.test(msg) ? 'Cancelled.' : `Error: ${msg}`;
-          return null;
-        },
-      ),
-    };
-    return current.promise;
+    current = job.promise.then(
+      ({ result: r, ms }) => {
+        finish();
+        result = r;
+        draw(r);
+        const cells = r.flap_hz.length * (r.alpha0 ? r.alpha0.length : 1);
+        status.textContent = `${cells} Floquet analyses × ${r.modes.length} modes in ${ms.toFixed(0)} ms (worker)`;
+        box.dataset.done = String(Number(box.dataset.done || 0) + 1);
+        ctx.emit('wl-study', { kind: 'resonance' });
+        return r;
+      },
+      (e) => {
+        finish();
+        status.textContent = e && e.message === 'cancelled' ? 'Cancelled.' : `Error: ${e && e.message ? e.message : e}`;
+        return null;
+      },
+    );
+    return current;
   }
+  runBtn.addEventListener('click', () => run());
 
-  runBtn.addEventListener('click', () => start());
-  cancelBtn.addEventListener('click', () => { if (current) current.cancel(); });
-  csvBtn.addEventListener('click', () => {
-    if (!result) {
-      status.textContent = 'Nothing to export yet: run the map first.';
-      return;
-    }
-    download('wingbeat-resonance.csv', new Blob([resonanceCSV(result, host.caseLine())], { type: 'text/csv' }));
+  ctx.registerExport('resonance', {
+    csv: () => (result ? resonanceCSV(result, `wingbeat lab; ${toQuery(store.get())}`) : null),
+    figure: () => {
+      if (!result || !fPlot) return null;
+      const row = resonanceRow(result, rowIndex);
+      return {
+        title: `Resonance map: effective frequency vs flap frequency${result.alpha0 ? ` (α_0 = ${fmt(result.alpha0[rowIndex], 4)} rad)` : ''}`,
+        params: describe(store.get()),
+        x: fPlot.u.data[0],
+        xRange: fPlot.xWindow(),
+        xLabel: 'flap frequency f_d (Hz)',
+        yLabel: 'frequency f (Hz)',
+        series: fPlot.exportSeries(),
+        bands: plotBands(row).map((b) => ({ ...b, label: b.label || '' })),
+        note: 'Shaded: Floquet-unstable (largest |multiplier| > 1). Grey: n·f_d. ' + plain(resonanceSummary(result, rowIndex).sentence),
+      };
+    },
   });
-  return { box, run: start, data: () => result, cancel: () => current && current.cancel() };
+
+  return {
+    run,
+    data: () => result,
+    destroy() {
+      cleanup();
+    },
+  };
 }
