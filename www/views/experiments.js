@@ -27,7 +27,7 @@ export function mount(ctx) {
   const list = el('ul', { class: 'wl-exp-list' });
   const links = new Map();
   for (const e of EXPERIMENTS) {
-    const a = el('a', { class: 'wl-exp-link', href: experimentHref(e.id), 'data-exp': e.id }, el('span', { rich: e.title }), el('span', { class: 'wl-exp-fig', text: ` · ${e.figure}` }));
+    const a = el('a', { class: 'wl-exp-link', href: experimentHref(e.id), 'data-exp': e.id }, el('span', { rich: e.title }), el('span', { class: 'wl-exp-fig', text: `· ${e.figure}` }));
     a.addEventListener('click', (ev) => {
       if (ev.button !== 0 || ev.ctrlKey || ev.metaKey || ev.shiftKey || ev.altKey) return; // new tab / window
       ev.preventDefault();

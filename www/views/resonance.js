@@ -169,7 +169,7 @@ export function drawResonanceHeatmap(canvas, r) {
   ctx.save();
   ctx.translate(cssW - 8, T + ph / 2);
   ctx.rotate(-Math.PI / 2);
-  ctx.fillText('largest |multiplier| (–)', 0, 0);
+  ctx.fillText('largest |λ| (–)', 0, 0);
   ctx.restore();
   return { zmin, zmax };
 }
@@ -192,20 +192,57 @@ function summaryTable(sum, caption) {
   return t;
 }
 
-/** Unstable bands of a row for linePlot (half a grid step either side); the widest one labelled. */
+/** Unstable bands of a row for linePlot (half a grid step either side), with their mode. */
 function plotBands(row) {
   const dx = row.fd.length > 1 ? (row.fd[1] - row.fd[0]) / 2 : 0;
   const out = [];
   row.modes.forEach((m, k) => {
-    const bs = bands(row.fd, m.stable.map((s) => !s));
-    let widest = -1;
-    bs.forEach(([a, b], i) => { if (widest < 0 || b - a > bs[widest][1] - bs[widest][0]) widest = i; });
-    bs.forEach(([a, b], i) => {
-      const c = MODE_COLORS[k % MODE_COLORS.length];
-      out.push({ x0: a - dx, x1: b + dx, fill: hexA(c, 0.16), color: c, label: i === widest ? `mode ${k + 1} unstable` : undefined });
-    });
+    const c = MODE_COLORS[k % MODE_COLORS.length];
+    for (const [a, b] of bands(row.fd, m.stable.map((s) => !s))) out.push({ x0: a - dx, x1: b + dx, fill: hexA(c, 0.16), color: c, mode: k + 1 });
   });
   return out;
+}
+
+/**
+ * uPlot draw hook: hatches each unstable band (so it does not rely on colour) and writes
+ * "mode k unstable" inside the bands wide enough for it, top-left, one row per mode.
+ */
+function bandMarks(getBands) {
+  return (u) => {
+    const ctx = u.ctx;
+    const r = devicePixelRatio || 1;
+    const { left, top, width, height } = u.bbox;
+    ctx.save();
+    ctx.beginPath();
+    ctx.rect(left, top, width, height);
+    ctx.clip();
+    ctx.font = `${Math.round(11 * r)}px system-ui, sans-serif`;
+    ctx.textAlign = 'left';
+    ctx.textBaseline = 'top';
+    for (const b of getBands()) {
+      const x0 = Math.max(left, u.valToPos(b.x0, 'x', true));
+      const x1 = Math.min(left + width, u.valToPos(b.x1, 'x', true));
+      if (!(x1 > x0)) continue;
+      ctx.strokeStyle = hexA(b.color, 0.45);
+      ctx.lineWidth = r;
+      for (let x = x0 - height; x < x1; x += 9 * r) {
+        const a = Math.max(x, x0), e = Math.min(x + height, x1);
+        ctx.beginPath();
+        ctx.moveTo(a, top + height - (a - x));
+        ctx.lineTo(e, top + height - (e - x));
+        ctx.stroke();
+      }
+      const text = `mode ${b.mode} unstable`;
+      const tw = ctx.measureText(text).width;
+      if (x1 - x0 < tw + 8 * r) continue;
+      const y = top + (3 + (b.mode - 1) * 15) * r;
+      ctx.fillStyle = 'rgba(255,255,255,0.9)';
+      ctx.fillRect(x0 + 3 * r, y - r, tw + 4 * r, 14 * r);
+      ctx.fillStyle = b.color;
+      ctx.fillText(text, x0 + 5 * r, y);
+    }
+    ctx.restore();
+  };
 }
 
 export function mount(ctx) {
@@ -290,6 +327,7 @@ export function mount(ctx) {
       series: [...modeSeries, ...lineSeries],
       height: 260,
       bands: () => plotBands(resonanceRow(r, rowIndex)),
+      hooks: { draw: [bandMarks(() => plotBands(resonanceRow(r, rowIndex)))] },
       ariaLabel: 'Effective frequency of each mode against flap frequency, with the lines n·f_d and the unstable bands shaded',
       keys: true,
     });
@@ -309,6 +347,7 @@ export function mount(ctx) {
       series: row0.modes.map((m, k) => ({ label: `mode ${k + 1}: max |λ|`, unit: '', color: MODE_COLORS[k % MODE_COLORS.length], width: 2 })),
       height: 170,
       bands: () => plotBands(resonanceRow(r, rowIndex)),
+      hooks: { draw: [bandMarks(() => plotBands(resonanceRow(r, rowIndex)))] },
       ariaLabel: 'Largest Floquet multiplier modulus of each mode against flap frequency; above 1 is unstable',
       keys: true,
     });
@@ -399,7 +438,7 @@ export function mount(ctx) {
         xLabel: 'flap frequency f_d (Hz)',
         yLabel: 'frequency f (Hz)',
         series: fPlot.exportSeries(),
-        bands: plotBands(row).map((b) => ({ ...b, label: b.label || '' })),
+        bands: plotBands(row).map((b) => ({ x0: b.x0, x1: b.x1, color: b.color, label: b.x1 - b.x0 > 0.06 * (row.fd[row.fd.length - 1] - row.fd[0]) ? `mode ${b.mode} unstable` : '' })),
         note: 'Shaded: Floquet-unstable (largest |multiplier| > 1). Grey: n·f_d. ' + plain(resonanceSummary(result, rowIndex).sentence),
       };
     },
