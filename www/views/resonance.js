@@ -12,7 +12,7 @@ import { describe, toQuery } from '../state.js';
 import { toCSV } from '../export.js';
 import { resonanceSummary, resonanceCrossings, bands, fmt } from '../experiments.js';
 
-export const title = 'Resonance map: f_{eff} and stability vs flap frequency';
+export const title = 'Resonance map: effective frequency and stability vs flap frequency';
 
 const MODE_COLORS = ['#1f5fbf', '#c2410c', '#2e7d32', '#7b1fa2'];
 const N_LINES = 4;
@@ -205,7 +205,7 @@ function plotBands(row) {
 
 /**
  * uPlot draw hook: hatches each unstable band (so it does not rely on colour) and writes
- * "mode k unstable" inside the bands wide enough for it, top-left, one row per mode.
+ * "mode k unstable" inside the bands wide enough for it, bottom-left, one row per mode.
  */
 function bandMarks(getBands) {
   return (u) => {
@@ -235,7 +235,7 @@ function bandMarks(getBands) {
       const text = `mode ${b.mode} unstable`;
       const tw = ctx.measureText(text).width;
       if (x1 - x0 < tw + 8 * r) continue;
-      const y = top + (3 + (b.mode - 1) * 15) * r;
+      const y = top + height - (17 + (b.mode - 1) * 15) * r;
       ctx.fillStyle = 'rgba(255,255,255,0.9)';
       ctx.fillRect(x0 + 3 * r, y - r, tw + 4 * r, 14 * r);
       ctx.fillStyle = b.color;
