@@ -59,3 +59,23 @@ export function shares(a, k) {
     { key: 'coriolis', label: 'Coriolis', value: c.coriolis },
   ];
 }
+
+/**
+ * A display envelope: `env` averaged over a sliding window of `width` samples (one flap
+ * period), centred, so the ripple at the flap frequency and its harmonics cancels and the
+ * beat's swell and fade remain. The raw envelope stays what the CSV exports.
+ */
+export function smooth(env, width) {
+  const n = env.length;
+  const w = Math.max(1, Math.round(width));
+  if (w <= 1 || n === 0) return Float64Array.from(env);
+  const c = new Float64Array(n + 1);
+  for (let i = 0; i < n; i++) c[i + 1] = c[i] + env[i];
+  const out = new Float64Array(n);
+  const h = Math.floor(w / 2);
+  for (let i = 0; i < n; i++) {
+    const a = Math.max(0, i - h), b = Math.min(n, i - h + w);
+    out[i] = (c[b] - c[a]) / (b - a);
+  }
+  return out;
+}

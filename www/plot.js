@@ -147,6 +147,7 @@ export function linePlot(parent, spec) {
           ctx.save();
           ctx.font = `${Math.round(11 * r)}px system-ui, sans-serif`;
           ctx.textBaseline = 'top';
+          ctx.textAlign = 'left';
           const marks = (spec.markers ? spec.markers() : []).map((m) => ({ ...m, px: u.valToPos(m.x, 'x', true) })).filter((m) => m.px >= left && m.px <= left + w);
           const rows = placeLabels(marks.map((m) => ({ x: m.px + 3 * r, width: m.label ? ctx.measureText(plain(m.label)).width : 0 })), { gap: 4 * r, maxRows: 3 });
           marks.forEach((m, i) => {
@@ -232,17 +233,23 @@ export function linePlot(parent, spec) {
       else if (e.key === '-' || e.key === '_') a = [x.min - 0.5 * span, x.max + 0.5 * span];
       else if (e.key === '0' || e.key === 'Home') {
         e.preventDefault();
+        if (spec.onUser) spec.onUser('reset');
         if (spec.onReset) spec.onReset();
         else u.setScale('x', { min: lo, max: hi });
         return;
       } else return;
       e.preventDefault();
+      if (spec.onUser) spec.onUser('key');
       let [m0, m1] = a;
       const w = Math.min(m1 - m0, hi - lo);
       if (m0 < lo) { m0 = lo; m1 = lo + w; }
       if (m1 > hi) { m1 = hi; m0 = hi - w; }
       u.setScale('x', { min: m0, max: m1 });
     });
+  }
+  if (spec.onUser) {
+    u.over.addEventListener('dblclick', () => spec.onUser('dblclick'));
+    opts.hooks.setSelect = [...(opts.hooks.setSelect || [])];
   }
   let ro = null;
   if (typeof ResizeObserver === 'function') {
@@ -260,7 +267,8 @@ export function linePlot(parent, spec) {
     /** New data; keeps `keepX` ([min, max]) as the x window when given. */
     setData(data, keepX = null) {
       u.setData(data);
-      if (keepX) u.setScale('x', { min: keepX[0], max: keepX[1] });
+      // uPlot commits setData in a microtask (auto-ranging x to the data); the window goes after it.
+      if (keepX) queueMicrotask(() => u.setScale('x', { min: keepX[0], max: keepX[1] }));
     },
     setHeight(h) {
       if (Math.abs(h - u.height) > 2) u.setSize({ width: u.width, height: h });

@@ -158,7 +158,7 @@ export function fitDistance(cam, pts, width, height, margin = 0.05) {
   let lo = cam.distance * 0.05, hi = cam.distance;
   let guard = 0;
   while (!inside(hi) && guard++ < 40) hi *= 1.5;
-  for (let it = 0; it < 40; it++) {
+  for (let it = 0; it < 26; it++) {
     const mid = 0.5 * (lo + hi);
     if (inside(mid)) hi = mid;
     else lo = mid;
@@ -192,14 +192,14 @@ export function projectedArea(cam, nodes, triangles, pose, width, height) {
  * projected area over the stroke) while keeping the stroke seen from above its plane. Returns
  * { camera, coverage } (coverage: mean wing area / image area).
  */
-export function bestView(span, nodes, triangles, poses, width, height, { lift = 0, margin = 0.04 } = {}) {
+export function bestView(span, nodes, triangles, poses, width, height, { lift = 0, margin = 0.03 } = {}) {
   const base = defaultCamera(span);
   const stride = Math.max(1, Math.floor(nodes.length / 3 / 400));
   const pts = posePoints(nodes, poses, { stride, lift });
   const few = poses.filter((_, j) => j % Math.max(1, Math.floor(poses.length / 8)) === 0);
   let best = null;
-  for (const dyaw of [-0.6, -0.3, 0, 0.3, 0.6]) {
-    for (const pitch of [0.35, 0.55, 0.8]) {
+  for (const dyaw of [-0.9, -0.6, -0.3, 0, 0.3, 0.6, 0.9]) {
+    for (const pitch of [0.7, 0.9, 1.1]) {
       const cam0 = { ...base, yaw: base.yaw + dyaw, pitch };
       const d = fitDistance(cam0, pts, width, height, margin);
       const cam = { ...cam0, distance: d };

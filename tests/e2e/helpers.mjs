@@ -92,9 +92,9 @@ export async function pngStats(page, buf) {
  * Bounding box of the foreground (pixels unlike the most common colour by more than `tol` in
  * summed RGB) of a PNG, decoded in the page: { x0, y0, x1, y1, width, height, share }.
  */
-export async function pngForeground(page, buf, tol = 30) {
+export async function pngForeground(page, buf, tol = 30, inset = 0) {
   const b64 = buf.toString('base64');
-  return page.evaluate(async ([data, tol]) => {
+  return page.evaluate(async ([data, tol, inset]) => {
     const img = new Image();
     img.src = `data:image/png;base64,${data}`;
     await img.decode();
@@ -111,8 +111,8 @@ export async function pngForeground(page, buf, tol = 30) {
     }
     const bg = [...count.entries()].sort((x, y) => y[1] - x[1])[0][0];
     let x0 = Infinity, y0 = Infinity, x1 = -1, y1 = -1, fg = 0;
-    for (let y = 0; y < c.height; y++) {
-      for (let x = 0; x < c.width; x++) {
+    for (let y = inset; y < c.height - inset; y++) {
+      for (let x = inset; x < c.width - inset; x++) {
         const i = 4 * (y * c.width + x);
         if (Math.abs(d[i] - (bg >> 16)) + Math.abs(d[i + 1] - ((bg >> 8) & 255)) + Math.abs(d[i + 2] - (bg & 255)) > tol) {
           fg++;
@@ -124,7 +124,7 @@ export async function pngForeground(page, buf, tol = 30) {
       }
     }
     return { x0, y0, x1, y1, width: c.width, height: c.height, share: fg / (c.width * c.height) };
-  }, [b64, tol]);
+  }, [b64, tol, inset]);
 }
 
 /** Whether every colour (hex #rrggbb) occurs exactly in a region (fractions of the image) of a PNG. */

@@ -65,15 +65,16 @@ for (const vp of SIZES) {
     const def = await pngStats(page, await canvas.screenshot({ path: path.join(OUT, `teach-${vp.name}-wing.png`) }));
     assert.ok(def.foreground >= 0.10, `foreground share ${def.foreground}`);
     // Without the axes and the stroke plane: the wing alone, over one flap period, never touches the edges.
+    await page.evaluate(() => { document.querySelector('section.wl-wing3d .wl-w3-options').open = true; });
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-axes"]');
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-plane"]');
     const shares = [];
     for (let j = 0; j < 12; j++) {
       await page.evaluate((t) => document.querySelector('wing-lab').wing3d.setTime(t), 0.5 + (j * 0.04) / 12);
-      const fg = await pngForeground(page, await canvas.screenshot());
+      const fg = await pngForeground(page, await canvas.screenshot(), 30, 2);
       shares.push(fg.share);
       assert.ok(fg.x1 >= 0, 'the wing is drawn');
-      assert.ok(fg.x0 > 1 && fg.y0 > 1 && fg.x1 < fg.width - 2 && fg.y1 < fg.height - 2, `pose ${j}: foreground box ${JSON.stringify(fg)} touches the edge`);
+      assert.ok(fg.x0 > 3 && fg.y0 > 3 && fg.x1 < fg.width - 4 && fg.y1 < fg.height - 4, `pose ${j}: foreground box ${JSON.stringify(fg)} touches the edge`);
     }
     assert.ok(Math.min(...shares) > 0.05, `the wing alone is large on screen: ${shares.map((s) => s.toFixed(3))}`);
     assert.deepEqual(problems, []);
@@ -123,6 +124,8 @@ for (const vp of SIZES) {
       const lab = document.querySelector('wing-lab');
       for (const e of lab.querySelectorAll(sel)) {
         if (e.disabled || e.tabIndex < 0) continue;
+        const closed = e.closest('details:not([open])');
+        if (closed && e.tagName !== 'SUMMARY') continue;
         const r = e.getBoundingClientRect();
         const cs = getComputedStyle(e);
         if (r.width === 0 || r.height === 0 || cs.visibility === 'hidden') continue;
@@ -141,7 +144,7 @@ for (const vp of SIZES) {
       const idx = await page.evaluate(() => document.activeElement && document.activeElement.dataset ? document.activeElement.dataset.tabProbe : undefined);
       if (idx !== undefined && !order.includes(Number(idx))) order.push(Number(idx));
     }
-    assert.equal(order.length, items.length, 'every control is reachable by Tab');
+    assert.equal(order.length, items.length, `every control is reachable by Tab; missing: ${JSON.stringify(items.filter((it) => !order.includes(it.i)).map((it) => [it.panel, it.tag, it.text]))}`);
     const seq = order.map((i) => items[i]);
     // Panels are visited in reading order (top first, then left), each panel once.
     const panelsSeen = [];

@@ -42,3 +42,16 @@ test('beatWindow: no beat, or one too long for the run, shows the whole run', ()
 test('shares lists the three force terms', () => {
   assert.deepEqual(shares(analysis(), 0).map((s) => s.value), [17.8, 3.2, 53.8]);
 });
+
+test('smooth: a one-period moving average removes the ripple and keeps the slow swell', async () => {
+  const { smooth } = await import('../../www/beat.js');
+  const n = 4000, per = 400;
+  const env = Float64Array.from({ length: n }, (_, i) => 1 + 0.5 * Math.sin((2 * Math.PI * i) / 2000) + 0.2 * Math.sin((2 * Math.PI * i) / per));
+  const s = smooth(env, per);
+  for (let i = per; i < n - per; i += 37) {
+    // the swell survives, attenuated only by the window's own sinc factor (0.935 here)
+    const g = Math.sin((Math.PI * per) / 2000) / ((Math.PI * per) / 2000);
+    const slow = 1 + 0.5 * g * Math.sin((2 * Math.PI * (i - 0.5)) / 2000);
+    assert.ok(Math.abs(s[i] - slow) < 2e-3, `${i}: ${s[i]} vs ${slow}`);
+  }
+});

@@ -6,7 +6,7 @@
 import { el, rich, isTouch } from '../dom.js';
 import { fmt, plain, UNITS } from '../format.js';
 import { decimate } from '../decimate.js';
-import { beatInfo, beatWindow, shares } from '../beat.js';
+import { beatInfo, beatWindow, shares, smooth } from '../beat.js';
 import { linePlot, color } from '../plot.js';
 import { toQuery, describe } from '../state.js';
 
@@ -29,7 +29,7 @@ export function mount(ctx) {
   let bw = null;
   let win = null;
   let userWin = false;
-  let ours = false;
+  let overview = null;
   const main = linePlot(section, {
     name: 'time',
     title: 'Responses',
@@ -42,7 +42,7 @@ export function mount(ctx) {
       { label: 'Centrifugal response', color: color('centrifugal'), width: 1 },
       { label: 'Coriolis response', color: color('coriolis'), width: 1.6 },
       { label: 'Total', color: color('total'), width: 1.2 },
-      { label: 'Coriolis envelope ±', color: color('envelope'), width: 2, with: [5] },
+      { label: 'Coriolis envelope ± (one-flap average)', color: color('envelope'), width: 2, with: [5] },
       { label: '−envelope', color: color('envelope'), width: 2, legend: false },
     ],
     height: 230,
@@ -61,13 +61,15 @@ export function mount(ctx) {
       return out;
     },
     onReset: () => resetWindow(),
+    onUser: (what) => { if (what !== 'reset') userWin = true; },
     hooks: {
+      // a drag across the plot zooms (uPlot sets the scale itself): the user's window from now on
+      setSelect: [(u) => { if (u.select.width > 2) userWin = true; }],
       setScale: [
         (u, key) => {
           if (key !== 'x' || u.scales.x.min == null) return;
-          if (!ours) userWin = true;
           win = [u.scales.x.min, u.scales.x.max];
-          overview.redraw();
+          if (overview) overview.redraw();
         },
       ],
     },
@@ -84,7 +86,7 @@ export function mount(ctx) {
   });
   main.box.title = touch ? 'Tap to show this instant in the 3-D wing' : 'Click to show this instant in the 3-D wing';
 
-  const overview = linePlot(section, {
+  overview = linePlot(section, {
     name: 'time-overview',
     title: 'Whole run',
     ariaLabel: 'Overview of the whole run (total response and envelope); the shaded window is what the responses plot shows',
@@ -102,11 +104,11 @@ export function mount(ctx) {
     hooks: {
       setSelect: [
         (u) => {
+          const px = u.select.width;
           const a = u.posToVal(u.select.left, 'x');
-          const b = u.posToVal(u.select.left + u.select.width, 'x');
+          const b = u.posToVal(u.select.left + px, 'x');
           u.setSelect({ left: 0, width: 0, top: 0, height: 0 }, false);
-          if (!(b > a)) return;
-          if (u.select.width < 3 || b - a < 1e-4) return;
+          if (!(b > a) || px < 3 || b - a < 1e-4) return;
           userWin = true;
           setWindow([a, b]);
         },
@@ -142,11 +144,9 @@ export function mount(ctx) {
     const span = Math.min(b - a, hi - lo);
     if (a < lo) { a = lo; b = lo + span; }
     if (b > hi) { b = hi; a = hi - span; }
-    ours = true;
     main.u.setScale('x', { min: a, max: b });
-    ours = false;
     win = [a, b];
-    overview.redraw();
+    if (overview) overview.redraw();
   }
   function resetWindow() {
     userWin = false;
@@ -201,7 +201,8 @@ export function mount(ctx) {
     const a = r.analysis;
     const k = r.k;
     const m = a.sim.modes[k];
-    const env = a.envelope[k];
+    // The core's envelope, averaged over one flap period for display (its flap-rate ripple hides the beat).
+    const env = smooth(a.envelope[k], a.sim.sample_rate_hz / a.sim.flap_freq_hz);
     const neg = new Float64Array(env.length);
     for (let i = 0; i < env.length; i++) neg[i] = -env[i];
     beat = beatInfo(a, k);
@@ -209,9 +210,7 @@ export function mount(ctx) {
     const [lo, hi] = [a.sim.t[0], a.sim.t[a.sim.t.length - 1]];
     let w = userWin && win ? [Math.max(lo, win[0]), Math.min(hi, win[1])] : [bw.x0, bw.x1];
     if (!(w[1] > w[0])) w = [bw.x0, bw.x1];
-    ours = true;
     main.setData([a.sim.t, m.q.euler, m.q.centrifugal, m.q.coriolis, m.q.total, env, neg], w);
-    ours = false;
     win = w;
     overview.setData(decimate(a.sim.t, [m.q.total, env], Math.max(200, Math.min(800, Math.round(overview.u.width || 400)))));
     drawBeat(a, k, s);

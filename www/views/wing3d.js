@@ -233,7 +233,7 @@ export function mount(ctx) {
       box.dataset.coverage = best.coverage.toFixed(3);
     } else {
       const stride = Math.max(1, Math.floor(fe.nodes.length / 3 / 400));
-      const d = S.fitDistance(cam, S.posePoints(fe.nodes, ps, { stride, lift }), canvas.width, canvas.height, 0.04);
+      const d = S.fitDistance(cam, S.posePoints(fe.nodes, ps, { stride, lift }), canvas.width, canvas.height, 0.03);
       moveCamera({ ...cam, distance: d });
     }
     fitKey = 'fitted';
@@ -249,7 +249,8 @@ export function mount(ctx) {
     view.set_strain_range(c > 0 && ranges && ranges[c] > 0 ? ranges[c] : null);
   }
 
-  /** New analysis: time range, colour ranges and deflection of the run, camera fit, redraw. */
+  /** New analysis: time range now; colour ranges, run deflection and camera fit on the next frame. */
+  let dirty = false;
   function onResult() {
     const s = store.get();
     const r = s.result;
@@ -260,7 +261,17 @@ export function mount(ctx) {
     time.step = String(1 / a.sim.sample_rate_hz);
     if (s.t3d != null && s.t3d > dur) store.set({ t3d: 0 });
     if (!exagTouched) exag.value = s.modes === 'fe' ? '0' : '1';
+    dirty = true;
     if (!view || !fe) return;
+    if (!pending) pending = requestAnimationFrame(() => { pending = 0; if (!store.get().playing) draw(); else refresh(); });
+  }
+
+  /** The per-run work, kept out of the slider's own redraw: ranges, deflection, camera fit. */
+  function refresh() {
+    if (!dirty || !view || !fe) return;
+    dirty = false;
+    const s = store.get();
+    const a = s.result.analysis;
     const qs = a.sim.modes.map((m) => m.q.total);
     const n = fe.nodes.length / 3;
     ranges = S.strainRanges(fe.strain_nodes, n, qs);
@@ -270,9 +281,6 @@ export function mount(ctx) {
     if (key !== fitKey) {
       fit(!fitKey);
       fitKey = key;
-    }
-    if (!s.playing && !pending) {
-      pending = requestAnimationFrame(() => { pending = 0; draw(); });
     }
   }
 
@@ -362,6 +370,7 @@ export function mount(ctx) {
     describeTime();
     time.value = String(s.t3d ?? 0);
     if (!view || !r || !r.angles) return;
+    refresh();
     const a = r.analysis;
     const n = a.sim.t.length;
     const i = Math.min(n - 1, Math.max(0, Math.round((s.t3d ?? 0) * a.sim.sample_rate_hz)));
