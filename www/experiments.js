@@ -178,7 +178,7 @@ export const EXPERIMENTS = [
     figure: 'Fig. 5',
     params: {},
     mode: 0,
-    look: 'Look at the Coriolis response (green) on the responses plot and its dashed envelope: the amplitude swells and fades regularly — the beat.',
+    look: 'Look at the Coriolis response (green) on the responses plot and its envelope (red): the amplitude swells and fades regularly — the beat; the shading marks one beat period.',
     predict(a, ctx = {}) {
       const k = ctx.mode ?? 0;
       const b = coriolisBeat(a, k);
@@ -221,7 +221,7 @@ export const EXPERIMENTS = [
     figure: 'Fig. 8',
     params: { zeta: 0.01, duration: 10 },
     mode: 0,
-    look: 'Look at the Coriolis envelope on the responses plot over the 10 s run: it swings strongly at first, then settles to a steady amplitude as the free vibration dies out.',
+    look: 'Look at the overview of the whole 10 s run under the responses plot: the envelope (red) swings strongly at first, then settles to a steady amplitude as the free vibration dies out.',
     predict(a, ctx = {}) {
       const k = ctx.mode ?? 0;
       const m = a.sim.modes[k];
@@ -318,7 +318,7 @@ export const EXPERIMENTS = [
     params: { flap_hz: 29, duration: 4 },
     mode: 0,
     study: { kind: 'resonance', opts: { from_hz: 5, to_hz: 60, points: 221 } },
-    look: 'Look at the Coriolis envelope: the beats are far slower and larger than in the paper case, because twice the flap frequency sits close to the wing’s effective natural frequency.',
+    look: 'Look at the Coriolis envelope (red): the beats are far slower and larger than in the paper case, because twice the flap frequency sits close to the wing’s effective natural frequency.',
     predict(a, ctx = {}) {
       const k = ctx.mode ?? 0;
       const m = a.sim.modes[k];
