@@ -156,6 +156,14 @@ test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, can
   const lines = csv.trim().split('\n').filter((l) => !l.startsWith('#'));
   assert.match(lines[0], /^flap_freq \(Hz\),mode1_effective_freq \(Hz\),mode1_max_multiplier_modulus,mode1_beat_period \(s\)/);
   assert.equal(lines.length, 222);
+  // PNG and SVG of the f_eff plot as a figure (title, legend, parameter line), PNG at 2×.
+  for (const kind of ['png', 'svg']) {
+    const [d] = await Promise.all([page.waitForEvent('download'), page.click(`wing-lab [data-panel="resonance"] [data-export="${kind}"]`)]);
+    assert.equal(d.suggestedFilename(), `wingbeat-resonance.${kind}`);
+    assert.ok(fs.statSync(await d.path()).size > 5000);
+  }
+  const ex = await page.evaluate(() => document.querySelector('wing-lab').lastExport);
+  assert.equal(ex.kind, 'svg');
   // Screenshots of the panel at both sizes.
   await page.locator(box).scrollIntoViewIfNeeded();
   await page.locator(box).screenshot({ path: path.join(OUT, 'resonance-1280.png') });

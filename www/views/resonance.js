@@ -245,6 +245,18 @@ function bandMarks(getBands) {
   };
 }
 
+/**
+ * The export figure has no y-range option: the n·f_d lines (series after the modes) are cut
+ * where they leave the f_eff range (1.15 × the largest f_eff), so the figure keeps the plot's
+ * scale instead of stretching to 4·f_d.
+ */
+function clipLines(series, nModes) {
+  let hi = 10;
+  for (const s of series.slice(0, nModes)) for (const v of s.y) if (v != null && Number.isFinite(v)) hi = Math.max(hi, v);
+  const top = 1.15 * hi;
+  return series.map((s, i) => (i < nModes ? s : { ...s, y: Array.from(s.y, (v) => (v != null && v <= top ? v : null)) }));
+}
+
 export function mount(ctx) {
   const { store, section, engine } = ctx;
   const uid = ctx.id('res');
@@ -437,8 +449,8 @@ export function mount(ctx) {
         xRange: fPlot.xWindow(),
         xLabel: 'flap frequency f_d (Hz)',
         yLabel: 'frequency f (Hz)',
-        series: fPlot.exportSeries(),
-        bands: plotBands(row).map((b) => ({ x0: b.x0, x1: b.x1, color: b.color, label: b.x1 - b.x0 > 0.06 * (row.fd[row.fd.length - 1] - row.fd[0]) ? `mode ${b.mode} unstable` : '' })),
+        series: clipLines(fPlot.exportSeries(), row.modes.length),
+        bands: plotBands(row).map((b) => ({ x0: b.x0, x1: b.x1, color: b.color, fill: b.fill, label: b.x1 - b.x0 > 0.06 * (row.fd[row.fd.length - 1] - row.fd[0]) ? `mode ${b.mode} unstable` : '' })),
         note: 'Shaded: Floquet-unstable (largest |multiplier| > 1). Grey: n·f_d. ' + plain(resonanceSummary(result, rowIndex).sentence),
       };
     },
