@@ -124,8 +124,13 @@ export function mount(ctx) {
         const sec = section.parentElement && section.parentElement.querySelector(`[data-panel="${target}"]`);
         if (!sec) return;
         sec.scrollIntoView({ behavior: 'smooth', block: 'start' });
-        const h = sec.querySelector(e.study.kind === 'resonance' ? '[data-run="resonance"]' : `[data-study="${e.study.kind}"] [data-run]`);
-        if (h) h.focus({ preventScroll: true });
+        const study = sec.querySelector(`[data-study="${e.study.kind === 'resonance' ? 'resonance' : e.study.kind}"]`);
+        const run = study && study.querySelector('[data-run]');
+        if (run) {
+          run.focus({ preventScroll: true });
+          const out = study.querySelector('.wl-study-out');
+          if (!study.dataset.done && !(out && out.childElementCount) && !run.disabled) run.click(); // show it computed, not empty
+        }
       });
       parts.push(go);
     }
