@@ -160,7 +160,7 @@ export function createEngine(deps = {}) {
       return { cfg, k, params, analysis: a, angles, compute_ms: t1 - t0 };
     },
     /**
-     * Runs a study in the worker: kind ∈ sweep | icmap | damping | reproduce | fe (see
+     * Runs a study in the worker: kind ∈ sweep | icmap | damping | resonance | reproduce | fe (see
      * www/worker.js). Returns { id, promise } where promise resolves to { result, ms }.
      */
     run(kind, payload = {}, onProgress = () => {}) {
@@ -175,6 +175,14 @@ export function createEngine(deps = {}) {
         }
       });
       return { id, promise };
+    },
+    /**
+     * The resonance map (wasm `resonanceMap`, run in the worker): Floquet f_eff and largest
+     * |multiplier| of every mode over opts = { from_hz, to_hz, points, alpha0_values? }.
+     * Same return value as run(): { id, promise } (cancel with cancel(id)).
+     */
+    resonanceMap(cfg, opts, onProgress = () => {}) {
+      return engine.run('resonance', { cfg, opts }, onProgress);
     },
     /** Whether job `id` is still running. */
     running(id) {

@@ -106,6 +106,18 @@ test('worker jobs: progress, result, error; one worker for all jobs', async () =
   assert.equal(e.running(a.id), false);
 });
 
+test('resonanceMap is a worker job of kind resonance with its options', async () => {
+  let w;
+  const e = createEngine({ load: async () => fakeWasm(), createWorker: () => (w = fakeWorker()) });
+  const prog = [];
+  const j = e.resonanceMap({ c: 1 }, { from_hz: 5, to_hz: 60, points: 3 }, (i, n) => prog.push([i, n]));
+  assert.deepEqual(w.posted[0], { id: j.id, kind: 'resonance', cfg: { c: 1 }, opts: { from_hz: 5, to_hz: 60, points: 3 } });
+  w.reply({ id: j.id, progress: [1, 3] });
+  w.reply({ id: j.id, result: { flap_hz: [5, 32.5, 60] }, ms: 4 });
+  assert.deepEqual((await j.promise).result.flap_hz, [5, 32.5, 60]);
+  assert.deepEqual(prog, [[1, 3]]);
+});
+
 test('cancel terminates the worker, fails its jobs, and the next job gets a fresh worker', async () => {
   const workers = [];
   const e = createEngine({ load: async () => fakeWasm(), createWorker: () => { const w = fakeWorker(); workers.push(w); return w; } });

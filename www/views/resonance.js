@@ -404,7 +404,7 @@ export function mount(ctx) {
     prog.hidden = false;
     prog.removeAttribute('value');
     status.textContent = 'computing…';
-    const job = engine.run('resonance', { cfg: engine.config(store.get()), opts: o }, (done, total) => {
+    const job = engine.resonanceMap(engine.config(store.get()), o, (done, total) => {
       prog.max = total;
       prog.value = done;
       status.textContent = `${done} / ${total}`;
