@@ -14,6 +14,7 @@
 // still recomputed from whatever the analysis returns.
 
 import { defaults, toQuery } from './state.js';
+import { UNITS } from './format.js';
 
 /**
  * Compact number formatting in the lab's rich-label markup (www/format.js): exponents as
@@ -303,7 +304,7 @@ export const EXPERIMENTS = [
       const checks = [];
       const r = ctx.study;
       if (r && r.coriolis_percent) {
-        lines.push(`Over ${r.n_q}×${r.n_qdot} starts spanning the forced response’s own range (q_0 ${fmt(r.q0[0], 3)} … ${fmt(r.q0[r.q0.length - 1], 3)}, “${r.attribution}” attribution) the share runs from ${fmt(r.min_percent, 3)} % to ${fmt(r.max_percent, 3)} %; ${fmt(100 * r.fraction_above_60, 3)} % of the starts give more than 60 % (the paper: most of them).`);
+        lines.push(`Over ${r.n_q}×${r.n_qdot} starts spanning the forced response’s own range (q_0 from ${fmt(r.q0[0], 3)} to ${fmt(r.q0[r.q0.length - 1], 3)} ${UNITS.q.label}, “${r.attribution}” attribution) the share runs from ${fmt(r.min_percent, 3)} % to ${fmt(r.max_percent, 3)} %; ${fmt(100 * r.fraction_above_60, 3)} % of the starts give more than 60 % (the paper: most of them).`);
         checks.push({ id: 'rest-inside', label: `The share from rest (${fmt(rest, 4)} %) lies inside the map’s range ${fmt(r.min_percent, 3)}–${fmt(r.max_percent, 3)} %`, holds: rest >= r.min_percent - 1e-9 && rest <= r.max_percent + 1e-9, value: rest, expected: [r.min_percent, r.max_percent] });
       } else {
         lines.push('The initial-condition map is computing in the worker…');
