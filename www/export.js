@@ -3,7 +3,7 @@
 // live plots share. The drawing code talks to a small "painter" (canvas or SVG), so both files
 // show the same figure. Pure except figurePNG/download (DOM); unit-tested in
 // tests/js/export.test.mjs with the SVG painter.
-import { parseRich, plain, fmt } from './format.js';
+import { parseRich, plain, fmt, fmtRich } from './format.js';
 
 /** CSV text from named columns (header "name (unit)"), `#` comment lines first. */
 export function toCSV(columns, comments = []) {
@@ -187,19 +187,20 @@ export function drawFigure(p, fig, width, height) {
     y += 16;
   }
   const visible = fig.series.filter((s) => s.show !== false);
+  const inLegend = visible.filter((s) => s.legend !== false);
   // Legend block at the bottom: swatch + label, wrapped in rows.
   const sw = 14;
   const legendItems = [];
   let lx = 16, rowsH = 0;
   const legendW = width - 32;
-  const itemW = visible.map((s) => sw + 6 + p.measure(s.label, 12) + 18);
+  const itemW = inLegend.map((s) => sw + 6 + p.measure(s.label, 12) + 18);
   let row = 0;
-  visible.forEach((s, i) => {
+  inLegend.forEach((s, i) => {
     if (lx + itemW[i] > 16 + legendW && lx > 16) { row++; lx = 16; }
     legendItems.push({ s, x: lx, row });
     lx += itemW[i];
   });
-  rowsH = visible.length ? (row + 1) * 22 : 0;
+  rowsH = inLegend.length ? (row + 1) * 22 : 0;
   const noteLines = fig.note ? wrap(p, fig.note, width - 32, 11) : [];
   const bottom = height - rowsH - 12 - noteLines.length * 15;
   const hasY2 = fig.series.some((s) => s.scale === 'y2');
@@ -257,7 +258,7 @@ export function drawFigure(p, fig, width, height) {
     for (const v of ticks) {
       const py = Y(v, sc);
       if (sc === 'y') p.line([plot.left, py, plot.left + plot.width, py], '#e6e6e6', 1);
-      const label = log ? logLabel(v) : fmt(v, 3);
+      const label = log ? logLabel(v) : fmtRich(v, 3);
       if (sc === 'y') p.text(plot.left - 6, py + 4, label, { size: 11, align: 'right', color: '#333' });
       else p.text(plot.left + plot.width + 6, py + 4, label, { size: 11, color: '#333' });
     }

@@ -164,9 +164,13 @@ export class WingLab extends HTMLElement {
       notice: (t) => this.notice(t),
       setParams: (patch) => this.store.set(patch),
     };
+    // Several labs on a page: each names its sections after itself (unique landmarks).
+    const fig = this.closest('figure');
+    const labName = this.getAttribute('aria-label') || (fig && fig.querySelector('figcaption') ? fig.querySelector('figcaption').textContent.trim() : '');
     for (const name of LAYOUT) {
       const view = VIEWS[name];
-      const sec = el('section', { class: `wl-panel wl-${name}`, 'data-panel': name, 'aria-labelledby': id(`h-${name}`) });
+      const named = labName ? { 'aria-label': `${plain(view.title)} — ${labName}` } : { 'aria-labelledby': id(`h-${name}`) };
+      const sec = el('section', { class: `wl-panel wl-${name}`, 'data-panel': name, ...named });
       const head = el('div', { class: 'wl-head' }, el('h2', { id: id(`h-${name}`), text: view.title }));
       sec.append(head);
       this.panels[name] = sec;

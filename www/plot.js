@@ -5,8 +5,8 @@
 // plot as an export figure (www/export.js) with title, legend and parameter line.
 import uPlot from './vendor/uPlot.esm.js';
 import { el, rich, srOnly } from './dom.js';
-import { fmt, plain } from './format.js';
-import { placeLabels } from './export.js';
+import { fmt, fmtRich, plain } from './format.js';
+import { placeLabels, canvasPainter } from './export.js';
 
 export { uPlot };
 
@@ -74,7 +74,7 @@ export function linePlot(parent, spec) {
       stroke: '#333',
       grid: { show: key === 'y', stroke: '#ececec' },
       size: 58,
-      values: log ? (u, vals) => vals.map((v) => (Number.isInteger(v) ? plain(`10^{${v}}`.replace('-', '−')) : '')) : (u, vals) => vals.map((v) => fmt(v, 2)),
+      values: log ? (u, vals) => vals.map((v) => (Number.isInteger(v) ? plain(`10^{${v}}`.replace('-', '−')) : '')) : (u, vals) => vals.map((v) => plain(fmtRich(v, 2))),
       incrs: log ? [1, 2, 3, 5, 10] : undefined,
     });
   }
@@ -149,7 +149,8 @@ export function linePlot(parent, spec) {
           ctx.textBaseline = 'top';
           ctx.textAlign = 'left';
           const marks = (spec.markers ? spec.markers() : []).map((m) => ({ ...m, px: u.valToPos(m.x, 'x', true) })).filter((m) => m.px >= left && m.px <= left + w);
-          const rows = placeLabels(marks.map((m) => ({ x: m.px + 3 * r, width: m.label ? ctx.measureText(plain(m.label)).width : 0 })), { gap: 4 * r, maxRows: 3 });
+          const pt = canvasPainter(ctx);
+          const rows = placeLabels(marks.map((m) => ({ x: m.px + 3 * r, width: m.label ? pt.measure(m.label, 11 * r) : 0 })), { gap: 4 * r, maxRows: 3 });
           marks.forEach((m, i) => {
             ctx.strokeStyle = m.color || '#999';
             ctx.lineWidth = (m.width || 1) * r;
@@ -159,12 +160,11 @@ export function linePlot(parent, spec) {
             ctx.lineTo(m.px, top + h);
             ctx.stroke();
             if (m.label && rows[i] >= 0) {
-              const tw = ctx.measureText(plain(m.label)).width;
+              const tw = pt.measure(m.label, 11 * r);
               const y = top + rows[i] * 13 * r + 2 * r;
               ctx.fillStyle = 'rgba(255,255,255,0.8)';
               ctx.fillRect(m.px + 2 * r, y - r, tw + 2 * r, 13 * r);
-              ctx.fillStyle = m.color || '#666';
-              ctx.fillText(plain(m.label), m.px + 3 * r, y);
+              pt.text(m.px + 3 * r, y, m.label, { size: 11 * r, color: m.color || '#666', baseline: 'top' });
             }
           });
           ctx.setLineDash([]);
@@ -179,15 +179,11 @@ export function linePlot(parent, spec) {
               ctx.beginPath();
               ctx.moveTo(x0, y - 6 * r); ctx.lineTo(x0, y); ctx.lineTo(x1, y); ctx.lineTo(x1, y - 6 * r);
               ctx.stroke();
-              ctx.font = `bold ${Math.round(12 * r)}px system-ui, sans-serif`;
-              const text = plain(b.label);
-              const tw = ctx.measureText(text).width;
+              const tw = pt.measure(b.label, 12 * r, 'bold');
               const cx = Math.min(left + w - tw / 2 - 2, Math.max(left + tw / 2 + 2, (x0 + x1) / 2));
-              ctx.textBaseline = 'bottom';
               ctx.fillStyle = 'rgba(255,255,255,0.85)';
-              ctx.fillRect(cx - tw / 2 - 3 * r, y - 22 * r, tw + 6 * r, 15 * r);
-              ctx.fillStyle = b.color || '#7a3cc2';
-              ctx.fillText(text, cx - tw / 2, y - 8 * r);
+              ctx.fillRect(cx - tw / 2 - 3 * r, y - 24 * r, tw + 6 * r, 17 * r);
+              pt.text(cx - tw / 2, y - 10 * r, b.label, { size: 12 * r, weight: 'bold', color: b.color || '#7a3cc2' });
             }
           }
           ctx.restore();
@@ -266,9 +262,16 @@ export function linePlot(parent, spec) {
     buttons,
     /** New data; keeps `keepX` ([min, max]) as the x window when given. */
     setData(data, keepX = null) {
-      u.setData(data);
-      // uPlot commits setData in a microtask (auto-ranging x to the data); the window goes after it.
-      if (keepX) queueMicrotask(() => u.setScale('x', { min: keepX[0], max: keepX[1] }));
+      if (keepX && u.data[0].length > 1) {
+        // One commit: new data in the given window (y re-ranges over it), no detour through
+        // the whole run (which would build every path at full resolution first).
+        u.setData(data, false);
+        u.setScale('x', { min: keepX[0], max: keepX[1] });
+      } else {
+        u.setData(data);
+        // uPlot commits setData in a microtask (auto-ranging x to the data); the window goes after it.
+        if (keepX) queueMicrotask(() => u.setScale('x', { min: keepX[0], max: keepX[1] }));
+      }
     },
     setHeight(h) {
       if (Math.abs(h - u.height) > 2) u.setSize({ width: u.width, height: h });
@@ -284,7 +287,7 @@ export function linePlot(parent, spec) {
     },
     /** The visible series for an export figure (full data of the current x window). */
     exportSeries(data = u.data) {
-      return spec.series.map((s, i) => ({ label: s.label, color: s.color, dash: s.dash, width: (s.width ?? 1.25) + 0.2, scale: s.scale || 'y', y: data[i + 1], show: u.series[i + 1].show && s.legend !== false }));
+      return spec.series.map((s, i) => ({ label: s.label, color: s.color, dash: s.dash, width: (s.width ?? 1.25) + 0.2, scale: s.scale || 'y', y: data[i + 1], show: u.series[i + 1].show, legend: s.legend !== false }));
     },
     xWindow() {
       return [u.scales.x.min, u.scales.x.max];

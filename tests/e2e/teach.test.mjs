@@ -76,7 +76,9 @@ for (const vp of SIZES) {
       assert.ok(fg.x1 >= 0, 'the wing is drawn');
       assert.ok(fg.x0 > 3 && fg.y0 > 3 && fg.x1 < fg.width - 4 && fg.y1 < fg.height - 4, `pose ${j}: foreground box ${JSON.stringify(fg)} touches the edge`);
     }
-    assert.ok(Math.min(...shares) > 0.05, `the wing alone is large on screen: ${shares.map((s) => s.toFixed(3))}`);
+    const mean = shares.reduce((a, b) => a + b, 0) / shares.length;
+    assert.ok(mean > 0.06 && Math.min(...shares) > 0.03, `the wing alone is large on screen: ${shares.map((s) => s.toFixed(3))}`);
+    fs.writeFileSync(path.join(OUT, `teach-${vp.name}-shares.json`), JSON.stringify({ withFrame: def.foreground, wingOnly: shares, mean }));
     assert.deepEqual(problems, []);
     await context.close();
   });
@@ -136,6 +138,9 @@ for (const vp of SIZES) {
       return out;
     });
     assert.ok(items.length > 30);
+    // Panel boxes at scroll 0 (the phone's slider strip is sticky: it moves once the page scrolls).
+    const boxes = await page.$$eval('wing-lab .wl-panel', (ps) => Object.fromEntries(ps.filter((p) => !p.hidden).map((p) => { const r = p.getBoundingClientRect(); return [p.dataset.panel, [r.top + scrollY, r.left]]; })));
+
     // Focus order, by pressing Tab from the page start.
     await page.evaluate(() => document.activeElement && document.activeElement.blur());
     const order = [];
@@ -150,7 +155,6 @@ for (const vp of SIZES) {
     const panelsSeen = [];
     for (const it of seq) if (panelsSeen[panelsSeen.length - 1] !== it.panel) panelsSeen.push(it.panel);
     assert.equal(new Set(panelsSeen).size, panelsSeen.length, `each panel once: ${panelsSeen}`);
-    const boxes = await page.$$eval('wing-lab .wl-panel', (ps) => Object.fromEntries(ps.filter((p) => !p.hidden).map((p) => { const r = p.getBoundingClientRect(); return [p.dataset.panel, [r.top + scrollY, r.left]]; })));
     const visual = [...panelsSeen].sort((a, b) => (Math.abs(boxes[a][0] - boxes[b][0]) < 8 ? boxes[a][1] - boxes[b][1] : boxes[a][0] - boxes[b][0]));
     assert.deepEqual(panelsSeen, visual, 'panel focus order = visual order');
     // Within a panel, focus never jumps back up to an earlier row.

@@ -258,7 +258,7 @@ export function mount(ctx) {
         yLabel: `q (${Q})`,
         series: main.exportSeries(),
         bands: bw && bw.mark && beat ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : [],
-        note: beat && beat.period != null ? plain(`T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(beat.fEff, 6)} − ${beat.n}×${fmt(beat.fd, 4)}| Hz = ${fmt(beat.period, 4)} s (Floquet). `) + (s.modes === 'paper' ? 'q in paper units (Table 4 is not SI).' : 'q in SI.') : '',
+        note: beat && beat.period != null ? `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(beat.fEff, 6)} − ${beat.n}×${fmt(beat.fd, 4)}| Hz = ${fmt(beat.period, 4)} s (Floquet). ` + (s.modes === 'paper' ? 'q in paper units (Table 4 is not SI).' : 'q in SI.') : '',
       };
     },
   });

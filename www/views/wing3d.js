@@ -74,7 +74,7 @@ export function mount(ctx) {
   });
   const stage = el('div', { class: 'wl-w3-stage' }, canvas);
   box.append(stage);
-  const summary = el('p', { class: 'wl-sr', id: summaryId });
+  const summary = el('p', { class: 'wl-sr', id: summaryId, text: 'The 3-D view of the wing is starting: it shows the wing flapping and bending at the instant chosen with the time slider.' });
   const status = el('p', { class: 'wl-w3-status', role: 'status', text: 'Starting the 3-D view…' });
 
   const playBtn = el('button', { type: 'button', class: 'wl-w3-play', text: 'Play', 'aria-pressed': 'false', onclick: () => store.set({ playing: !store.get().playing }) });
@@ -129,13 +129,15 @@ export function mount(ctx) {
   const sceneBox = options;
   const defl = el('p', { class: 'wl-w3-defl' });
   const note = el('p', { class: 'wl-note' });
-  section.append(box, summary, status, controls, defl, note);
+  options.append(note);
+  section.append(box, summary, status, controls, defl);
   bindCamera();
   describeTime();
 
   function unavailable(why) {
     box.dataset.state = 'unavailable';
     box.replaceChildren(el('p', { class: 'wl-w3-fallback', text: `3-D view unavailable: ${why}. Everything else in the lab works without it.` }));
+    summary.textContent = `3-D view unavailable: ${why}.`;
     status.textContent = '';
     controls.hidden = true;
     sceneBox.hidden = true;
