@@ -11,7 +11,7 @@
 //
 // Results carry the kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`),
 // from wasm `analyze` when it provides them and otherwise from ONE `anglesAt` call per
-// recompute, so the 3-D view never crosses into wasm per animation frame.
+// recompute (made lazily, on first read), so the 3-D view never crosses into wasm per frame.
 import { toConfig, FE_LAB_INPUT } from './state.js';
 
 const HERE = new URL('.', import.meta.url);
@@ -154,10 +154,22 @@ export function createEngine(deps = {}) {
       const k = Number(params.mode) - 1;
       const t0 = now();
       const a = normalise(wb.analyze(cfg, { detrend: params.detrend, segment_len: 8192 }, k));
-      let angles = a.angles && a.angles.alpha ? a.angles : null;
-      if (!angles && typeof wb.anglesAt === 'function') angles = splitAngles(wb.anglesAt(cfg, a.sim.t));
       const t1 = now();
-      return { cfg, k, params, analysis: a, angles, compute_ms: t1 - t0 };
+      const res = { cfg, k, params, analysis: a, compute_ms: t1 - t0 };
+      let angles = a.angles && a.angles.alpha ? a.angles : null;
+      if (angles || typeof wb.anglesAt !== 'function') res.angles = angles;
+      else {
+        // Older wasm builds: ONE anglesAt call for the whole run, made when a view first reads
+        // the angles (the 3-D view, on its next frame), so the slider's redraw does not wait.
+        Object.defineProperty(res, 'angles', {
+          enumerable: true,
+          get() {
+            if (!angles) angles = splitAngles(wb.anglesAt(cfg, a.sim.t));
+            return angles;
+          },
+        });
+      }
+      return res;
     },
     /**
      * Runs a study in the worker: kind ∈ sweep | icmap | damping | resonance | reproduce | fe (see

@@ -73,7 +73,14 @@ export function linePlot(parent, spec) {
       side: key === 'y2' ? 1 : 3,
       stroke: '#333',
       grid: { show: key === 'y', stroke: '#ececec' },
-      size: 58,
+      // wide enough for the longest tick label (e.g. "−2.5×10⁻⁶"), so nothing is clipped
+      size: (self, vals) => {
+        if (!vals || !vals.length) return 40;
+        const r = dpr();
+        self.ctx.font = `${Math.round(11 * r)}px system-ui, sans-serif`;
+        return Math.ceil(Math.max(...vals.map((v) => self.ctx.measureText(String(v)).width)) / r) + 16;
+      },
+      font: '11px system-ui, sans-serif',
       values: log ? (u, vals) => vals.map((v) => (Number.isInteger(v) ? plain(`10^{${v}}`.replace('-', '−')) : '')) : (u, vals) => vals.map((v) => plain(fmtRich(v, 2))),
       incrs: log ? [1, 2, 3, 5, 10] : undefined,
     });

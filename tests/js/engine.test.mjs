@@ -56,7 +56,10 @@ test('analyze builds the config from the parameters and returns angles from ONE 
   p.gamma0 = 0.1; p.mode = '2'; p.detrend = 'mean';
   const r = e.analyze(p);
   assert.equal(wb.calls.analyze, 1);
-  assert.equal(wb.calls.anglesAt, 1);
+  assert.equal(wb.calls.anglesAt, 0, 'angles are fetched when first read, not during the slider redraw');
+  assert.equal(r.angles.alpha.length, 5);
+  assert.equal(r.angles, r.angles);
+  assert.equal(wb.calls.anglesAt, 1, 'one crossing per recompute');
   assert.equal(wb.calls.last.k, 1);
   assert.deepEqual(wb.calls.last.opts, { detrend: 'mean', segment_len: 8192 });
   assert.equal(wb.calls.last.cfg.kinematics.gamma.harmonics[0].amplitude, 0.1);

@@ -58,6 +58,7 @@ export function mount(ctx) {
   let runDeflection = null;
   let raf = 0;
   let pending = 0;
+  let dirty = false;
   let io = null;
   let ro = null;
   const box = el('div', { class: 'wl-wing3d-box', 'data-wing3d': '', 'data-state': 'loading' });
@@ -87,7 +88,7 @@ export function mount(ctx) {
   const timeText = el('span', { class: 'wl-w3-time', 'aria-live': 'off' });
   const exag = el('input', { type: 'range', id: `${uid}-w3-exag`, min: 0, max: 3, step: 0.05, value: 1, 'aria-label': 'Deflection exaggeration, as a power of ten' });
   let exagTouched = false;
-  exag.addEventListener('input', () => { exagTouched = true; draw(); });
+  exag.addEventListener('input', () => { exagTouched = true; dirty = true; draw(); });
   const exagText = el('span', { class: 'wl-w3-exag' });
   const colour = el('select', { id: `${uid}-w3-colour`, 'aria-label': 'Colour the wing by' });
   for (const [v, t] of COLOURS) colour.append(el('option', { value: v, text: t }));
@@ -252,7 +253,6 @@ export function mount(ctx) {
   }
 
   /** New analysis: time range now; colour ranges, run deflection and camera fit on the next frame. */
-  let dirty = false;
   function onResult() {
     const s = store.get();
     const r = s.result;
@@ -279,7 +279,10 @@ export function mount(ctx) {
     ranges = S.strainRanges(fe.strain_nodes, n, qs);
     runDeflection = S.maxDeflection(fe.shapes, n, qs);
     applyRange();
-    const key = `${s.alpha0}/${s.beta0}/${s.gamma0}/${s.alpha_phase}/${s.beta_phase}/${s.gamma_phase}/${canvas.width}x${canvas.height}`;
+    // Refit when the stroke, the canvas or the drawn deflection (true × exaggeration) changes.
+    const lift = runDeflection * exaggeration();
+    const liftKey = lift > 0 ? Math.round(Math.log10(lift) * 8) : -99;
+    const key = `${s.alpha0}/${s.beta0}/${s.gamma0}/${s.alpha_phase}/${s.beta_phase}/${s.gamma_phase}/${canvas.width}x${canvas.height}/${liftKey}`;
     if (key !== fitKey) {
       fit(!fitKey);
       fitKey = key;
