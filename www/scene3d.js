@@ -96,6 +96,27 @@ export function rotate(alpha, beta, gamma, p) {
   return [x2, ca * y2 - sa * z2, sa * y2 + ca * z2];
 }
 
+/**
+ * The nodes that can be extreme on screen: the convex hull of the planform (x, y), as a flat
+ * [x, y, z, …] array with z set to the largest |z| (camber) of the wing, so that with a lift
+ * of ± that much every node lies inside their hull in 3-D. Fitting the camera to these few
+ * points gives the same bounding box as all nodes, hundreds of times cheaper.
+ */
+export function outline(nodes) {
+  const n = nodes.length / 3;
+  const xs = new Float64Array(n), ys = new Float64Array(n);
+  let zmax = 0;
+  for (let i = 0; i < n; i++) {
+    xs[i] = nodes[3 * i];
+    ys[i] = nodes[3 * i + 1];
+    zmax = Math.max(zmax, Math.abs(nodes[3 * i + 2]));
+  }
+  const h = hull2(xs, ys);
+  const out = new Float64Array(3 * h.length);
+  h.forEach((i, j) => { out[3 * j] = xs[i]; out[3 * j + 1] = ys[i]; out[3 * j + 2] = 0; });
+  return { nodes: out, zmax };
+}
+
 /** Span (largest x) of flat node coordinates [x, y, z, …]. */
 export function spanOf(nodes) {
   let s = 0;
@@ -194,8 +215,8 @@ export function projectedArea(cam, nodes, triangles, pose, width, height) {
  */
 export function bestView(span, nodes, triangles, poses, width, height, { lift = 0, margin = 0.03 } = {}) {
   const base = defaultCamera(span);
-  const stride = Math.max(1, Math.floor(nodes.length / 3 / 400));
-  const pts = posePoints(nodes, poses, { stride, lift });
+  const ol = outline(nodes);
+  const pts = posePoints(ol.nodes, poses, { lift: lift + ol.zmax });
   const few = poses.filter((_, j) => j % Math.max(1, Math.floor(poses.length / 8)) === 0);
   let best = null;
   for (const dyaw of [-0.9, -0.6, -0.3, 0, 0.3, 0.6, 0.9]) {
@@ -212,10 +233,40 @@ export function bestView(span, nodes, triangles, poses, width, height, { lift = 
   return best;
 }
 
-/** Convex hull (monotone chain) of 2-D points given as two arrays; returns vertex indices. */
+/**
+ * Convex hull (monotone chain) of 2-D points given as two arrays; returns vertex indices.
+ * Points strictly inside the polygon of the 16 directional extremes are dropped first
+ * (Akl–Toussaint), so long trajectories sort only their outer points.
+ */
 export function hull2(xs, ys) {
   const n = xs.length;
-  const idx = Array.from({ length: n }, (_, i) => i).sort((a, b) => xs[a] - xs[b] || ys[a] - ys[b]);
+  let cand = null;
+  if (n > 64) {
+    const ext = [];
+    for (let d = 0; d < 16; d++) {
+      const c = Math.cos((Math.PI * d) / 8), sn = Math.sin((Math.PI * d) / 8);
+      let best = 0, bv = -Infinity;
+      for (let i = 0; i < n; i++) {
+        const v = c * xs[i] + sn * ys[i];
+        if (v > bv) { bv = v; best = i; }
+      }
+      if (ext[ext.length - 1] !== best && ext[0] !== best) ext.push(best);
+    }
+    // ext is in angular order (counter-clockwise); keep points not strictly inside it
+    if (ext.length >= 3) {
+      cand = [];
+      const m = ext.length;
+      for (let i = 0; i < n; i++) {
+        let inside = true;
+        for (let j = 0; j < m; j++) {
+          const a = ext[j], b = ext[(j + 1) % m];
+          if ((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) <= 0) { inside = false; break; }
+        }
+        if (!inside) cand.push(i);
+      }
+    }
+  }
+  const idx = (cand || Array.from({ length: n }, (_, i) => i)).sort((a, b) => xs[a] - xs[b] || ys[a] - ys[b]);
   const cross = (o, a, b) => (xs[a] - xs[o]) * (ys[b] - ys[o]) - (ys[a] - ys[o]) * (xs[b] - xs[o]);
   const lower = [], upper = [];
   for (const i of idx) {
@@ -230,7 +281,7 @@ export function hull2(xs, ys) {
   upper.pop();
   lower.pop();
   const h = lower.concat(upper);
-  return h.length ? h : n ? [0] : [];
+  return h.length ? h : idx.length ? [idx[0]] : n ? [0] : [];
 }
 
 /**

@@ -100,3 +100,30 @@ test('strainRanges: one fixed range per component from the run’s extremes (rob
   for (let i = 0; i < 1000; i++) brute = Math.max(brute, Math.abs(0.001 * (q1[i] + q2[i])));
   assert.ok(Math.abs(dmax - brute) < 1e-15);
 });
+
+test('hull2 with the interior filter equals the plain hull; outline holds every node', () => {
+  const n = 3000;
+  const xs = Float64Array.from({ length: n }, (_, i) => Math.sin(i * 0.37) * (1 + 0.3 * Math.sin(i * 0.011)));
+  const ys = Float64Array.from({ length: n }, (_, i) => Math.cos(i * 0.23) * 0.5);
+  const h = S.hull2(xs, ys);
+  // every point is inside or on the hull polygon
+  for (let i = 0; i < n; i += 7) {
+    for (let j = 0; j < h.length; j++) {
+      const a = h[j], b = h[(j + 1) % h.length];
+      assert.ok((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) >= -1e-12);
+    }
+  }
+  const small = S.hull2(xs.slice(0, 50), ys.slice(0, 50));
+  assert.ok(small.length >= 3);
+  // outline: bbox of all nodes at any pose equals that of the outline with the camber lift
+  const nodes = [];
+  for (let i = 0; i <= 20; i++) for (let j = 0; j <= 8; j++) nodes.push(0.0025 * i, -0.003 * j * (1 - i / 25), 0.002 * Math.sin((Math.PI * j) / 8));
+  const N = Float64Array.from(nodes);
+  const ol = S.outline(N);
+  assert.ok(ol.nodes.length / 3 < 40);
+  const cam = { ...S.defaultCamera(0.05), pitch: 0.6 };
+  const poses = [[0.5, 0.3, 0.1], [-0.7, -0.4, 0]];
+  const all = S.bbox(cam, S.posePoints(N, poses), 640, 480);
+  const few = S.bbox(cam, S.posePoints(ol.nodes, poses, { lift: ol.zmax }), 640, 480);
+  assert.ok(few[0] <= all[0] + 1e-9 && few[1] <= all[1] + 1e-9 && few[2] >= all[2] - 1e-9 && few[3] >= all[3] - 1e-9);
+});

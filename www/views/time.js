@@ -153,9 +153,14 @@ export function mount(ctx) {
     if (bw) setWindow([bw.x0, bw.x1]);
   }
 
+  let beatSig = '';
+  let sharesSig = '';
   function drawBeat(a, k, s) {
     const b = beat;
     const m = a.sim.modes[k];
+    const sig = `${k}|${b.period}|${b.fEff}|${b.n}|${b.fd}|${b.stable}|${b.maxModulus}|${s.gamma0 === 0}`;
+    if (sig === beatSig) return; // unchanged text: no DOM churn (and no repeated live-region announcement)
+    beatSig = sig;
     beatBox.replaceChildren();
     beatBox.dataset.beatPeriod = b.period == null ? '' : String(b.period);
     const p = (markup) => el('p', {}, rich(markup));
@@ -181,6 +186,9 @@ export function mount(ctx) {
   }
 
   function drawShares(a, k) {
+    const sig = `${k}|${shares(a, k).map((x) => fmt(x.value, 3)).join()}`;
+    if (sig === sharesSig) return;
+    sharesSig = sig;
     sharesBox.replaceChildren(el('h3', { text: `Where mode ${k + 1}’s response comes from (share of Σq², paper §4.1)` }));
     const list = el('ul', { class: 'wl-share-list' });
     let sum = 0;

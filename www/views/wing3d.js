@@ -235,8 +235,8 @@ export function mount(ctx) {
       moveCamera(best.camera);
       box.dataset.coverage = best.coverage.toFixed(3);
     } else {
-      const stride = Math.max(1, Math.floor(fe.nodes.length / 3 / 400));
-      const d = S.fitDistance(cam, S.posePoints(fe.nodes, ps, { stride, lift }), canvas.width, canvas.height, 0.03);
+      const ol = S.outline(fe.nodes);
+      const d = S.fitDistance(cam, S.posePoints(ol.nodes, ps, { lift: lift + ol.zmax }), canvas.width, canvas.height, 0.03);
       moveCamera({ ...cam, distance: d });
     }
     fitKey = 'fitted';
