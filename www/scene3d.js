@@ -317,19 +317,27 @@ export function extremeStates(qs, maxSamples = 4000) {
   return [...pick].map((i) => qs.map((q) => q[i]));
 }
 
-/** The 98th percentile of |values| (rank round((n−1)·0.98)), as the renderer's robust range. */
-export function robust(values) {
+/** The p-quantile of |values| (rank round((n−1)·p); p = 0.98 is the renderer's own robust range). */
+export function robust(values, p = 0.98) {
   const a = Array.from(values, Math.abs).filter(Number.isFinite).sort((x, y) => x - y);
   if (!a.length) return 0;
-  return a[Math.round((a.length - 1) * 0.98)];
+  return a[Math.round((a.length - 1) * p)];
 }
 
 /**
- * The colour range of a run per component: { 1: ε_x, 2: ε_y, 3: γ_xy, 4: |ε| } (limits for
- * WingView.set_strain_range), each the robust (98th-percentile over nodes) maximum over time of
- * the nodal |strain|. strainNodes[(k·n + i)·3 + c] per unit q_k; qs: q_k(t) per mode.
+ * Quantile over nodes used for the run-wide colour range. Strain is singular at the clamped
+ * root, and a run's extremes there are far above the rest of the wing: the 90th percentile
+ * keeps the colours readable over the wing (the hot root saturates) while still being one
+ * fixed range for the whole run.
  */
-export function strainRanges(strainNodes, nNodes, qs) {
+export const RANGE_QUANTILE = 0.9;
+
+/**
+ * The colour range of a run per component: { 1: ε_x, 2: ε_y, 3: γ_xy, 4: |ε| } (limits for
+ * WingView.set_strain_range), each the robust (q-quantile over nodes, RANGE_QUANTILE by
+ * default) maximum over time of the nodal |strain|. strainNodes[(k·n + i)·3 + c] per unit q_k; qs: q_k(t) per mode.
+ */
+export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE) {
   const states = extremeStates(qs);
   const m = Math.min(qs.length, Math.floor(strainNodes.length / (3 * nNodes)));
   const mx = [new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes)];
@@ -349,7 +357,7 @@ export function strainRanges(strainNodes, nNodes, qs) {
       if (mag > mx[3][i]) mx[3][i] = mag;
     }
   }
-  return { 1: robust(mx[0]), 2: robust(mx[1]), 3: robust(mx[2]), 4: robust(mx[3]) };
+  return { 1: robust(mx[0], q), 2: robust(mx[1], q), 3: robust(mx[2], q), 4: robust(mx[3], q) };
 }
 
 /** The largest |Σ_k φ_k(node) q_k(t)| over nodes and the whole run (m, true scale). */
