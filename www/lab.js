@@ -306,8 +306,8 @@ export class WingLab extends HTMLElement {
     }
     let out;
     if (fig) out = await figurePNG(fig, FIG_W, FIG_H, 2);
-    else if (reg.table && reg.table()) out = await tablePNG(plain(label), plain(describe(this.store.get())), reg.table(), 2);
-    else if (reg.canvas && reg.canvas()) out = await canvasPNG(plain(label), plain(describe(this.store.get())), reg.canvas());
+    else if (reg.table && reg.table()) out = await tablePNG(plain(label), describe(this.store.get()), reg.table(), 2);
+    else if (reg.canvas && reg.canvas()) out = await canvasPNG(plain(label), describe(this.store.get()), reg.canvas());
     else return nothing();
     download(`wingbeat-${name}.png`, out.blob);
     this.lastExport = { name, kind, width: out.width, height: out.height, legend: fig ? fig.series.filter((s) => s.show !== false).map((s) => s.color) : [] };

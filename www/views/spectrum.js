@@ -103,7 +103,7 @@ export function mount(ctx) {
         y2Label: `response PSD (${UNITS.qpsd.label})`,
         log: { y: true, y2: true },
         series: plot.exportSeries(),
-        markers: markers.map((m) => ({ ...m, label: plain(m.label) })),
+        markers,
         note: s.modes === 'paper' ? 'Paper units: Table 4 is not SI; spectral shapes and frequencies are unaffected.' : 'SI units.',
       };
     },
