@@ -19,7 +19,7 @@
 //! * `points` ≤ [`MAX_POINTS`] (the sweep's cap) and at most [`MAX_ALPHA0_VALUES`] roll
 //!   amplitudes;
 //! * the total work, estimated by [`analysis_cost`] in Gauss–Legendre step equivalents summed
-//!   over every (α0, f_d, mode), at most [`MAX_WORK`] (about a second or two natively). The
+//!   over every (α0, f_d, mode), at most [`MAX_WORK`] (some seconds natively). The
 //!   cost of one analysis grows like f_k / f_d (steps per flap period), so low flap frequencies
 //!   against high modes are what the cap stops.
 
@@ -39,9 +39,10 @@ use std::f64::consts::PI;
 pub const MAX_POINTS: usize = sweep::MAX_POINTS;
 /// Most roll amplitudes in one map.
 pub const MAX_ALPHA0_VALUES: usize = 201;
-/// Most work in one map, in Gauss–Legendre step equivalents (see [`analysis_cost`]); one step
-/// takes of the order of a microsecond natively.
-pub const MAX_WORK: f64 = 5.0e7;
+/// Most work in one map, in Gauss–Legendre step equivalents (see [`analysis_cost`]). One unit
+/// took 1–2 µs in the (lightly optimised) test build here, so the cap keeps a map under about
+/// 10–20 s; the paper's wing over 200 flap frequencies from 5 to 60 Hz costs 1.4e5 units.
+pub const MAX_WORK: f64 = 1.0e7;
 
 /// What to map.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
