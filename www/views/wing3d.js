@@ -73,7 +73,21 @@ export function mount(ctx) {
     width: 640,
     height: 480,
   });
-  const stage = el('div', { class: 'wl-w3-stage' }, canvas);
+  // Labels drawn over the canvas at the projected tips of the axes and a corner of the stroke
+  // plane (positions from the camera mirror; the legend below says the same in words).
+  const LABELS = [
+    ['I', 'fixed', 'rgb(200,110,110)'], ['J', 'fixed', 'rgb(110,190,110)'], ['K', 'fixed', 'rgb(130,150,230)'],
+    ['I″', 'wing', 'rgb(255,90,80)'], ['J″', 'wing', 'rgb(100,255,100)'], ['K″', 'wing', 'rgb(120,165,255)'],
+    ['body axis', 'body', 'rgb(220,220,220)'], ['stroke plane', 'plane', 'rgb(150,170,235)'],
+  ];
+  const overlay = el('div', { class: 'wl-w3-overlay', 'aria-hidden': 'true' });
+  const labelEls = LABELS.map(([t, kind, c]) => {
+    const e = el('span', { class: `wl-w3-label wl-w3-label-${kind}`, text: t });
+    e.style.color = c;
+    overlay.append(e);
+    return e;
+  });
+  const stage = el('div', { class: 'wl-w3-stage' }, canvas, overlay);
   box.append(stage);
   const summary = el('p', { class: 'wl-sr', id: summaryId, text: 'The 3-D view of the wing is starting: it shows the wing flapping and bending at the instant chosen with the time slider.' });
   const status = el('p', { class: 'wl-w3-status', role: 'status', text: 'Starting the 3-D view…' });
@@ -368,6 +382,35 @@ export function mount(ctx) {
     });
   }
 
+  /** Moves the in-view labels to the projected axis tips (src/render/gpu.rs scene_geometry). */
+  function placeSceneLabels(ang) {
+    if (!cam || !fe) return;
+    const l = S.spanOf(fe.nodes);
+    const w = canvas.clientWidth, h = canvas.clientHeight;
+    const pr = S.projector(cam, w, h);
+    const fr = (p) => S.rotate(ang[0], ang[1], 0, p);
+    const pts = [
+      [0.35 * l, 0, 0], [0, 0.35 * l, 0], [0, 0, 0.35 * l],
+      fr([0.7 * l, 0, 0]), fr([0, 0.45 * l, 0]), fr([0, 0, 0.45 * l]),
+      [0, 0.6 * l, 0], [1.1 * l, 0, 0.9 * l],
+    ];
+    const show = { fixed: showAxes.checked, wing: showAxes.checked, body: showAxes.checked, plane: showPlane.checked };
+    // the plane's label goes to the first of its corners / edge midpoints that is on screen
+    const inView = (p) => p && p[0] > 10 && p[0] < w - 90 && p[1] > 20 && p[1] < h - 10;
+    // ... the one farthest from the wing (its middle, at this pose), so it does not sit on the wing
+    const mid = pr(...S.rotate(ang[0], ang[1], ang[2], [0.45 * l, -0.2 * l, 0])) || [w / 2, h / 2];
+    const planeAt = [[1.1 * l, 0, 0.9 * l], [1.1 * l, 0, -0.9 * l], [0.5 * l, 0, 0.9 * l], [0.5 * l, 0, -0.9 * l], [-0.1 * l, 0, 0.9 * l], [-0.1 * l, 0, -0.9 * l], [1.1 * l, 0, 0]]
+      .map((q) => pr(...q)).filter(inView)
+      .sort((a, b) => Math.hypot(b[0] - mid[0], b[1] - mid[1]) - Math.hypot(a[0] - mid[0], a[1] - mid[1]))[0];
+    LABELS.forEach(([, kind], j) => {
+      const e = labelEls[j];
+      const p = kind === 'plane' ? planeAt : pr(...pts[j]);
+      const ok = show[kind] && p && p[0] > 4 && p[0] < w - 20 && p[1] > 8 && p[1] < h - 4;
+      e.hidden = !ok;
+      if (ok) e.style.transform = `translate(${Math.round(p[0] + 3)}px, ${Math.round(p[1] - 14)}px)`;
+    });
+  }
+
   /** Draws the frame at the store's t3d. Cheap: no wasm call besides the renderer's own. */
   function draw() {
     const s = store.get();
@@ -393,6 +436,7 @@ export function mount(ctx) {
     }
     frames += 1;
     box.dataset.frames = String(frames);
+    placeSceneLabels(ang);
     const d = lg.max_deflection_m;
     exagText.textContent = `×${fmt(ex, 3)}`;
     exag.setAttribute('aria-valuetext', `deflection drawn ${fmt(ex, 3)} times true scale`);
