@@ -169,9 +169,9 @@ test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, can
   await page.locator(box).screenshot({ path: path.join(OUT, 'resonance-1280.png') });
   // A 2-D map (α0 axis) can be cancelled mid-run; the lab stays live.
   await page.check(`${box} input[type=checkbox]`);
-  // 41 × 1001 points: seconds of work, inside the core's work cap (resonance::MAX_WORK).
-  await page.fill(`${box} .wl-res-axis2 input[aria-label^="α0 values"]`, '41');
-  await page.fill(`${box} input[aria-label^="points"]`, '1001');
+  // 21 × 801 points: seconds of work, inside the core's work cap (resonance::MAX_WORK).
+  await page.fill(`${box} .wl-res-axis2 input[aria-label^="α0 values"]`, '21');
+  await page.fill(`${box} input[aria-label^="points"]`, '801');
   await page.click(`${box} [data-run="resonance"]`);
   await page.waitForSelector(`${box} [data-cancel="resonance"]:not([hidden])`);
   await page.click(`${box} [data-cancel="resonance"]`);
