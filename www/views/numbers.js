@@ -39,7 +39,7 @@ export function mount(ctx) {
     tbody.append(tr);
   }
   table.append(tbody);
-  section.append(table, el('p', { class: 'wl-note', text: 'Shares are 100·Σq_term²/Σq_total² (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms).' }));
+  section.append(table, el('p', { class: 'wl-note', rich: 'Shares are 100·Σq_{term}^2/Σq_{total}^2 (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms).' }));
 
   const draw = (s) => {
     if (!s.result) return;

@@ -1,7 +1,7 @@
 // Spectra panel (paper Fig. 4): Welch PSDs of the Euler, centrifugal and Coriolis forces and of
 // the stiffness force S(t)·q_k (left axis), and of the total response (right axis), with
 // markers at the flap harmonics n·f_d, the natural frequency f_k and the Floquet f_{eff}.
-import { el, isTouch } from '../dom.js';
+import { el, rich, isTouch } from '../dom.js';
 import { fmt, plain, UNITS, PAPER_UNITS_NOTE } from '../format.js';
 import { linePlot, color, log10OrNull } from '../plot.js';
 import { SAMPLE_RATE_HZ, toQuery, describe } from '../state.js';
@@ -67,7 +67,7 @@ export function mount(ctx) {
       `Mode ${k + 1}, 0 to ${fmt(fmax, 3)} Hz. Largest non-DC peaks: Euler force at ${fmt(peakOf(sp.euler.psd), 4)} Hz, centrifugal at ${fmt(peakOf(sp.centrifugal.psd), 4)} Hz, Coriolis at ${fmt(peakOf(sp.coriolis.psd), 4)} Hz, stiffness force at ${fmt(peakOf(stiff.psd), 4)} Hz, total response at ${fmt(peakOf(sp.total.psd), 4)} Hz. ` +
       `Markers: flap harmonics every ${fmt(fd, 4)} Hz, natural frequency ${fmt(fk, 4)} Hz, Floquet effective frequency ${fmt(f.effective_freq_hz, 6)} Hz.`,
     );
-    unitNote.textContent = s.modes === 'paper' ? PAPER_UNITS_NOTE : 'FE wing: SI units throughout.';
+    unitNote.replaceChildren(rich(s.modes === 'paper' ? PAPER_UNITS_NOTE : 'FE wing: SI units throughout.'));
   };
   const unsub = store.subscribe(['result'], draw);
   ctx.registerPlot('spectrum', plot);

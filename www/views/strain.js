@@ -1,5 +1,5 @@
 // Strain panel (paper Fig. 9): ε_x, ε_y, γ_xy at the point P, Σ_k ε_k q_k(t).
-import { el } from '../dom.js';
+import { el, rich } from '../dom.js';
 import { fmt, PAPER_UNITS_NOTE } from '../format.js';
 import { decimate } from '../decimate.js';
 import { linePlot, color } from '../plot.js';
@@ -30,9 +30,9 @@ export function mount(ctx) {
     const r = s.result;
     if (!r) return;
     const a = r.analysis;
-    note.textContent = s.modes === 'fe'
+    note.replaceChildren(rich(s.modes === 'fe'
       ? 'Σ_k ε_k q_k(t) at P = (3, −6) mm from the FE modal strain fields (top surface, dimensionless, SI).'
-      : `Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). ${PAPER_UNITS_NOTE}`;
+      : `Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). ${PAPER_UNITS_NOTE}`));
     plot.setYLabel(`strain (${unit(s)})`);
     const st = a.sim.strain;
     if (!st) {

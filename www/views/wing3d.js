@@ -13,7 +13,7 @@
 // The instant shown is the store's `t3d`; the angles come with the analysis (no wasm call per
 // frame). Test hooks on the box: data-state (loading | ready | unavailable), data-backend,
 // data-frames, data-coverage (estimated wing share of the canvas at the fitted view).
-import { el, isTouch } from '../dom.js';
+import { el, rich, isTouch } from '../dom.js';
 import { fmt } from '../format.js';
 import { beatInfo } from '../beat.js';
 import * as S from '../scene3d.js';
@@ -447,10 +447,11 @@ export function mount(ctx) {
     defl.textContent = runDeflection == null ? '' : isFe
       ? `Largest deflection over the whole run: ${fmt(runDeflection * 1e3, 3)} mm (true scale, SI), about ${fmt((100 * runDeflection) / S.spanOf(fe.nodes), 2)} % of the ${fmt(S.spanOf(fe.nodes) * 1e3, 3)} mm span.`
       : `Paper mode set: Table 4’s a_k are not SI, so these deflections are in paper units (≈ 10× below SI), not mm; choose the FE wing mode set for millimetres.`;
+    if (!isFe) defl.replaceChildren(rich(defl.textContent));
     drawLegend(lg, isFe);
-    note.textContent = isFe
+    note.replaceChildren(rich(isFe
       ? `The shell-FE wing (synthetic Manduca-like outline, not digitised) with its first ${a.sim.modes.length} modes driven by the simulated q_k(t); strain per the FE modal strain fields (dimensionless, true scale).`
-      : `Paper mode set: the paper's q_k(t) (Table 4 units, not SI) drawn on the shell-FE wing's first ${a.sim.modes.length} mode shapes, so shapes and timing are right and magnitudes are not physical. Choose the FE wing mode set for SI deflection and strain.`;
+      : `Paper mode set: the paper's q_k(t) (Table 4 units, not SI) drawn on the shell-FE wing's first ${a.sim.modes.length} mode shapes, so shapes and timing are right and magnitudes are not physical. Choose the FE wing mode set for SI deflection and strain.`));
     summary.textContent = `Wing at t = ${(s.t3d ?? 0).toFixed(4)} s: roll α ${ang[0].toFixed(3)}, pitch β ${ang[1].toFixed(3)}, yaw γ ${ang[2].toFixed(3)} rad; deflection now ${fmt(d * 1e3, 3)} ${isFe ? 'mm' : 'paper units'}, largest over the run ${fmt((runDeflection || 0) * 1e3, 3)}. ${legendText.textContent}`;
   }
 
