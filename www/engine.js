@@ -139,6 +139,10 @@ export function createEngine(deps = {}) {
     limits() {
       return wb.limits();
     },
+    /** The core's table of the lab's numeric parameters (wasm `parameters()`), or null in older builds. */
+    parameters() {
+      return wb && typeof wb.parameters === 'function' ? wb.parameters() : null;
+    },
     /** The SimConfig for URL parameters: the paper table, or the FE wing's modes. */
     config(params) {
       const b = params.modes === 'fe' && fe ? { modes: fe.modes } : base;

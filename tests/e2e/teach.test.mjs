@@ -259,3 +259,23 @@ test('touch devices get touch wording', async () => {
   }
   await context.close();
 });
+
+test('the sliders agree with the core’s parameter table (wasm parameters(), when the build has it)', async (t) => {
+  const { page, context } = await open({ width: 1280, height: 800 });
+  const table = await page.evaluate(() => document.querySelector('wing-lab').engine.parameters());
+  if (!table) {
+    t.skip('this wasm build has no parameters() yet');
+    await context.close();
+    return;
+  }
+  const { NUMERIC } = await import('../../www/state.js');
+  for (const p of NUMERIC) {
+    const c = table.find((q) => q.key === p.key);
+    assert.ok(c, `core has ${p.key}`);
+    assert.equal(c.min, p.min, `${p.key} min`);
+    assert.equal(c.max, p.max, `${p.key} max`);
+    assert.equal(c.step, p.step, `${p.key} step`);
+    assert.equal(c.default, p.def, `${p.key} default`);
+  }
+  await context.close();
+});

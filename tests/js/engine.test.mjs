@@ -171,3 +171,12 @@ test('splitAngles and normalise', () => {
   const a = normalise({ spectra: [{ stiffness: 7 }], forces: [] });
   assert.equal(a.spectra[0].stiffness_force, 7);
 });
+
+test('parameters(): the core table when the wasm has it, else null', async () => {
+  const wb = fakeWasm();
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
+  await e.load();
+  assert.equal(e.parameters(), null);
+  wb.parameters = () => [{ key: 'alpha0', min: 0, max: 1.5, step: 0.01, default: 0.8 }];
+  assert.equal(e.parameters()[0].key, 'alpha0');
+});
