@@ -5,5 +5,6 @@ pub mod beat;
 pub mod contribution;
 pub mod ic_map;
 pub mod psd;
+pub mod spectra;
 pub mod strain;
 pub mod sweep;
