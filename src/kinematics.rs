@@ -405,10 +405,10 @@ impl Compiled {
         }
     }
 
-    /// Whether the centrifugal softening α̇² cos²β + β̇² has period T/2 (true when α and β
+    /// Whether the stiffness coefficient α̇² cos²β + β̇² (the centrifugal softening) has period T/2 (true when α and β
     /// contain only odd harmonics and β has zero mean — the paper's symmetric sinusoids).
     /// Then Floquet analysis can use the half period.
-    pub fn softening_has_half_period(&self) -> bool {
+    pub fn stiffness_coefficient_has_half_period(&self) -> bool {
         // α̇ only needs odd harmonics (its mean does not enter α̇); β must flip sign.
         let alpha_odd = self
             .alpha

@@ -9,7 +9,8 @@
 //! F_R (Coriolis)    = − 2 γ̇ Ω · a_k
 //! ```
 //!
-//! with Ω_x² + Ω_y² = α̇² cos²β + β̇² (the centrifugal softening) and b_k = a_k turned 90°
+//! with Ω_x² + Ω_y² = α̇² cos²β + β̇² =: S(t), the **stiffness coefficient** (1/s², the same for
+//! every mode; [`stiffness_coefficient`]), and b_k = a_k turned 90°
 //! counter-clockwise in the I″–J″ plane (paper Eq. 12, Table 4). Each term is defined exactly
 //! once, here, and used by the solver, the analyses, the CLI and the wasm API alike.
 //!
@@ -129,7 +130,7 @@ impl Mode {
 /// The time-varying coefficients of Eq. 13 for one mode at one instant.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Coefficients {
-    /// Stiffness coefficient ω_k² − (Ω_x² + Ω_y²), rad²/s².
+    /// Total stiffness of the mode, ω_k² − S(t) with S the [`stiffness_coefficient`], rad²/s².
     pub stiffness: f64,
     /// Euler forcing, − Ω̇ · (γ a − b).
     pub euler: f64,
@@ -155,11 +156,20 @@ impl Coefficients {
     }
 }
 
-/// Centrifugal softening Ω_x² + Ω_y² = α̇² cos²β + β̇² (rad²/s²), the amount Eq. 13 subtracts
-/// from ω_k². Independent of the mode.
-pub fn softening(s: &RateState) -> f64 {
+/// The stiffness coefficient S = Ω_x² + Ω_y² = α̇² cos²β + β̇² (1/s², i.e. rad²/s²): the
+/// centrifugal softening Eq. 13 subtracts from ω_k². Independent of the mode. Moved to the
+/// right-hand side, S(t)·q_k is the **stiffness force** ([`stiffness_force`]).
+pub fn stiffness_coefficient(s: &RateState) -> f64 {
     let om = s.omega();
     om[0] * om[0] + om[1] * om[1]
+}
+
+/// The stiffness force S(t)·q_k(t) (same units as the force terms): the stiffness
+/// coefficient's part of Eq. 13 written as a force, sample by sample. `coefficient` and `q`
+/// are series on the same time grid (the shorter one sets the length). The only place the
+/// product is formed: the CLI's `psd` and the wasm `analyze`/`spectra` both call it.
+pub fn stiffness_force(coefficient: &[f64], q: &[f64]) -> Vec<f64> {
+    coefficient.iter().zip(q).map(|(s, q)| s * q).collect()
 }
 
 /// The Eq. 13 coefficients of `mode` for the rotation state `s` (angles and rates at one instant).
@@ -177,7 +187,7 @@ pub fn coefficients(mode: &Mode, s: &RateState) -> Coefficients {
     // Coriolis: − 2 γ̇ Ω · a.
     let coriolis = -2.0 * s.gamma_dot * (om[0] * a[0] + om[1] * a[1]);
     Coefficients {
-        stiffness: w * w - softening(s),
+        stiffness: w * w - stiffness_coefficient(s),
         euler,
         centrifugal,
         coriolis,

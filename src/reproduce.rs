@@ -273,7 +273,11 @@ pub fn reproduce() -> Result<Report> {
     let he = harmonic_amplitudes(term(0), period, nh);
     let hc = harmonic_amplitudes(term(1), period, nh);
     let hr = harmonic_amplitudes(term(2), period, nh);
-    let hs = harmonic_amplitudes(|t| crate::model::softening(&kin.state(t)), period, nh);
+    let hs = harmonic_amplitudes(
+        |t| crate::model::stiffness_coefficient(&kin.state(t)),
+        period,
+        nh,
+    );
     let (ks, ss) = argmax_ac(&hs);
     let (kr, sr) = argmax_ac(&hr);
     claim(
@@ -282,7 +286,7 @@ pub fn reproduce() -> Result<Report> {
         "§3.3",
         "The stiffness term and the Coriolis force vary nearly sinusoidally at about 2ω_d.",
         format!(
-            "Strongest oscillating harmonic: softening {ks}ω_d ({:.1} % of its AC power), Coriolis {kr}ω_d ({:.1} %). Both also have a large mean: softening {:.4e} rad²/s², Coriolis {:.4e} (vs 2ω_d amplitude {:.4e}). Threshold: dominant harmonic 2 with > 90 % of AC power.",
+            "Strongest oscillating harmonic: stiffness coefficient S = α̇²cos²β + β̇² {ks}ω_d ({:.1} % of its AC power), Coriolis {kr}ω_d ({:.1} %). Both also have a large mean: S {:.4e} rad²/s², Coriolis {:.4e} (vs 2ω_d amplitude {:.4e}). Threshold: dominant harmonic 2 with > 90 % of AC power.",
             100.0 * ss,
             100.0 * sr,
             hs[0],

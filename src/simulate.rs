@@ -6,7 +6,7 @@ use crate::config::SimConfig;
 use crate::error::Result;
 use crate::floquet::{self, FloquetResult};
 use crate::kinematics::Compiled;
-use crate::model::{softening, Mode};
+use crate::model::{stiffness_coefficient, Mode};
 use crate::solve::propagator::{propagate, Propagated};
 use crate::solve::ModalOde;
 use serde::{Deserialize, Serialize};
@@ -94,13 +94,13 @@ pub struct SimResult {
     pub warnings: Vec<String>,
 }
 
-/// Mean centrifugal softening over one period (rad²/s²), by a 256-point rectangle rule
-/// (spectrally accurate for smooth periodic integrands).
-pub fn mean_softening(kin: &Compiled) -> f64 {
+/// Mean of the stiffness coefficient S(t) = α̇² cos²β + β̇² over one period (1/s²), by a
+/// 256-point rectangle rule (spectrally accurate for smooth periodic integrands).
+pub fn mean_stiffness_coefficient(kin: &Compiled) -> f64 {
     let n = 256;
     let t = 2.0 * PI / kin.wd;
     (0..n)
-        .map(|j| softening(&kin.state(j as f64 * t / n as f64)))
+        .map(|j| stiffness_coefficient(&kin.state(j as f64 * t / n as f64)))
         .sum::<f64>()
         / n as f64
 }
@@ -117,7 +117,7 @@ fn floquet_with(
 ) -> FloquetResult {
     let ode = ModalOde::new(kin, mode);
     let w = mode.omega();
-    let w2 = w * w - mean_softening(kin);
+    let w2 = w * w - mean_stiffness_coefficient(kin);
     let naive = if w2 > 0.0 {
         w2.sqrt() / (2.0 * PI)
     } else {
@@ -200,35 +200,78 @@ pub struct ForceSeries {
     pub centrifugal: Vec<f64>,
     /// Coriolis forcing.
     pub coriolis: Vec<f64>,
-    /// Centrifugal softening α̇² cos²β + β̇², rad²/s² (the time-varying part of the stiffness).
-    pub softening: Vec<f64>,
+    /// The stiffness coefficient S(t) = α̇² cos²β + β̇², 1/s² (the time-varying part of the
+    /// stiffness; the same for every mode). Times q_k it is the stiffness force, see
+    /// [`crate::model::stiffness_force`].
+    pub stiffness_coefficient: Vec<f64>,
 }
 
-/// Samples the forcing terms and the softening of every mode at t_i = i / rate, i = 0..n.
-pub fn force_series(cfg: &SimConfig) -> Result<Vec<ForceSeries>> {
-    cfg.validate()?;
+/// Which modes [`sample_forces`] samples.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ModeSelection {
+    /// Every mode of the config.
+    #[default]
+    All,
+    /// Only the mode with this index (the others come back as `None`): the live lab view pays
+    /// for one mode.
+    Only(usize),
+}
+
+impl ModeSelection {
+    /// `Only(k)` for `Some(k)`, `All` for `None`.
+    pub fn from_option(mode: Option<usize>) -> Self {
+        mode.map_or(ModeSelection::All, ModeSelection::Only)
+    }
+
+    /// Whether mode `k` is selected.
+    pub fn includes(self, k: usize) -> bool {
+        match self {
+            ModeSelection::All => true,
+            ModeSelection::Only(w) => w == k,
+        }
+    }
+}
+
+/// Samples the forcing terms and the stiffness coefficient of the selected modes at
+/// t_i = i / rate, i = 0..n (the simulation's output grid): the kinematic state once per
+/// sample, then [`crate::model::coefficients`] per mode. Unselected modes are `None`. The one
+/// force-sampling loop of the project; `cfg` must already be valid.
+pub fn sample_forces(cfg: &SimConfig, which: ModeSelection) -> Vec<Option<ForceSeries>> {
     let kin = cfg.kinematics.compile();
     let n = cfg.n_samples();
     let dt = 1.0 / cfg.sample_rate_hz;
     let states: Vec<_> = (0..n).map(|i| kin.state(i as f64 * dt)).collect();
-    Ok(cfg
-        .modes
+    let coefficient: Vec<f64> = states.iter().map(stiffness_coefficient).collect();
+    cfg.modes
         .iter()
-        .map(|m| {
+        .enumerate()
+        .map(|(k, m)| {
+            if !which.includes(k) {
+                return None;
+            }
             let mut fs = ForceSeries {
                 euler: Vec::with_capacity(n),
                 centrifugal: Vec::with_capacity(n),
                 coriolis: Vec::with_capacity(n),
-                softening: Vec::with_capacity(n),
+                stiffness_coefficient: coefficient.clone(),
             };
             for s in &states {
                 let c = crate::model::coefficients(m, s);
                 fs.euler.push(c.euler);
                 fs.centrifugal.push(c.centrifugal);
                 fs.coriolis.push(c.coriolis);
-                fs.softening.push(softening(s));
             }
-            fs
+            Some(fs)
         })
+        .collect()
+}
+
+/// Samples the forcing terms and the stiffness coefficient of every mode at t_i = i / rate,
+/// i = 0..n (validates the config, then [`sample_forces`] with [`ModeSelection::All`]).
+pub fn force_series(cfg: &SimConfig) -> Result<Vec<ForceSeries>> {
+    cfg.validate()?;
+    Ok(sample_forces(cfg, ModeSelection::All)
+        .into_iter()
+        .flatten()
         .collect())
 }

@@ -129,8 +129,8 @@ fn coriolis_spectrum_vanishes_without_yaw_and_peaks_at_twice_the_flap_frequency_
     )
     .unwrap();
     assert!(s0.psd.iter().all(|p| *p == 0.0));
-    // The softening is the same for every mode and oscillates at 2 f_d.
-    assert_eq!(f[0].softening, f[1].softening);
+    // The stiffness coefficient is the same for every mode and oscillates at 2 f_d.
+    assert_eq!(f[0].stiffness_coefficient, f[1].stiffness_coefficient);
 }
 
 #[test]

@@ -4,7 +4,7 @@
 
 use nalgebra::Vector3;
 use wingbeat::kinematics::{Angle, Harmonic, Kinematics, RateState};
-use wingbeat::model::{coefficients, softening, Mode};
+use wingbeat::model::{coefficients, stiffness_coefficient, Mode};
 
 /// A point mass: (x m, y m, mode-shape value φ, mass kg).
 type Point = (f64, f64, f64, f64);
@@ -109,8 +109,10 @@ fn force_terms_match_rigid_body_inertial_forces() {
         let kz = Vector3::new(0.0, 0.0, 1.0);
         let om3 = Vector3::from(om);
         let soft = om3.cross(&om3.cross(&kz))[2];
-        assert!((-soft - softening(&s)).abs() < 1e-12 * softening(&s).max(1.0));
-        assert!((co.stiffness - (mode.omega().powi(2) - softening(&s))).abs() < 1e-9);
+        assert!(
+            (-soft - stiffness_coefficient(&s)).abs() < 1e-12 * stiffness_coefficient(&s).max(1.0)
+        );
+        assert!((co.stiffness - (mode.omega().powi(2) - stiffness_coefficient(&s))).abs() < 1e-9);
     }
     assert!(worst < 1e-12);
 }
@@ -153,4 +155,13 @@ fn no_yaw_means_no_coriolis_and_b_is_a_turned_left() {
             0.0
         );
     }
+}
+
+#[test]
+fn stiffness_force_multiplies_pointwise() {
+    // S(t)·q_k(t), sample by sample (moved here from the wasm helpers' `stiffness_term`).
+    assert_eq!(
+        wingbeat::model::stiffness_force(&[1.0, 2.0, 3.0], &[4.0, 5.0, 6.0]),
+        [4.0, 10.0, 18.0]
+    );
 }

@@ -120,7 +120,7 @@ fn sampled_table_reproduces_its_fourier_series_exactly() {
 fn half_period_detection() {
     assert!(Kinematics::paper_forward_flight()
         .compile()
-        .softening_has_half_period());
+        .stiffness_coefficient_has_half_period());
     let mut k = Kinematics::paper_forward_flight();
     k.beta = Angle::Fourier {
         mean: 0.1,
@@ -130,7 +130,7 @@ fn half_period_detection() {
             phase: 0.0,
         }],
     };
-    assert!(!k.compile().softening_has_half_period());
+    assert!(!k.compile().stiffness_coefficient_has_half_period());
 }
 
 #[test]

@@ -279,7 +279,7 @@ fn more_modes_than_the_cap_warn() {
 }
 
 #[test]
-fn frames_from_a_simulation_and_cli_glue() {
+fn frames_from_a_simulation() {
     let mesh = WingMesh::synthetic(12, 5);
     if offscreen(8, 8, &mesh).is_none() {
         return;
@@ -299,22 +299,34 @@ fn frames_from_a_simulation_and_cli_glue() {
         .iter()
         .all(|i| i.width == 96 && i.pixels.len() == 96 * 64 * 4));
     assert_ne!(imgs[0], imgs[1], "the wing moves between frames");
+}
 
+/// The `wingbeat render` command: numbered PNGs, the legend line, readable errors.
+#[cfg(feature = "cli")]
+#[test]
+fn cli_render_command() {
+    if offscreen(8, 8, &WingMesh::synthetic(12, 5)).is_none() {
+        return;
+    }
     let dir = std::env::temp_dir().join(format!("wingbeat-render-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let cfg_path = dir.join("cfg.json");
     std::fs::write(&cfg_path, r#"{"duration_s": 0.1, "sample_rate_hz": 2000}"#).unwrap();
     let out = dir.join("f.png");
-    let msg = wingbeat::render::cli::run_render(
-        Some(cfg_path.to_str().unwrap()),
-        None,
+    let msg = render_cli(&[
+        "--config",
+        cfg_path.to_str().unwrap(),
+        "--out",
         out.to_str().unwrap(),
-        2,
-        64,
-        48,
-        None,
+        "--frames",
+        "2",
+        "--width",
+        "64",
+        "--height",
+        "48",
+        "--colour",
         "gxy",
-    )
+    ])
     .unwrap();
     assert!(
         msg.contains("f_000.png") && msg.contains("f_001.png"),
@@ -323,13 +335,34 @@ fn frames_from_a_simulation_and_cli_glue() {
     assert!(msg.contains("γ_xy") && msg.contains("strain"), "{msg}");
     let png = std::fs::read(dir.join("f_001.png")).unwrap();
     assert_eq!(RgbaImage::from_png(&png).unwrap().width, 64);
-    let err = wingbeat::render::cli::run_render(None, None, "x.png", 1, 8, 8, None, "purple")
-        .unwrap_err();
+    let x = dir.join("x.png");
+    let x = x.to_str().unwrap();
+    let err = render_cli(&[
+        "--out", x, "--width", "8", "--height", "8", "--colour", "purple",
+    ])
+    .unwrap_err();
     assert!(err.contains("colour"), "{err}");
     let err =
-        wingbeat::render::cli::run_render(None, None, "x.png", 0, 8, 8, None, "mag").unwrap_err();
+        render_cli(&["--out", x, "--width", "8", "--height", "8", "--frames", "0"]).unwrap_err();
     assert!(err.contains("frames"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Runs `wingbeat render ARGS`: the summary on success, the error message otherwise. (The CLI
+/// glue lives in the binary, `src/cli/render.rs`.)
+#[cfg(feature = "cli")]
+fn render_cli(args: &[&str]) -> Result<String, String> {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_wingbeat"))
+        .arg("render")
+        .args(args)
+        .output()
+        .unwrap();
+    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    if out.status.success() {
+        Ok(text(&out.stdout))
+    } else {
+        Err(text(&out.stderr))
+    }
 }
 
 /// Frame time at 1280×720 with a ~10k-triangle mesh. Run with

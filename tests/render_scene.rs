@@ -332,18 +332,7 @@ fn colour_map_and_legend() {
     assert_eq!(ColourMode::from_name("nope"), None);
 }
 
-#[cfg(not(target_arch = "wasm32"))]
-#[test]
-fn frame_paths_are_numbered() {
-    use std::path::Path;
-    use wingbeat::render::cli::frame_path;
-    assert_eq!(frame_path(Path::new("a/f.png"), 0, 1), Path::new("a/f.png"));
-    assert_eq!(
-        frame_path(Path::new("a/f.png"), 3, 12),
-        Path::new("a/f_003.png")
-    );
-    assert_eq!(frame_path(Path::new("f"), 2, 1500), Path::new("f_0002.png"));
-}
+// `frame_path` (numbered PNG names) moved with the CLI glue: `src/cli/render.rs`'s unit tests.
 
 #[test]
 fn frame_at_time_uses_the_kinematics() {

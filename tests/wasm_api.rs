@@ -66,3 +66,8 @@ fn fe_modes_match_core() {
 fn angles_match_core() {
     wasm_common::angles_match_core();
 }
+
+#[wasm_bindgen_test]
+fn stiffness_spectra_match_reference() {
+    wasm_common::stiffness_spectra_match_reference();
+}

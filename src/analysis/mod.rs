@@ -7,5 +7,6 @@ pub mod contribution;
 pub mod ic_map;
 pub mod psd;
 pub mod resonance;
+pub mod spectra;
 pub mod strain;
 pub mod sweep;

@@ -1,11 +1,14 @@
 //! Argument parsing and the subcommands of the `wingbeat` binary.
 
 mod modes;
+#[cfg(feature = "render")]
+mod render;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use serde_json::{json, Value};
 use wingbeat::analysis::ic_map::{ic_map, IcAttribution, IcMapOptions};
 use wingbeat::analysis::psd::{welch, Detrend, WelchOptions};
+use wingbeat::analysis::spectra::mode_spectra;
 use wingbeat::analysis::sweep::{apply, sweep, SweepOptions, SweepParam};
 use wingbeat::config::SimConfig;
 use wingbeat::model::Mode;
@@ -28,7 +31,13 @@ struct Cli {
 enum Command {
     /// Solve Eq. 13: partial and total responses, contributions, Floquet summary, strain.
     Simulate(SimulateArgs),
-    /// Welch PSD of each force term (and the stiffness term and the response) per mode.
+    /// Welch PSD, per mode, of each force term, the stiffness coefficient, the stiffness force
+    /// and the total response.
+    ///
+    /// Keys per mode: `euler`, `centrifugal`, `coriolis` (the Eq. 13 force terms);
+    /// `stiffness_coefficient`, the spectrum of S(t) = α̇² cos²β + β̇² (1/s², the same for
+    /// every mode); `stiffness_force`, the spectrum of S(t)·q_k(t) (the stiffness term of
+    /// Eq. 13 written as a force, same units as the force terms); `response_total`, q_k(t).
     Psd(PsdArgs),
     /// Parameter sweeps: `gamma0` (Fig. 6) or any of alpha0, beta0, flap_hz, zeta; `ic` (Fig. 7).
     Sweep(SweepArgs),
@@ -476,15 +485,17 @@ fn cmd_psd(a: PsdArgs) -> Result<String> {
     let sim = simulate(&cfg)?;
     let mut modes = Vec::new();
     for (m, f) in sim.modes.iter().zip(&forces) {
+        let s = mode_spectra(f, &m.q.total, fs, &opts, fd)?;
         modes.push(json!({
             "name": m.name,
             "freq_hz_natural": m.freq_hz,
             "effective_freq_hz": m.floquet.effective_freq_hz,
-            "euler": welch(&f.euler, fs, &opts, fd)?,
-            "centrifugal": welch(&f.centrifugal, fs, &opts, fd)?,
-            "coriolis": welch(&f.coriolis, fs, &opts, fd)?,
-            "softening": welch(&f.softening, fs, &opts, fd)?,
-            "response_total": welch(&m.q.total, fs, &opts, fd)?,
+            "euler": s.euler,
+            "centrifugal": s.centrifugal,
+            "coriolis": s.coriolis,
+            "stiffness_coefficient": welch(&f.stiffness_coefficient, fs, &opts, fd)?,
+            "stiffness_force": s.stiffness_force,
+            "response_total": s.total,
         }));
     }
     to_json(&json!({
@@ -595,7 +606,7 @@ fn cmd_render(a: RenderArgs) -> Result<String> {
             "an integer in [1, 10000]",
         ));
     }
-    wingbeat::render::cli::run_render(
+    render::run_render(
         a.config.as_deref(),
         a.mesh.as_deref(),
         &a.out,

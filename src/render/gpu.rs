@@ -51,6 +51,61 @@ pub fn background_for(format: wgpu::TextureFormat) -> wgpu::Color {
     }
 }
 
+/// An adapter, its device and queue: what both front ends of the renderer (offscreen and the
+/// browser's canvas) need before they can build a [`Renderer`].
+pub struct GpuContext {
+    /// The adapter the device was created on.
+    pub adapter: wgpu::Adapter,
+    /// The device, with [`device_limits`] for the adapter.
+    pub device: wgpu::Device,
+    /// Its queue.
+    pub queue: wgpu::Queue,
+}
+
+/// The limits the renderer asks for: WebGL2's downlevel defaults, raised only in texture size
+/// to what the adapter offers, so that native tests exercise the browser's WebGL2 limits.
+pub fn device_limits(adapter: &wgpu::Adapter) -> wgpu::Limits {
+    wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits())
+}
+
+/// Requests an adapter from `instance` (compatible with `surface` when given) and a device
+/// with [`device_limits`]. `label` names the device; `no_adapter_hint` is appended to the
+/// error when no adapter is found (what the user can install or enable). The one place the
+/// GPU device is set up, for offscreen rendering and the browser view alike.
+pub async fn open_device(
+    instance: &wgpu::Instance,
+    surface: Option<&wgpu::Surface<'_>>,
+    power_preference: wgpu::PowerPreference,
+    label: &str,
+    no_adapter_hint: &str,
+) -> Result<GpuContext, RenderError> {
+    let adapter = instance
+        .request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference,
+            force_fallback_adapter: false,
+            compatible_surface: surface,
+            apply_limit_buckets: false,
+        })
+        .await
+        .map_err(|e| RenderError::NoAdapter(format!("{e}{no_adapter_hint}")))?;
+    let (device, queue) = adapter
+        .request_device(&wgpu::DeviceDescriptor {
+            label: Some(label),
+            required_features: wgpu::Features::empty(),
+            required_limits: device_limits(&adapter),
+            experimental_features: wgpu::ExperimentalFeatures::disabled(),
+            memory_hints: wgpu::MemoryHints::MemoryUsage,
+            trace: wgpu::Trace::Off,
+        })
+        .await
+        .map_err(|e| RenderError::Device(e.to_string()))?;
+    Ok(GpuContext {
+        adapter,
+        device,
+        queue,
+    })
+}
+
 /// The per-frame uniform block, `std140`-compatible (only `mat4` and `vec4` members).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Pod, Zeroable)]

@@ -6,9 +6,11 @@
 //!   no NaN reaches the GPU), the diverging strain colour map and its legend;
 //! * [`gpu`]: [`Renderer`], in the style of the wgpu examples (`new`, `resize`, `update`,
 //!   `render`), with shaders in `shaders/*.wgsl`, kept WebGL2-compatible;
-//! * `offscreen` and `cli` (native only): headless rendering to RGBA / PNG with pollster;
-//! * `web` (wasm32 only): the wasm-bindgen `WingView`, WebGPU when the browser has it and
-//!   WebGL2 otherwise.
+//!   [`gpu::open_device`] sets up the GPU device for both front ends;
+//! * `offscreen` (native only): headless rendering to RGBA / PNG with pollster (the CLI's
+//!   `render` command lives in `src/cli/render.rs`);
+//! * the browser's `WingView` (WebGPU when the browser has it, WebGL2 otherwise) lives with
+//!   the rest of the wasm API, in `src/wasm/view.rs` (features `web` and `render`).
 //!
 //! The mesh is uploaded once; per frame only a 272-byte uniform block changes. See
 //! `docs/render.md` for the GPU data layout and the measured numbers.
@@ -18,11 +20,7 @@ pub mod mesh;
 pub mod scene;
 
 #[cfg(not(target_arch = "wasm32"))]
-pub mod cli;
-#[cfg(not(target_arch = "wasm32"))]
 pub mod offscreen;
-#[cfg(target_arch = "wasm32")]
-pub mod web;
 
 pub use gpu::{FrameReport, Renderer};
 pub use mesh::WingMesh;

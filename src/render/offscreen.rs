@@ -4,7 +4,7 @@
 //! size to what the adapter offers), so native tests exercise the same limits as the browser's
 //! WebGL2 path.
 
-use super::gpu::{FrameReport, Renderer};
+use super::gpu::{open_device, FrameReport, Renderer};
 use super::mesh::WingMesh;
 use super::scene::{ColourMode, FrameParams, OrbitCamera};
 use super::RenderError;
@@ -100,36 +100,19 @@ pub struct Offscreen {
 }
 
 /// Creates an instance (backends from `WGPU_BACKEND`, default all), an adapter and a device
-/// with WebGL2-level limits.
+/// with WebGL2-level limits ([`super::gpu::open_device`]).
 pub async fn request_device() -> Result<(wgpu::Adapter, wgpu::Device, wgpu::Queue), RenderError> {
     let instance =
         wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-    let adapter = instance
-        .request_adapter(&wgpu::RequestAdapterOptions {
-            power_preference: wgpu::PowerPreference::from_env().unwrap_or_default(),
-            force_fallback_adapter: false,
-            compatible_surface: None,
-            apply_limit_buckets: false,
-        })
-        .await
-        .map_err(|e| {
-            RenderError::NoAdapter(format!(
-                "{e} (install a Vulkan driver, e.g. `apt-get install mesa-vulkan-drivers libvulkan1` for lavapipe)"
-            ))
-        })?;
-    let limits = wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits());
-    let (device, queue) = adapter
-        .request_device(&wgpu::DeviceDescriptor {
-            label: Some("wingbeat render"),
-            required_features: wgpu::Features::empty(),
-            required_limits: limits,
-            experimental_features: wgpu::ExperimentalFeatures::disabled(),
-            memory_hints: wgpu::MemoryHints::MemoryUsage,
-            trace: wgpu::Trace::Off,
-        })
-        .await
-        .map_err(|e| RenderError::Device(e.to_string()))?;
-    Ok((adapter, device, queue))
+    let ctx = open_device(
+        &instance,
+        None,
+        wgpu::PowerPreference::from_env().unwrap_or_default(),
+        "wingbeat render",
+        " (install a Vulkan driver, e.g. `apt-get install mesa-vulkan-drivers libvulkan1` for lavapipe)",
+    )
+    .await?;
+    Ok((ctx.adapter, ctx.device, ctx.queue))
 }
 
 impl Offscreen {

@@ -78,7 +78,7 @@ impl<'a> ModalOde<'a> {
             kin,
             mode,
             max_harmonic,
-            half_period: kin.softening_has_half_period(),
+            half_period: kin.stiffness_coefficient_has_half_period(),
         }
     }
 }

@@ -26,12 +26,6 @@ pub fn check_web_caps(cfg: &SimConfig) -> Result<()> {
     Ok(())
 }
 
-/// The parametric-stiffness term of Eq. 13 as a force: (α̇² cos²β + β̇²) · q_k(t).
-/// `softening` and `q` must have equal lengths (the shorter one wins otherwise).
-pub fn stiffness_term(softening: &[f64], q: &[f64]) -> Vec<f64> {
-    softening.iter().zip(q).map(|(s, q)| s * q).collect()
-}
-
 /// Checks that a series given by a caller is non-empty and finite; `field` names it in errors.
 pub fn check_series(field: &str, x: &[f64]) -> Result<()> {
     if x.is_empty() {
@@ -143,14 +137,6 @@ mod tests {
         let e = check_web_caps(&cfg).unwrap_err().to_string();
         assert!(e.contains("duration_s × sample_rate_hz × modes"), "{e}");
         assert!(e.contains("2000000"), "{e}");
-    }
-
-    #[test]
-    fn stiffness_term_multiplies_pointwise() {
-        assert_eq!(
-            stiffness_term(&[1.0, 2.0, 3.0], &[4.0, 5.0, 6.0]),
-            [4.0, 10.0, 18.0]
-        );
     }
 
     #[test]

@@ -205,13 +205,18 @@ pub fn analyze_matches_core() {
     let k = 1;
     let f = &fs[k];
     let q = &sim.modes[k].q.total;
-    let stiff: Vec<f64> = f.softening.iter().zip(q).map(|(s, q)| s * q).collect();
+    let stiff: Vec<f64> = f
+        .stiffness_coefficient
+        .iter()
+        .zip(q)
+        .map(|(s, q)| s * q)
+        .collect();
     let fsr = cfg.sample_rate_hz;
     for (name, x) in [
         ("euler", &f.euler),
         ("centrifugal", &f.centrifugal),
         ("coriolis", &f.coriolis),
-        ("stiffness", &stiff),
+        ("stiffness_force", &stiff),
         ("total", q),
     ] {
         let want = welch(x, fsr, &opts, Some(cfg.kinematics.flap_freq_hz)).unwrap();
@@ -234,7 +239,7 @@ pub fn analyze_matches_core() {
             want.peaks[0].freq_hz,
             TOL,
         );
-        if name != "stiffness" && name != "total" {
+        if name != "stiffness_force" && name != "total" {
             close_all(
                 &format!("forces.1.{name}"),
                 &f64s(&js, &format!("forces.1.{name}")),
@@ -244,8 +249,8 @@ pub fn analyze_matches_core() {
         }
     }
     close_all(
-        "forces.1.stiffness",
-        &f64s(&js, "forces.1.stiffness"),
+        "forces.1.stiffness_force",
+        &f64s(&js, "forces.1.stiffness_force"),
         &stiff,
         TOL,
     );
@@ -257,9 +262,9 @@ pub fn analyze_matches_core() {
     // The separate entry points agree too.
     let js_f = wasm::force_series(to_js(&cfg)).unwrap();
     close_all(
-        "forceSeries.0.softening",
-        &f64s(&js_f, "0.softening"),
-        &fs[0].softening,
+        "forceSeries.0.stiffness_coefficient",
+        &f64s(&js_f, "0.stiffness_coefficient"),
+        &fs[0].stiffness_coefficient,
         TOL,
     );
     let js_s = wasm::spectra(to_js(&cfg), to_js(&opts), None).unwrap();
@@ -618,4 +623,38 @@ pub fn angles_match_core() {
     close("gamma(T/4)", got[8], 0.2, 1e-12);
     let m = message(wasm::angles_at(to_js(&cfg), &[0.0, f64::NAN]));
     assert!(m.contains("anglesAt.times[1]"), "{m}");
+}
+
+/// The stiffness-force spectra of the paper case (0.4 s, 1024-sample segments), natively
+/// computed and hard-coded in tests/stiffness_spectra.rs, where the CLI's `psd` is checked
+/// against the same numbers: one quantity in both front ends.
+pub const STIFFNESS_FORCE_REFERENCE: [(usize, usize, f64); 6] = [
+    (0, 0, 4.408644852178396e-6),
+    (0, 5, 6.626491355668749e-6),
+    (0, 10, 1.1366600536284352e-6),
+    (1, 0, 1.2682627419937116e-8),
+    (1, 5, 1.63832584735356e-8),
+    (1, 10, 5.1592553304086635e-9),
+];
+
+pub fn stiffness_spectra_match_reference() {
+    let cfg = short_paper();
+    let opts = WelchOptions {
+        segment_len: 1024,
+        ..WelchOptions::default()
+    };
+    let js = wasm::spectra(to_js(&cfg), to_js(&opts), None).unwrap();
+    for (mode, bin, want) in STIFFNESS_FORCE_REFERENCE {
+        let got = f64s(&js, &format!("{mode}.stiffness_force.psd"))[bin];
+        close(
+            &format!("spectra.{mode}.stiffness_force.psd[{bin}]"),
+            got,
+            want,
+            TOL,
+        );
+    }
+    assert!(
+        get(&js, "0.stiffness").is_undefined(),
+        "the old key is gone"
+    );
 }

@@ -1,5 +1,6 @@
-//! The browser API (wasm32 + feature `render`): `WingView` draws the flexing wing into a
-//! canvas, with WebGPU when the browser has it and WebGL2 otherwise.
+//! The 3-D view of the wasm API (wasm32, features `web` and `render`): `WingView` draws the
+//! flexing wing into a canvas with the renderer of [`crate::render`], with WebGPU when the
+//! browser has it and WebGL2 otherwise.
 //!
 //! ```js
 //! const view = await WingView.create(canvas, meshJsonOrNull);
@@ -10,10 +11,10 @@
 //! ```
 //! Every failure reaches JS as a `JsError` with a readable message.
 
-use super::gpu::Renderer;
-use super::mesh::WingMesh;
-use super::scene::{ColourMode, FrameParams, Legend, OrbitKey};
-use super::RenderError;
+use crate::render::gpu::{open_device, Renderer};
+use crate::render::mesh::WingMesh;
+use crate::render::scene::{ColourMode, FrameParams, Legend, OrbitKey};
+use crate::render::RenderError;
 use wasm_bindgen::prelude::*;
 
 fn js_err(e: RenderError) -> JsError {
@@ -120,36 +121,21 @@ impl WingView {
                     "{e} (the canvas may already have a 2d context, or WebGL2 is disabled)"
                 )))
             })?;
-        let adapter = instance
-            .request_adapter(&wgpu::RequestAdapterOptions {
-                power_preference: wgpu::PowerPreference::default(),
-                force_fallback_adapter: false,
-                compatible_surface: Some(&surface),
-                apply_limit_buckets: false,
-            })
-            .await
-            .map_err(|e| {
-                js_err(RenderError::NoAdapter(format!(
-                    "{e}: this browser offers neither WebGPU nor WebGL2"
-                )))
-            })?;
+        let ctx = open_device(
+            &instance,
+            Some(&surface),
+            wgpu::PowerPreference::default(),
+            "wingbeat view",
+            ": this browser offers neither WebGPU nor WebGL2",
+        )
+        .await
+        .map_err(js_err)?;
+        let (adapter, device, queue) = (ctx.adapter, ctx.device, ctx.queue);
         let backend = match adapter.get_info().backend {
             wgpu::Backend::BrowserWebGpu => "webgpu".to_string(),
             wgpu::Backend::Gl => "webgl2".to_string(),
             other => format!("{other:?}").to_lowercase(),
         };
-        let limits = wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits());
-        let (device, queue) = adapter
-            .request_device(&wgpu::DeviceDescriptor {
-                label: Some("wingbeat view"),
-                required_features: wgpu::Features::empty(),
-                required_limits: limits,
-                experimental_features: wgpu::ExperimentalFeatures::disabled(),
-                memory_hints: wgpu::MemoryHints::MemoryUsage,
-                trace: wgpu::Trace::Off,
-            })
-            .await
-            .map_err(|e| js_err(RenderError::Device(e.to_string())))?;
         let caps = surface.get_capabilities(&adapter);
         let format = caps
             .formats

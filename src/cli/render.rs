@@ -1,11 +1,10 @@
-//! Glue for the `wingbeat render` subcommand: plain parameters in, a summary or an error
-//! message out (the caller wires clap to [`run_render`] and prints the result).
+//! The `wingbeat render` subcommand (feature `render`): plain parameters in, a summary or an
+//! error message out (`cmd_render` wires clap to [`run_render`] and prints the result).
 
-use super::mesh::WingMesh;
-use super::offscreen::{render_frames_report, RenderOptions};
-use super::scene::ColourMode;
-use crate::config::SimConfig;
 use std::path::{Path, PathBuf};
+use wingbeat::config::SimConfig;
+use wingbeat::render::offscreen::{render_frames_report, RenderOptions};
+use wingbeat::render::{ColourMode, WingMesh};
 
 /// The file name of frame `i` of `n`: `out` itself for one frame, else `stem_000.png`, ...
 pub fn frame_path(out: &Path, i: usize, n: usize) -> PathBuf {
@@ -54,7 +53,7 @@ pub fn run_render(
                 serde_json::from_str(&text).map_err(|e| format!("{p}: invalid JSON: {e}"))?;
             if let Some(m) = v.get("modes") {
                 fe_modes = Some(
-                    serde_json::from_value::<Vec<crate::model::Mode>>(m.clone())
+                    serde_json::from_value::<Vec<wingbeat::model::Mode>>(m.clone())
                         .map_err(|e| format!("{p}: modes: {e}"))?,
                 );
             }
@@ -119,4 +118,20 @@ pub fn run_render(
         lines.push(format!("warning: {w}"));
     }
     Ok(lines.join("\n"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::frame_path;
+    use std::path::Path;
+
+    #[test]
+    fn frame_paths_are_numbered() {
+        assert_eq!(frame_path(Path::new("a/f.png"), 0, 1), Path::new("a/f.png"));
+        assert_eq!(
+            frame_path(Path::new("a/f.png"), 3, 12),
+            Path::new("a/f_003.png")
+        );
+        assert_eq!(frame_path(Path::new("f"), 2, 1500), Path::new("f_0002.png"));
+    }
 }

@@ -1,0 +1,255 @@
+//! The analyses of the wasm API: spectra (per series, per mode, and everything the live
+//! panels need in one `analyze` call), envelopes, plot decimation, sweeps and the
+//! initial-condition map.
+
+use super::helpers::{self, check_series, opt_or_nan};
+use super::marshal::{
+    config_from, err, f64a, from_js, obj_with, parse_js, set, sim_js, spectrum_js, to_js,
+};
+use crate::analysis::beat;
+use crate::analysis::ic_map::{ic_map as core_ic_map, IcMapOptions};
+use crate::analysis::psd::{welch, WelchOptions};
+use crate::analysis::spectra::mode_spectra;
+use crate::analysis::sweep::{sweep as core_sweep, SweepOptions};
+use crate::config::SimConfig;
+use crate::error::WingbeatError;
+use crate::model::stiffness_force;
+use crate::simulate::SimResult;
+use crate::simulate::{sample_forces, simulate as core_simulate, ForceSeries, ModeSelection};
+use js_sys::{Array, Float64Array, Function, Object};
+use wasm_bindgen::prelude::*;
+
+/// Welch PSD of any series (one-sided, Hann window), with peaks labelled in multiples of
+/// `flap_hz` when given.
+#[wasm_bindgen(unchecked_return_type = "Spectrum")]
+pub fn psd(
+    series: &[f64],
+    sample_rate_hz: f64,
+    #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
+    flap_hz: Option<f64>,
+) -> Result<JsValue, JsError> {
+    let opts: WelchOptions = from_js(opts, "psd")?;
+    check_series("psd.series", series).map_err(err)?;
+    if let Some(f) = flap_hz {
+        crate::error::check_positive("psd.flap_hz", f, 1e9, "Hz").map_err(err)?;
+    }
+    spectrum_js(&welch(series, sample_rate_hz, &opts, flap_hz).map_err(err)?)
+}
+
+/// Envelope |analytic signal| of a series (FFT Hilbert transform), used for the beat.
+#[wasm_bindgen]
+pub fn envelope(series: &[f64]) -> Result<Float64Array, JsError> {
+    check_series("envelope.series", series).map_err(err)?;
+    Ok(Float64Array::from(&beat::envelope(series)[..]))
+}
+
+/// Min/max decimation for plotting: returns `{ index: Float64Array, value: Float64Array }`.
+#[wasm_bindgen(js_name = decimateMinMax)]
+pub fn decimate_min_max(series: &[f64], buckets: usize) -> Result<JsValue, JsError> {
+    check_series("decimate.series", series).map_err(err)?;
+    let (idx, v) = helpers::decimate_minmax(series, buckets.min(1 << 20));
+    let idx: Vec<f64> = idx.into_iter().map(|i| i as f64).collect();
+    Ok(obj_with(&[("index", &idx), ("value", &v)])?.into())
+}
+
+/// What `spectra` and `analyze` compute from one config.
+struct Computed {
+    sim: SimResult,
+    /// Force terms and the stiffness coefficient of the modes asked for (None for the others).
+    forces: Vec<Option<ForceSeries>>,
+}
+
+fn compute(cfg: &SimConfig, which: Option<usize>) -> Result<Computed, JsError> {
+    let sim = core_simulate(cfg).map_err(err)?;
+    let forces = sample_forces(cfg, ModeSelection::from_option(which));
+    Ok(Computed { sim, forces })
+}
+
+fn check_mode(cfg: &SimConfig, mode: Option<usize>) -> Result<(), JsError> {
+    match mode {
+        Some(k) if k >= cfg.modes.len() => Err(err(WingbeatError::invalid(
+            "mode",
+            k,
+            format!("a mode index in [0, {}]", cfg.modes.len().saturating_sub(1)),
+        ))),
+        _ => Ok(()),
+    }
+}
+
+fn spectra_js(c: &Computed, fs: f64, opts: &WelchOptions) -> Result<Array, JsError> {
+    let flap = Some(c.sim.flap_freq_hz);
+    let out = Array::new();
+    for (f, m) in c.forces.iter().zip(&c.sim.modes) {
+        let Some(f) = f else {
+            out.push(&JsValue::NULL);
+            continue;
+        };
+        let s = mode_spectra(f, &m.q.total, fs, opts, flap).map_err(err)?;
+        let o = Object::new();
+        for (k, x) in [
+            ("euler", &s.euler),
+            ("centrifugal", &s.centrifugal),
+            ("coriolis", &s.coriolis),
+            ("stiffness_force", &s.stiffness_force),
+            ("total", &s.total),
+        ] {
+            set(&o, k, &spectrum_js(x)?)?;
+        }
+        out.push(&o);
+    }
+    Ok(out)
+}
+
+/// PSDs, per mode, of the Euler, centrifugal and Coriolis forces, of the stiffness force
+/// S(t)·q_k (S = α̇²cos²β + β̇², the stiffness coefficient) and of the total response (see
+/// `ModeSpectra`; the core's `analysis::spectra::mode_spectra`, as the CLI's `psd`). With `mode`
+/// given, only that mode's entry is computed (the others are `null`).
+#[wasm_bindgen(unchecked_return_type = "(ModeSpectra | null)[]")]
+pub fn spectra(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
+    mode: Option<usize>,
+) -> Result<JsValue, JsError> {
+    let cfg = config_from(cfg)?;
+    let opts: WelchOptions = from_js(opts, "psd")?;
+    opts.validate().map_err(err)?;
+    check_mode(&cfg, mode)?;
+    Ok(spectra_js(&compute(&cfg, mode)?, cfg.sample_rate_hz, &opts)?.into())
+}
+
+/// Everything the lab's live panels need from one config, in one call: the simulation (all
+/// modes), and for the modes asked for (`mode`, or all when omitted) the force terms and the
+/// stiffness force S(t)·q_k (`forces`), their spectra and the envelope of the Coriolis
+/// response (`null` entries for the other modes).
+///
+/// The envelope is taken over the first `helpers::smooth_len(n)` samples (the largest
+/// 2^a·3^b·5^c ≤ n: FFT lengths with large prime factors are several times slower) and the
+/// remaining samples (under 10 % for n ≥ 100; one for the paper case's 20001) repeat its last
+/// value; `envelope()` gives the whole-series one.
+#[wasm_bindgen(unchecked_return_type = "Analysis")]
+pub fn analyze(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
+    mode: Option<usize>,
+) -> Result<JsValue, JsError> {
+    let cfg = config_from(cfg)?;
+    let opts: WelchOptions = from_js(opts, "psd")?;
+    opts.validate().map_err(err)?;
+    check_mode(&cfg, mode)?;
+    let c = compute(&cfg, mode)?;
+    let o = Object::new();
+    set(&o, "sim", &sim_js(&c.sim, cfg.sample_rate_hz)?)?;
+    let forces = Array::new();
+    for (f, m) in c.forces.iter().zip(&c.sim.modes) {
+        match f {
+            Some(f) => forces.push(
+                &obj_with(&[
+                    ("euler", &f.euler),
+                    ("centrifugal", &f.centrifugal),
+                    ("coriolis", &f.coriolis),
+                    (
+                        "stiffness_force",
+                        &stiffness_force(&f.stiffness_coefficient, &m.q.total),
+                    ),
+                ])?
+                .into(),
+            ),
+            None => forces.push(&JsValue::NULL),
+        };
+    }
+    set(&o, "forces", &forces)?;
+    set(
+        &o,
+        "spectra",
+        &spectra_js(&c, cfg.sample_rate_hz, &opts)?.into(),
+    )?;
+    let env = Array::new();
+    for (k, m) in c.sim.modes.iter().enumerate() {
+        if mode.is_some_and(|w| w != k) {
+            env.push(&JsValue::NULL);
+        } else {
+            env.push(&f64a(&helpers::fast_envelope(&m.q.coriolis)));
+        }
+    }
+    set(&o, "envelope", &env)?;
+    Ok(o.into())
+}
+
+/// A parameter sweep (paper Fig. 6 for `gamma0`). `progress(done, total)` is called after each
+/// point when given; an exception it throws is ignored.
+#[wasm_bindgen(unchecked_return_type = "SweepResult")]
+pub fn sweep(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "SweepOptions")] opts: JsValue,
+    progress: Option<Function>,
+) -> Result<JsValue, JsError> {
+    let cfg = config_from(cfg)?;
+    if opts.is_undefined() || opts.is_null() {
+        return Err(JsError::new(
+            "invalid value for `sweep`: missing (allowed: { param, from, to, points })",
+        ));
+    }
+    let opts: SweepOptions = parse_js(opts, "sweep")?;
+    let s = core_sweep(&cfg, &opts, |i, n| {
+        if let Some(f) = &progress {
+            let _ = f.call2(
+                &JsValue::NULL,
+                &JsValue::from_f64(i as f64),
+                &JsValue::from_f64(n as f64),
+            );
+        }
+    })
+    .map_err(err)?;
+    let o = Object::new();
+    set(&o, "param", &to_js(&s.param)?)?;
+    let values: Vec<f64> = s.points.iter().map(|p| p.value).collect();
+    set(&o, "values", &f64a(&values))?;
+    let modes = Array::new();
+    let n_modes = s.points.first().map_or(0, |p| p.modes.len());
+    for k in 0..n_modes {
+        let col = |f: &dyn Fn(&crate::analysis::sweep::SweepModePoint) -> f64| -> Vec<f64> {
+            s.points.iter().map(|p| f(&p.modes[k])).collect()
+        };
+        let mo = obj_with(&[
+            ("euler", &col(&|m| m.contribution_percent.euler)),
+            ("centrifugal", &col(&|m| m.contribution_percent.centrifugal)),
+            ("coriolis", &col(&|m| m.contribution_percent.coriolis)),
+            ("effective_freq_hz", &col(&|m| m.effective_freq_hz)),
+            ("beat_period_s", &col(&|m| opt_or_nan(m.beat_period_s))),
+            ("peak_abs_q", &col(&|m| m.peak_abs_q)),
+        ])?;
+        let stable: Vec<bool> = s.points.iter().map(|p| p.modes[k].stable).collect();
+        set(&mo, "stable", &to_js(&stable)?)?;
+        modes.push(&mo);
+    }
+    set(&o, "modes", &modes)?;
+    Ok(o.into())
+}
+
+/// The initial-condition map (paper Fig. 7): Coriolis share over a grid of (q0, q̇0).
+#[wasm_bindgen(js_name = icMap, unchecked_return_type = "IcMapResult")]
+pub fn ic_map(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "IcMapOptions | undefined")] opts: JsValue,
+) -> Result<JsValue, JsError> {
+    let cfg = config_from(cfg)?;
+    let opts: IcMapOptions = from_js(opts, "ic_map")?;
+    let m = core_ic_map(&cfg, &opts).map_err(err)?;
+    let o = obj_with(&[
+        ("q0", &m.q0),
+        ("qdot0", &m.qdot0),
+        ("coriolis_percent", &m.coriolis_percent),
+    ])?;
+    for (k, v) in [
+        ("mode", m.mode as f64),
+        ("n_q", m.q0.len() as f64),
+        ("n_qdot", m.qdot0.len() as f64),
+        ("min_percent", m.min_percent),
+        ("max_percent", m.max_percent),
+        ("fraction_above_60", m.fraction_above_60),
+    ] {
+        set(&o, k, &JsValue::from_f64(v))?;
+    }
+    set(&o, "attribution", &to_js(&m.attribution)?)?;
+    Ok(o.into())
+}

@@ -1,0 +1,83 @@
+//! The shell finite-element side of the wasm API (paper §3.1): `feModes`.
+
+use super::marshal::{err, f64a, from_js, set, to_js};
+use js_sys::{Object, Uint32Array};
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+/// Shell FE modes of a wing (paper §3.1): mesh, assemble, solve `K φ = ω² M φ`, then the
+/// modal model's inputs — frequencies, SI a_k and b_k, and `modes` ready for a `SimConfig`
+/// (damping ratio `zeta`, modal strains at P = `strain_point_mm`). The mesh, shapes and nodal
+/// strains come back as flat typed arrays (see `FeModesResult`). Errors name the field
+/// (outline, material, camber, mesh size and its node cap). Seconds of work at fine meshes:
+/// call it from a Web Worker.
+#[wasm_bindgen(js_name = feModes, unchecked_return_type = "FeModesResult")]
+pub fn fe_modes(
+    #[wasm_bindgen(unchecked_param_type = "FemInput | undefined")] input: JsValue,
+    zeta: Option<f64>,
+) -> Result<JsValue, JsError> {
+    let input: crate::fem::FemInput = from_js(input, "fem")?;
+    let zeta = zeta.unwrap_or(0.0);
+    crate::error::check_range("zeta", zeta, 0.0, 10.0, "").map_err(err)?;
+    let fe = crate::fem::compute_modes(&input).map_err(err)?;
+    let (px, py) = crate::fem::STRAIN_POINT_P_MM;
+    let modes = fe
+        .model_modes(zeta, &[("P".to_string(), px, py)], "strain point")
+        .map_err(err)?;
+    #[derive(Serialize)]
+    struct Meta<'a> {
+        planform_note: &'a str,
+        a: &'a [[f64; 2]],
+        b: &'a [[f64; 2]],
+        mass_kg: f64,
+        centre_of_mass_m: [f64; 3],
+        kinds: &'a [String],
+        mass_orthonormality_error: f64,
+        n_dofs: usize,
+        n_nodes: usize,
+        n_triangles: usize,
+        n_modes: usize,
+        mesh_size_mm: f64,
+        strain_point_mm: [f64; 2],
+        modes: &'a [crate::model::Mode],
+    }
+    let o: Object = to_js(&Meta {
+        planform_note: &fe.planform_note,
+        a: &fe.a,
+        b: &fe.b,
+        mass_kg: fe.mass_kg,
+        centre_of_mass_m: fe.centre_of_mass_m,
+        kinds: &fe.kinds,
+        mass_orthonormality_error: fe.mass_orthonormality_error,
+        n_dofs: fe.n_dofs,
+        n_nodes: fe.nodes.len(),
+        n_triangles: fe.triangles.len(),
+        n_modes: fe.freq_hz.len(),
+        mesh_size_mm: input.mesh_size_mm,
+        strain_point_mm: [px, py],
+        modes: &modes,
+    })?
+    .unchecked_into();
+    set(&o, "freq_hz", &f64a(&fe.freq_hz))?;
+    set(&o, "residuals", &f64a(&fe.residuals))?;
+    let nodes: Vec<f64> = fe.nodes.iter().flatten().copied().collect();
+    set(&o, "nodes", &f64a(&nodes))?;
+    let tris: Vec<u32> = fe
+        .triangles
+        .iter()
+        .flatten()
+        .map(|&i| u32::try_from(i).unwrap_or(u32::MAX))
+        .collect();
+    set(&o, "triangles", &Uint32Array::from(&tris[..]).into())?;
+    let shapes: Vec<f64> = fe.shapes.iter().flatten().copied().collect();
+    set(&o, "shapes", &f64a(&shapes))?;
+    let strains: Vec<f64> = fe
+        .strain_nodes
+        .iter()
+        .flatten()
+        .flatten()
+        .copied()
+        .collect();
+    set(&o, "strain_nodes", &f64a(&strains))?;
+    Ok(o.into())
+}

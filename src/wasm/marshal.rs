@@ -1,0 +1,157 @@
+//! Crossing the wasm seam: JS values in (through JSON and serde, with the failing field's
+//! path in the error), JS objects out (small metadata through serde, long series as
+//! `Float64Array`s copied once out of wasm memory).
+
+use super::helpers::check_web_caps;
+use crate::analysis::psd::Spectrum;
+use crate::config::SimConfig;
+use crate::error::WingbeatError;
+use crate::simulate::{SimResult, StrainSeries};
+use js_sys::{Array, Float64Array, Object, Reflect};
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+pub(crate) fn err(e: WingbeatError) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+/// Deserialises a JS value, naming the path of the first bad field in the error.
+///
+/// The value goes through `JSON.stringify` and serde_json — the same parser as the CLI's config
+/// files — rather than straight through serde-wasm-bindgen, whose struct deserialiser skips
+/// unknown keys and so would defeat `deny_unknown_fields`. NaN and ±Infinity become `null`
+/// there and are reported as such.
+pub(crate) fn from_js<T: DeserializeOwned + Default>(v: JsValue, what: &str) -> Result<T, JsError> {
+    if v.is_undefined() || v.is_null() {
+        return Ok(T::default());
+    }
+    parse_js(v, what)
+}
+
+pub(crate) fn parse_js<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T, JsError> {
+    let text: String = js_sys::JSON::stringify(&v)
+        .map_err(|_| {
+            JsError::new(&format!(
+                "invalid value for `{what}`: not JSON-serialisable (cyclic, BigInt or a throwing getter)"
+            ))
+        })?
+        .into();
+    let mut de = serde_json::Deserializer::from_str(&text);
+    serde_path_to_error::deserialize(&mut de).map_err(|e| {
+        let path = e.path().to_string();
+        let place = if path == "." || path.is_empty() {
+            what.to_string()
+        } else {
+            format!("{what}.{path}")
+        };
+        let inner = e.inner().to_string();
+        let hint = if inner.contains("null") {
+            " (NaN, ±Infinity and null are not numbers here)"
+        } else {
+            ""
+        };
+        JsError::new(&format!("invalid value for `{place}`: {inner}{hint}"))
+    })
+}
+
+pub(crate) fn config_from(v: JsValue) -> Result<SimConfig, JsError> {
+    let cfg: SimConfig = from_js(v, "config")?;
+    cfg.validate().map_err(err)?;
+    check_web_caps(&cfg).map_err(err)?;
+    Ok(cfg)
+}
+
+pub(crate) fn to_js<T: Serialize + ?Sized>(v: &T) -> Result<JsValue, JsError> {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(|e| JsError::new(&format!("could not build the JS result: {e}")))
+}
+
+pub(crate) fn set(o: &Object, key: &str, v: &JsValue) -> Result<(), JsError> {
+    Reflect::set(o, &JsValue::from_str(key), v)
+        .map(|_| ())
+        .map_err(|_| JsError::new(&format!("could not set `{key}` on the JS result")))
+}
+
+pub(crate) fn f64a(v: &[f64]) -> JsValue {
+    Float64Array::from(v).into()
+}
+
+pub(crate) fn obj_with(pairs: &[(&str, &[f64])]) -> Result<Object, JsError> {
+    let o = Object::new();
+    for (k, v) in pairs {
+        set(&o, k, &f64a(v))?;
+    }
+    Ok(o)
+}
+
+pub(crate) fn strain_js(s: &StrainSeries) -> Result<JsValue, JsError> {
+    let o = obj_with(&[
+        ("eps_x", &s.eps_x),
+        ("eps_y", &s.eps_y),
+        ("gamma_xy", &s.gamma_xy),
+    ])?;
+    set(&o, "point", &JsValue::from_str(&s.point))?;
+    Ok(o.into())
+}
+
+#[derive(Serialize)]
+struct ModeMeta<'a> {
+    name: &'a str,
+    freq_hz: f64,
+    zeta: f64,
+    contribution_percent: &'a crate::analysis::contribution::Contributions,
+    floquet: &'a crate::floquet::FloquetResult,
+    accuracy: &'a crate::simulate::Accuracy,
+}
+
+pub(crate) fn sim_js(r: &SimResult, sample_rate_hz: f64) -> Result<JsValue, JsError> {
+    let o = Object::new();
+    set(&o, "n", &JsValue::from_f64(r.t.len() as f64))?;
+    set(&o, "sample_rate_hz", &JsValue::from_f64(sample_rate_hz))?;
+    set(&o, "flap_freq_hz", &JsValue::from_f64(r.flap_freq_hz))?;
+    set(&o, "t", &f64a(&r.t))?;
+    let modes = Array::new();
+    for m in &r.modes {
+        let meta = to_js(&ModeMeta {
+            name: &m.name,
+            freq_hz: m.freq_hz,
+            zeta: m.zeta,
+            contribution_percent: &m.contribution_percent,
+            floquet: &m.floquet,
+            accuracy: &m.accuracy,
+        })?;
+        let mo: Object = meta.unchecked_into();
+        let q = obj_with(&[
+            ("euler", &m.q.euler),
+            ("centrifugal", &m.q.centrifugal),
+            ("coriolis", &m.q.coriolis),
+            ("free", &m.q.free),
+            ("total", &m.q.total),
+        ])?;
+        set(&mo, "q", &q)?;
+        set(&mo, "qdot_total", &f64a(&m.qdot_total))?;
+        modes.push(&mo);
+    }
+    set(&o, "modes", &modes)?;
+    let strain = match &r.strain {
+        Some(s) => strain_js(s)?,
+        None => JsValue::NULL,
+    };
+    set(&o, "strain", &strain)?;
+    let points = Array::new();
+    for s in &r.strain_points {
+        points.push(&strain_js(s)?);
+    }
+    set(&o, "strain_points", &points)?;
+    set(&o, "warnings", &to_js(&r.warnings)?)?;
+    Ok(o.into())
+}
+
+pub(crate) fn spectrum_js(s: &Spectrum) -> Result<JsValue, JsError> {
+    let o = Object::new();
+    set(&o, "freq_hz", &f64a(&s.freq_hz))?;
+    set(&o, "psd", &f64a(&s.psd))?;
+    set(&o, "peaks", &to_js(&s.peaks)?)?;
+    Ok(o.into())
+}

@@ -1,0 +1,116 @@
+//! The simulation side of the wasm API: configs (defaults, validation, limits), the
+//! simulation itself, the force terms, the kinematic angles and the paper-claims report.
+
+use super::helpers;
+use super::helpers::check_series;
+use super::marshal::{config_from, err, obj_with, sim_js, to_js};
+use crate::config::SimConfig;
+use crate::simulate::{force_series as core_force_series, simulate as core_simulate, ForceSeries};
+use js_sys::{Array, Float64Array};
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+/// The paper's forward-flight case (Tables 3–6), the default of every field.
+#[wasm_bindgen(js_name = defaultConfig, unchecked_return_type = "SimConfig")]
+pub fn default_config() -> Result<JsValue, JsError> {
+    to_js(&SimConfig::default())
+}
+
+/// Validates a config (the core's checks plus the web caps); throws with the field's name.
+#[wasm_bindgen(js_name = validateConfig)]
+pub fn validate_config(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+) -> Result<(), JsError> {
+    config_from(cfg).map(|_| ())
+}
+
+/// The resource caps in force (core and web).
+#[wasm_bindgen(unchecked_return_type = "Limits")]
+pub fn limits() -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Limits {
+        max_duration_s: f64,
+        max_sample_rate_hz: f64,
+        max_samples: usize,
+        web_max_sample_values: usize,
+        max_sweep_points: usize,
+        max_ic_cells: usize,
+        max_modes: usize,
+    }
+    to_js(&Limits {
+        max_duration_s: crate::config::MAX_DURATION_S,
+        max_sample_rate_hz: crate::config::MAX_SAMPLE_RATE_HZ,
+        max_samples: crate::config::MAX_SAMPLES,
+        web_max_sample_values: helpers::WEB_MAX_SAMPLE_VALUES,
+        max_sweep_points: crate::analysis::sweep::MAX_POINTS,
+        max_ic_cells: crate::analysis::ic_map::MAX_CELLS,
+        max_modes: crate::model::MAX_MODES,
+    })
+}
+
+/// Runs a simulation: partial and total responses per mode, contributions, Floquet summary,
+/// strains (see `SimResult`).
+#[wasm_bindgen(unchecked_return_type = "SimResult")]
+pub fn simulate(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+) -> Result<JsValue, JsError> {
+    let cfg = config_from(cfg)?;
+    let r = core_simulate(&cfg).map_err(err)?;
+    sim_js(&r, cfg.sample_rate_hz)
+}
+
+fn forces_js(f: &ForceSeries) -> Result<JsValue, JsError> {
+    Ok(obj_with(&[
+        ("euler", &f.euler),
+        ("centrifugal", &f.centrifugal),
+        ("coriolis", &f.coriolis),
+        ("stiffness_coefficient", &f.stiffness_coefficient),
+    ])?
+    .into())
+}
+
+/// The Eq. 13 force terms of every mode and the stiffness coefficient S(t) = α̇²cos²β + β̇²
+/// (1/s², key `stiffness_coefficient`) on the output time grid (paper Fig. 4).
+#[wasm_bindgen(js_name = forceSeries, unchecked_return_type = "ForceSeries[]")]
+pub fn force_series(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+) -> Result<JsValue, JsError> {
+    let cfg = config_from(cfg)?;
+    let fs = core_force_series(&cfg).map_err(err)?;
+    let out = Array::new();
+    for f in &fs {
+        out.push(&forces_js(f)?);
+    }
+    Ok(out.into())
+}
+
+/// Roll, pitch and yaw (rad) of the config's kinematics at each time in `times` (s),
+/// interleaved `[α(t0), β(t0), γ(t0), α(t1), …]` (paper §2.1). The 3-D view uses it to pose
+/// the wing at the same instants as the simulated responses.
+#[wasm_bindgen(js_name = anglesAt)]
+pub fn angles_at(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+    times: &[f64],
+) -> Result<Float64Array, JsError> {
+    let cfg = config_from(cfg)?;
+    check_series("anglesAt.times", times).map_err(err)?;
+    let kin = cfg.kinematics.compile();
+    let mut out = Vec::with_capacity(3 * times.len());
+    for &t in times {
+        let s = kin.state(t);
+        out.extend_from_slice(&[s.alpha, s.beta, s.gamma]);
+    }
+    Ok(Float64Array::from(&out[..]))
+}
+
+/// The paper's claims next to what wingbeat computes, each with a verdict (a JS object).
+#[wasm_bindgen]
+pub fn reproduce() -> Result<JsValue, JsError> {
+    to_js(&crate::reproduce::reproduce().map_err(err)?)
+}
+
+/// The same report as plain text.
+#[wasm_bindgen(js_name = reproduceText)]
+pub fn reproduce_text() -> Result<String, JsError> {
+    Ok(crate::reproduce::reproduce().map_err(err)?.to_text())
+}

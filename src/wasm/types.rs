@@ -1,0 +1,107 @@
+//! The TypeScript declarations of the wasm API's inputs and results, emitted into the
+//! generated `.d.ts` by wasm-bindgen. They describe the serde types of the core (field for
+//! field) and the objects built in [`super::marshal`]; `tests/ts_types.rs` fails when they drift.
+
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_TYPES: &'static str = r#"
+/** One harmonic `amplitude · sin(n ω_d t + phase)`; rad. */
+export interface Harmonic { n: number; amplitude: number; phase?: number }
+/** How one angle is given: mean + harmonics, or samples over one period (rad). */
+export type Angle =
+  | { kind: "fourier"; mean?: number; harmonics?: Harmonic[] }
+  | { kind: "sampled"; values: number[]; max_harmonic?: number | null };
+/** Rotation kinematics (paper §2.1, Eq. 1). */
+export interface Kinematics { flap_freq_hz: number; alpha: Angle; beta: Angle; gamma: Angle }
+/** Modal strain at a named point, per unit q (Eqs. 16–18). */
+export interface ModalStrain { point: string; eps_x: number; eps_y: number; gamma_xy: number }
+/** One vibration mode: ω_k/2π in Hz, a_k in kg^½·m, damping ratio ζ. */
+export interface Mode { name?: string; freq_hz: number; a: [number, number]; zeta?: number; strains?: ModalStrain[] }
+/** A simulation request; every field is optional (missing = the paper's forward-flight case). */
+export interface SimConfig {
+  kinematics?: Kinematics;
+  modes?: Mode[];
+  duration_s?: number;
+  sample_rate_hz?: number;
+  initial_conditions?: [number, number][];
+}
+/** Welch PSD options (Hann window). detrend "none" keeps the DC part visible. */
+export interface WelchOptions { segment_len?: number; overlap?: number; detrend?: "none" | "mean" | "linear"; max_peaks?: number }
+export type SweepParam = "gamma0" | "alpha0" | "beta0" | "flap_hz" | "zeta";
+export interface SweepOptions { param: SweepParam; from: number; to: number; points: number }
+export interface IcMapOptions {
+  mode?: number; n_q?: number; n_qdot?: number;
+  q_range?: [number, number] | null; qdot_range?: [number, number] | null;
+  attribution?: "forced" | "carried";
+}
+export interface Contributions { euler: number; centrifugal: number; coriolis: number }
+export interface FloquetResult {
+  multipliers: [number, number][]; monodromy: [[number, number], [number, number]];
+  stable: boolean; max_modulus: number; growth_rate_per_s: number; homogeneous_period_s: number;
+  characteristic_freq_hz: number; dominant_harmonic: number; effective_freq_hz: number;
+  averaged_freq_hz: number; beat_harmonic: number; beat_period_s: number | null;
+  beat_period_vs_2fd_s: number | null;
+}
+export interface Accuracy { method: string; period_error_estimate: number; periods: number; run_error_bound: number }
+export interface Responses { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; free: Float64Array; total: Float64Array }
+export interface ModeResult {
+  name: string; freq_hz: number; zeta: number; q: Responses; qdot_total: Float64Array;
+  contribution_percent: Contributions; floquet: FloquetResult; accuracy: Accuracy;
+}
+export interface StrainSeries { point: string; eps_x: Float64Array; eps_y: Float64Array; gamma_xy: Float64Array }
+export interface SimResult {
+  n: number; sample_rate_hz: number; flap_freq_hz: number; t: Float64Array; modes: ModeResult[];
+  strain: StrainSeries | null; strain_points: StrainSeries[]; warnings: string[];
+}
+/** Force terms of one mode and the stiffness coefficient S(t) = α̇²cos²β + β̇² (1/s²). */
+export interface ForceSeries { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; stiffness_coefficient: Float64Array }
+export interface Peak { freq_hz: number; psd: number; flap_multiple: number | null }
+export interface Spectrum { freq_hz: Float64Array; psd: Float64Array; peaks: Peak[] }
+/** Spectra of one mode: force terms, the stiffness force S(t)·q_k (S = α̇²cos²β+β̇²), and the total response. */
+export interface ModeSpectra { euler: Spectrum; centrifugal: Spectrum; coriolis: Spectrum; stiffness_force: Spectrum; total: Spectrum }
+/** Force terms of one mode and the stiffness force S(t)·q_k, same units. */
+export interface ModeForces { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; stiffness_force: Float64Array }
+export interface Analysis {
+  sim: SimResult;
+  /** Per mode; null for modes not asked for. */
+  forces: (ModeForces | null)[];
+  spectra: (ModeSpectra | null)[];
+  /** Envelope |analytic signal| of each asked-for mode's Coriolis response (see analyze()). */
+  envelope: (Float64Array | null)[];
+}
+export interface SweepModeColumns {
+  euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array;
+  effective_freq_hz: Float64Array; beat_period_s: Float64Array; peak_abs_q: Float64Array; stable: boolean[];
+}
+export interface SweepResult { param: SweepParam; values: Float64Array; modes: SweepModeColumns[] }
+export interface IcMapResult {
+  mode: number; n_q: number; n_qdot: number; q0: Float64Array; qdot0: Float64Array;
+  /** Row-major: row j = qdot0[j], column i = q0[i]. */
+  coriolis_percent: Float64Array; min_percent: number; max_percent: number;
+  fraction_above_60: number; attribution: "forced" | "carried";
+}
+/** Shell FE input (paper §3.1); every field optional (missing = the default synthetic wing). */
+export interface FemInput {
+  planform_mm?: [number, number][]; planform_note?: string; camber?: number;
+  clamp?: "root" | "free" | { strip: { x_mm: number } };
+  material?: { thickness_m: number; e_pa: number; rho_kg_m3: number; nu: number };
+  n_modes?: number; mesh_size_mm?: number;
+}
+/** Shell FE modes: SI summary, Eq. 13 inputs (`modes`, strain at P) and the mesh as flat typed arrays. */
+export interface FeModesResult {
+  planform_note: string; freq_hz: Float64Array; a: [number, number][]; b: [number, number][];
+  mass_kg: number; centre_of_mass_m: [number, number, number]; kinds: string[];
+  residuals: Float64Array; mass_orthonormality_error: number; n_dofs: number;
+  n_nodes: number; n_triangles: number; n_modes: number; mesh_size_mm: number;
+  strain_point_mm: [number, number]; modes: Mode[];
+  /** x, y, z per node, m. */ nodes: Float64Array;
+  /** Three node indices per triangle. */ triangles: Uint32Array;
+  /** Mode-major: shapes[k·n_nodes + i], kg^-½. */ shapes: Float64Array;
+  /** strain_nodes[(k·n_nodes + i)·3 + c], c = ε_x, ε_y, γ_xy per unit q. */ strain_nodes: Float64Array;
+}
+export interface Limits {
+  max_duration_s: number; max_sample_rate_hz: number; max_samples: number;
+  web_max_sample_values: number; max_sweep_points: number; max_ic_cells: number; max_modes: number;
+}
+"#;
