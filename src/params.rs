@@ -235,7 +235,7 @@ fn apply_one(c: &mut SimConfig, p: &Param, v: f64) -> Result<()> {
 /// `beta_phase`, `gamma_phase` (first-harmonic phases, rad), `duration` (s).
 ///
 /// Errors: an unknown key (named, with the known ones listed); a value outside its slider
-/// range [`Param::min`, `Param::max`] (named `overrides.KEY`, with the range and unit);
+/// range [[`Param::min`], [`Param::max`]] (named `overrides.KEY`, with the range and unit);
 /// a phase or amplitude for a sampled angle; and whatever [`SimConfig::validate`] rejects in
 /// the result. Keys may come in any order; each is applied once, independently of the others.
 pub fn apply_overrides<K: AsRef<str>>(
