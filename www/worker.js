@@ -39,8 +39,7 @@ const jobs = {
   },
   resonance({ cfg, opts }, progress) {
     // Floquet effective frequency and largest |multiplier| per flap frequency (and α0).
-    if (typeof wb.resonanceMap === 'function') return wb.resonanceMap(cfg, opts, progress);
-    return resonanceViaSimulate(cfg, opts, progress);
+    return wb.resonanceMap(cfg, opts, progress);
   },
   reproduce() {
     return wb.reproduce();
@@ -50,45 +49,6 @@ const jobs = {
     return wb.feModes(input);
   },
 };
-
-// The resonance map from `simulate` runs of a few samples each (their Floquet numbers), for
-// wasm builds without `resonanceMap`; same result shape as the wasm function.
-function resonanceViaSimulate(cfg, opts, progress) {
-  const nx = Math.max(2, Math.round(opts.points));
-  const fd = Float64Array.from({ length: nx }, (_, i) => opts.from_hz + ((opts.to_hz - opts.from_hz) * i) / (nx - 1));
-  const a0s = opts.alpha0_values ? Float64Array.from(opts.alpha0_values) : null;
-  const ny = a0s ? a0s.length : 1;
-  const nm = cfg.modes.length;
-  const modes = cfg.modes.map((m) => ({
-    freq_hz: m.freq_hz,
-    effective_freq_hz: new Float64Array(nx * ny),
-    max_modulus: new Float64Array(nx * ny),
-    beat_period_s: new Float64Array(nx * ny),
-    stable: new Uint8Array(nx * ny),
-  }));
-  for (let j = 0; j < ny; j++) {
-    for (let i = 0; i < nx; i++) {
-      const c = structuredClone(cfg);
-      c.kinematics.flap_freq_hz = fd[i];
-      if (a0s) c.kinematics.alpha.harmonics[0].amplitude = a0s[j];
-      c.duration_s = 2 / c.sample_rate_hz;
-      const r = wb.simulate(c);
-      for (let k = 0; k < nm; k++) {
-        const f = r.modes[k].floquet;
-        const o = j * nx + i;
-        modes[k].effective_freq_hz[o] = f.effective_freq_hz ?? NaN;
-        modes[k].max_modulus[o] = f.max_modulus;
-        modes[k].beat_period_s[o] = f.beat_period_s ?? NaN;
-        modes[k].stable[o] = f.stable ? 1 : 0;
-      }
-      const done = j * nx + i + 1;
-      if (done % 16 === 0 || done === nx * ny) progress(done, nx * ny);
-    }
-  }
-  const out = { flap_hz: fd, modes };
-  if (a0s) out.alpha0 = a0s;
-  return out;
-}
 
 function transferables(v, acc = []) {
   if (ArrayBuffer.isView(v)) acc.push(v.buffer);

@@ -169,14 +169,19 @@ test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, can
   await page.locator(box).screenshot({ path: path.join(OUT, 'resonance-1280.png') });
   // A 2-D map (α0 axis) can be cancelled mid-run; the lab stays live.
   await page.check(`${box} input[type=checkbox]`);
-  // 21 × 801 points: seconds of work, inside the core's work cap (resonance::MAX_WORK).
+  // 21 × 601 points: seconds of work, inside the core's work cap (resonance::MAX_WORK, 1e7).
   await page.fill(`${box} .wl-res-axis2 input[aria-label^="α0 values"]`, '21');
-  await page.fill(`${box} input[aria-label^="points"]`, '801');
+  await page.fill(`${box} input[aria-label^="points"]`, '601');
   await page.click(`${box} [data-run="resonance"]`);
   await page.waitForSelector(`${box} [data-cancel="resonance"]:not([hidden])`);
   await page.click(`${box} [data-cancel="resonance"]`);
   await page.waitForFunction((s) => /Cancelled/.test(document.querySelector(`${s} .wl-status`).textContent), box);
   assert.equal(await page.isDisabled(`${box} [data-run="resonance"]`), false);
+  // A map over the core's work cap is refused at once, with the core's own message.
+  await page.fill(`${box} .wl-res-axis2 input[aria-label^="α0 values"]`, '201');
+  await page.fill(`${box} input[aria-label^="points"]`, '2001');
+  await page.click(`${box} [data-run="resonance"]`);
+  await page.waitForFunction((s) => /Error: .*over the cap/.test(document.querySelector(`${s} .wl-status`).textContent), box, { timeout: 20000 });
   assert.deepEqual(o.problems, []);
   await o.context.close();
 });

@@ -271,7 +271,7 @@ export function mount(ctx) {
   const l2 = el('label', { class: 'wl-inline wl-check', for: `${uid}-2d` }, two, ' ', el('span', { rich: 'α_0 as a second axis' }));
   const [la0, a0from] = num('α_0 from (rad)', 0.2, 0, 1.5, 0.05);
   const [la1, a0to] = num('α_0 to (rad)', 1.2, 0, 1.5, 0.05);
-  const [lan, a0n] = num('α_0 values', 21, 2, 101, 1);
+  const [lan, a0n] = num('α_0 values', 11, 2, 201, 1);
   const axis2 = el('span', { class: 'wl-res-axis2', hidden: true }, la0, la1, lan);
   two.addEventListener('change', () => { axis2.hidden = !two.checked; });
   const runBtn = el('button', { type: 'button', class: 'wl-run', text: 'Run', 'data-run': 'resonance' });
