@@ -12,7 +12,7 @@
 // Results carry the kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`),
 // from wasm `analyze` when it provides them and otherwise from ONE `anglesAt` call per
 // recompute (made lazily, on first read), so the 3-D view never crosses into wasm per frame.
-import { toConfig, FE_LAB_INPUT } from './state.js';
+import { overridesOf, FE_LAB_INPUT, SAMPLE_RATE_HZ } from './state.js';
 
 const HERE = new URL('.', import.meta.url);
 
@@ -45,22 +45,6 @@ export function splitAngles(flat) {
     gamma[i] = flat[3 * i + 2];
   }
   return { alpha, beta, gamma };
-}
-
-/**
- * Brings an `analyze` result to the current API contract, whichever wasm build produced it:
- * `spectra[k].stiffness_force` and `forces[k].stiffness_force` (older builds: `stiffness`).
- * The old key stays as an alias so either name reads the same series.
- */
-export function normalise(a) {
-  for (const group of [a.spectra || [], a.forces || []]) {
-    for (const s of group) {
-      if (!s) continue;
-      if (s.stiffness_force == null && s.stiffness != null) s.stiffness_force = s.stiffness;
-      if (s.stiffness == null && s.stiffness_force != null) s.stiffness = s.stiffness_force;
-    }
-  }
-  return a;
 }
 
 /**
@@ -139,14 +123,21 @@ export function createEngine(deps = {}) {
     limits() {
       return wb.limits();
     },
-    /** The core's table of the lab's numeric parameters (wasm `parameters()`), or null in older builds. */
+    /** The core's table of the lab's numeric parameters (wasm `parameters()`; null before load). */
     parameters() {
-      return wb && typeof wb.parameters === 'function' ? wb.parameters() : null;
+      return wb ? wb.parameters() : null;
     },
-    /** The SimConfig for URL parameters: the paper table, or the FE wing's modes. */
+    /**
+     * The SimConfig for URL parameters, built by the core (wasm `applyOverrides`): the paper
+     * case (or, with modes=fe once computed, the FE wing's modes) at the lab's sample rate, with
+     * every numeric parameter applied by its key. Throws the wasm error (naming the key) for a
+     * value the core rejects.
+     */
     config(params) {
-      const b = params.modes === 'fe' && fe ? { modes: fe.modes } : base;
-      return toConfig(params, b);
+      if (!wb) throw new Error('engine: wasm not loaded');
+      const b = { ...base, sample_rate_hz: SAMPLE_RATE_HZ };
+      if (params.modes === 'fe' && fe) b.modes = fe.modes;
+      return wb.applyOverrides(b, overridesOf(params));
     },
     /**
      * The live analysis of the selected mode: { cfg, k, analysis, angles, compute_ms }.
@@ -157,7 +148,7 @@ export function createEngine(deps = {}) {
       const cfg = engine.config(params);
       const k = Number(params.mode) - 1;
       const t0 = now();
-      const a = normalise(wb.analyze(cfg, { detrend: params.detrend, segment_len: 8192 }, k));
+      const a = wb.analyze(cfg, { detrend: params.detrend, segment_len: 8192 }, k);
       const t1 = now();
       const res = { cfg, k, params, analysis: a, compute_ms: t1 - t0 };
       let angles = a.angles && a.angles.alpha ? a.angles : null;

@@ -4,7 +4,8 @@
 //   <wing-lab gamma0="0.1" flap_hz="25" panels="controls,numbers,spectrum"></wing-lab>
 //
 // Module map (model / view split in the manner of PhET sims; each module has one job):
-//   state.js     pure: parameters, URL/attribute parsing and validation, SimConfig (toConfig)
+//   state.js     pure: parameters, URL/attribute parsing and validation, overridesOf (the
+//                SimConfig itself is the core's: engine.config → wasm applyOverrides)
 //   store.js     observable state: get / set(patch) / subscribe(keys, fn); keys = the URL
 //                parameters + result (latest analysis, with angles), fe, t3d (3-D instant),
 //                playing, timing, status

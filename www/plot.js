@@ -14,7 +14,7 @@ const COLORS = {
   euler: '#1f77b4',
   centrifugal: '#ff7f0e',
   coriolis: '#2ca02c',
-  stiffness: '#9467bd',
+  stiffness_force: '#9467bd',
   total: '#222222',
   free: '#8c564b',
   envelope: '#d62728',

@@ -1,5 +1,7 @@
 // Lab state <-> URL query / element attributes. Pure functions (no DOM), unit-tested in
-// tests/js/state.test.mjs. Everything read from outside is validated here: a value that is not
+// tests/js/state.test.mjs. The slider table NUMERIC mirrors the core's parameter table (wasm
+// `parameters()`, src/params.rs; tests/js/wasm.test.mjs checks every field); the SimConfig is
+// built by the core (wasm `applyOverrides`, called by www/engine.js from overridesOf()). Everything read from outside is validated here: a value that is not
 // a plain decimal number inside its slider's range, or not one of an enum's choices, is dropped
 // (the default is used) and reported by name so the page can show a notice (as text only).
 
@@ -151,21 +153,18 @@ export function snap(p, v) {
   return Math.min(p.max, Math.max(p.min, Number(s.toFixed(digits))));
 }
 
-/** The wasm SimConfig for a state, given the paper base config from wasm's defaultConfig(). */
-export function toConfig(state, base) {
-  const angle = (amp, phase) => ({ kind: 'fourier', mean: 0, harmonics: [{ n: 1, amplitude: amp, phase }] });
-  return {
-    kinematics: {
-      flap_freq_hz: state.flap_hz,
-      alpha: angle(state.alpha0, state.alpha_phase),
-      beta: angle(state.beta0, state.beta_phase),
-      gamma: angle(state.gamma0, state.gamma_phase),
-    },
-    modes: base.modes.map((m) => ({ ...m, zeta: state.zeta })),
-    duration_s: state.duration,
-    sample_rate_hz: SAMPLE_RATE_HZ,
-    initial_conditions: [],
-  };
+/**
+ * The named overrides of a state for wasm `applyOverrides(base, overrides)`: the value of every
+ * numeric parameter, by key. What each key means (γ0 is the first-harmonic amplitude of the yaw
+ * angle, ζ applies to every mode, …) is decided by the core (src/params.rs), not here.
+ * @param {Record<string, unknown>} state
+ * @returns {Record<string, number>}
+ */
+export function overridesOf(state) {
+  /** @type {Record<string, number>} */
+  const o = {};
+  for (const p of NUMERIC) o[p.key] = Number(state[p.key]);
+  return o;
 }
 
 /** The five parameters the lab shows first (the rest follow under "More parameters"). */

@@ -24,7 +24,7 @@ export function mount(ctx) {
       { label: 'Euler force', color: color('euler') },
       { label: 'Centrifugal force', color: color('centrifugal') },
       { label: 'Coriolis force', color: color('coriolis'), width: 1.6 },
-      { label: 'Stiffness force S(t)·q', color: color('stiffness') },
+      { label: 'Stiffness force S(t)·q', color: color('stiffness_force') },
       { label: 'Total response (right axis)', color: color('total'), scale: 'y2', dash: [4, 3] },
     ],
     markers: () => markers,
@@ -54,7 +54,7 @@ export function mount(ctx) {
       for (let i = 0; i < n; i++) out[i] = log10OrNull(arr[i]);
       return out;
     };
-    const stiff = sp.stiffness_force || sp.stiffness;
+    const stiff = sp.stiffness_force;
     plot.setData([Array.from(freq.subarray(0, n)), pos(sp.euler.psd), pos(sp.centrifugal.psd), pos(sp.coriolis.psd), pos(stiff.psd), pos(sp.total.psd)]);
     const marks = [];
     for (let j = 1; j * fd <= fmax; j++) marks.push({ x: j * fd, label: `${j}f_d`, color: '#8a8a8a' });
@@ -83,7 +83,7 @@ export function mount(ctx) {
           { name: 'psd_euler_force', unit: pu, values: sp.euler.psd },
           { name: 'psd_centrifugal_force', unit: pu, values: sp.centrifugal.psd },
           { name: 'psd_coriolis_force', unit: pu, values: sp.coriolis.psd },
-          { name: 'psd_stiffness_term', unit: pu, values: (sp.stiffness_force || sp.stiffness).psd },
+          { name: 'psd_stiffness_force', unit: pu, values: sp.stiffness_force.psd },
           { name: 'psd_total_response', unit: UNITS.qpsd.csv, values: sp.total.psd },
         ],
         [`wingbeat lab; ${toQuery(s)}`, `mode ${s.result.k + 1}; Welch, Hann, 8192-sample segments, detrend ${s.detrend}; all bins up to Nyquist`],
