@@ -1,3 +1,4 @@
+// @ts-check
 // Spectra panel (paper Fig. 4): Welch PSDs of the Euler, centrifugal and Coriolis forces and of
 // the stiffness force S(t)·q_k (left axis), and of the total response (right axis), with
 // markers at the flap harmonics n·f_d, the natural frequency f_k and the Floquet f_{eff}.
@@ -8,6 +9,7 @@ import { SAMPLE_RATE_HZ, toQuery, describe } from '../state.js';
 
 export const title = 'Spectra of the force terms';
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section } = ctx;
   let markers = [];
@@ -74,8 +76,8 @@ export function mount(ctx) {
   ctx.registerExport('spectrum', {
     csv: () => {
       const s = store.get();
-      if (!s.result) return null;
-      const sp = s.result.analysis.spectra[s.result.k];
+      const sp = s.result && s.result.analysis.spectra[s.result.k];
+      if (!s.result || !sp) return null;
       const pu = UNITS.fpsd.csv;
       return ctx.toCSV(
         [
