@@ -77,7 +77,7 @@ function approxWidth(text, size) {
  * @returns {CanvasRenderingContext2D}
  */
 export function context2d(c) {
-  const ctx = context2d(c);
+  const ctx = c.getContext('2d');
   if (!ctx) throw new Error('no 2-D canvas context');
   return ctx;
 }
