@@ -317,7 +317,7 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
         "paper" => None,
         "fe-wing" => {
             eprintln!("simulate: computing the fe-wing preset's shell FE modes…");
-            Some(wingbeat::presets::fe_wing_config()?)
+            Some(wingbeat::presets::fe_wing_modes()?)
         }
         other => {
             return Err(WingbeatError::invalid(
@@ -337,8 +337,8 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
         })?,
         None => SimConfig::paper(),
     };
-    if let Some(fe) = preset {
-        cfg.modes = fe.modes;
+    if let Some(fe_modes) = preset {
+        cfg.modes = fe_modes;
     }
     if let Some(p) = &inp.modes {
         cfg.modes = modes_from_json(&read_file(p)?, &p.display().to_string())?;
