@@ -1,6 +1,6 @@
 //! The paper's data (Jankauski & Shen, Tables 3–6) as ready-made inputs.
 //!
-//! Caveats (see `MODEL.md`): Table 4's a_k are used exactly as printed, although they are not
+//! Caveats (see `docs/model.md`): Table 4's a_k are used exactly as printed, although they are not
 //! SI values for mass-normalised modes (for a ≈ 60 mg wing, |a_x| of mode 1 should be of order
 //! 1e-4 kg^½·m). Every response of a mode scales with its a_k, so relative results — force
 //! contributions, spectra shapes, beat periods — are unaffected; absolute q and strain are not
