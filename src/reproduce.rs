@@ -223,7 +223,7 @@ impl Context {
         })?;
         let strip = compute_modes(&FemInput {
             clamp: Clamp::Strip { x_mm: 3.0 },
-            ..fe_in.clone()
+            ..fe_in
         })?;
         let m1 = &cfg.modes[0];
         let kin_ref = &kin;

@@ -360,7 +360,7 @@ impl Renderer {
 
         let uniform_buf = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("wing uniforms"),
-            size: std::mem::size_of::<Uniforms>() as u64,
+            size: size_of::<Uniforms>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
@@ -372,7 +372,7 @@ impl Renderer {
                 ty: wgpu::BindingType::Buffer {
                     ty: wgpu::BufferBindingType::Uniform,
                     has_dynamic_offset: false,
-                    min_binding_size: wgpu::BufferSize::new(std::mem::size_of::<Uniforms>() as u64),
+                    min_binding_size: wgpu::BufferSize::new(size_of::<Uniforms>() as u64),
                 },
                 count: None,
             }],
@@ -407,7 +407,7 @@ impl Renderer {
             attr(2, 28, wgpu::VertexFormat::Float32),
         ];
         let line_layout = wgpu::VertexBufferLayout {
-            array_stride: std::mem::size_of::<LineVertex>() as u64,
+            array_stride: size_of::<LineVertex>() as u64,
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &line_attrs,
         };

@@ -296,8 +296,7 @@ pub fn coriolis_force_peaks_at_twice_the_flap_frequency() {
     assert!((f[i] - 50.0).abs() < 2.6, "Coriolis peak at {} Hz", f[i]);
     assert!(p[0] > 0.1 * p[i], "DC part visible with detrend none");
     // γ0 = 0: no Coriolis force at all.
-    let mut c0 = cfg.clone();
-    c0 = wingbeat::analysis::sweep::apply(&c0, SweepParam::Gamma0, 0.0).unwrap();
+    let c0 = wingbeat::analysis::sweep::apply(&cfg, SweepParam::Gamma0, 0.0).unwrap();
     let js0 = wasm::spectra(to_js(&c0), to_js(&opts), Some(0)).unwrap();
     assert!(f64s(&js0, "0.coriolis.psd").iter().all(|v| *v == 0.0));
 }
