@@ -143,20 +143,30 @@ try {
   });
 
   if (process.argv.includes('--screenshot')) {
-    await page.click('wing-lab .wl-preset');
-    await page.waitForTimeout(300);
-    await page.mouse.move(1000, 200);
-    await page.waitForTimeout(100);
-    await page.screenshot({ path: path.join(ROOT, 'docs', 'lab.png') });
-    // The 3-D panel (it starts when scrolled into sight), FE wing mode set, mid-run.
-    await page.selectOption('wing-lab select[data-key="modes"]', 'fe');
-    await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
-    await page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready' && document.querySelector('wing-lab').fe, null, { timeout: 90000 });
-    await page.waitForTimeout(500);
-    await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.5125));
-    await page.waitForTimeout(300);
-    await page.locator('section.wl-wing3d').screenshot({ path: path.join(ROOT, 'docs', 'lab_wing3d.png') });
-    result.screenshot = ['docs/lab.png', 'docs/lab_wing3d.png'];
+    // docs/lab.png: the first screen at 1280×800 (wing, sliders, responses with the beat).
+    const shot = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+    await shot.page.goto(env.url);
+    await waitRenders(shot.page, 1);
+    await shot.page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready' && Number(document.querySelector('#wing3d').dataset.frames) > 0, null, { timeout: 90000 });
+    await shot.page.waitForTimeout(400);
+    await shot.page.mouse.move(1200, 780);
+    await shot.page.screenshot({ path: path.join(ROOT, 'docs', 'lab.png') });
+    // docs/lab_wing3d.png: the 3-D panel, FE wing mode set, mid-run.
+    await shot.page.selectOption('wing-lab select[data-key="modes"]', 'fe');
+    await shot.page.waitForFunction(() => document.querySelector('wing-lab').fe && /mm/.test(document.querySelector('.wl-w3-defl').textContent), null, { timeout: 90000 });
+    await shot.page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.5125));
+    await shot.page.waitForTimeout(300);
+    await shot.page.locator('section.wl-wing3d').screenshot({ path: path.join(ROOT, 'docs', 'lab_wing3d.png') });
+    // docs/lab_phone.png: the first screen of a phone.
+    const phone = await openPage(env.browser, env.url, { width: 390, height: 844 });
+    await phone.page.goto(env.url);
+    await waitRenders(phone.page, 1);
+    await phone.page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready' && Number(document.querySelector('#wing3d').dataset.frames) > 0, null, { timeout: 90000 });
+    await phone.page.waitForTimeout(400);
+    await phone.page.screenshot({ path: path.join(ROOT, 'docs', 'lab_phone.png') });
+    result.screenshot = ['docs/lab.png', 'docs/lab_wing3d.png', 'docs/lab_phone.png'];
+    await shot.context.close();
+    await phone.context.close();
   }
   result.console_problems = problems;
   await context.close();

@@ -42,6 +42,7 @@ pub mod fem;
 pub mod floquet;
 pub mod kinematics;
 pub mod model;
+pub mod params;
 pub mod presets;
 #[cfg(feature = "render")]
 pub mod render;

@@ -59,6 +59,14 @@ fn input_types_match_serde() {
     ts_common::check(&i, "SweepOptions", &keys(&sweep));
     ts_common::check(&i, "IcMapOptions", &keys(&IcMapOptions::default()));
     ts_common::check(&i, "FemInput", &keys(&FemInput::default()));
+    let res = wingbeat::analysis::resonance::ResonanceOptions {
+        from_hz: 10.0,
+        to_hz: 40.0,
+        points: 4,
+        alpha0_values: Some(vec![0.5, 0.8]),
+    };
+    ts_common::check(&i, "ResonanceOptions", &keys(&res));
+    ts_common::check(&i, "Param", &keys(&wingbeat::params::PARAMS[0]));
 }
 
 #[test]

@@ -1,6 +1,12 @@
-// Plot helpers around uPlot (vendor/uPlot.esm.js, copied from node_modules by the build):
-// line plots with units, frequency markers, CSV and PNG export, and a canvas heat map.
+// Live line plots around uPlot (vendor/uPlot.esm.js, copied from node_modules by the build):
+// rich axis titles in HTML (sub/superscripts, never clipped), a keyboard-reachable legend of
+// toggle buttons with live values, frequency/time markers whose labels never overlap, shaded
+// bands, an accessible name and a text alternative for the canvas, and `figure()` — the same
+// plot as an export figure (www/export.js) with title, legend and parameter line.
 import uPlot from './vendor/uPlot.esm.js';
+import { el, rich, srOnly } from './dom.js';
+import { fmt, fmtRich, plain } from './format.js';
+import { placeLabels, canvasPainter } from './export.js';
 
 export { uPlot };
 
@@ -15,29 +21,17 @@ const COLORS = {
   eps_x: '#1f77b4',
   eps_y: '#ff7f0e',
   gamma_xy: '#2ca02c',
+  cursor: '#7a3cc2',
 };
 export function color(name) {
   return COLORS[name] || '#555';
 }
 
-export function fmt(v, digits = 4) {
-  if (v == null || Number.isNaN(v)) return '—';
-  if (v === 0) return '0';
-  const a = Math.abs(v);
-  if (a >= 1e5 || a < 1e-3) return v.toExponential(digits - 1);
-  return Number(v.toPrecision(digits)).toString();
-}
-
-/**
- * Log axes are drawn as log10(value) on a linear scale with "1e k" tick labels: uPlot's own log
- * scales only cover about 1e-16…1e16 and loop for ever below that, while the paper preset's
- * response PSDs sit near 1e-26. Callers pass log10 data for such series (see `log10OrNull`).
- */
+/** Log axes are drawn as log10(value) on a linear scale (uPlot's log scales stop near 1e-16). */
 export function log10OrNull(v) {
   return v > 0 && Number.isFinite(v) ? Math.log10(v) : null;
 }
 
-/** Limits a log10 scale to at most 14 decades below its maximum, on whole decades. */
 function logRange(u, min, max) {
   if (min == null || max == null || !Number.isFinite(max)) return [-12, 0];
   const hi = Math.ceil(max + 1e-9);
@@ -46,178 +40,273 @@ function logRange(u, min, max) {
   return [lo, hi];
 }
 
+let plotIds = 0;
+
 /**
- * Creates a uPlot line chart in `el`.
- * spec: { xLabel, xUnit, series: [{ label, unit, color, scale, dash }], yScales: { y: {label, unit, log} }, markers: () => [{x, label, color, dash}] }
+ * A line plot in `parent`.
+ * spec: { name, xLabel, xUnit, yLabel, y2Label (rich markup), series: [{ label, unit, color,
+ *   scale: 'y'|'y2', dash, width, legend: false }], log: { y, y2 }, height, markers: () =>
+ *   [{ x, label, color, dash }], bands: () => [{ x0, x1, label, color, fill }], ariaLabel,
+ *   keys: true (focusable: ← → pan, + − zoom, 0 reset), onReset }
  */
-export function linePlot(el, spec) {
-  const width = Math.max(280, el.clientWidth || 600);
-  const axes = [
-    { label: `${spec.xLabel} (${spec.xUnit})`, stroke: '#333', grid: { stroke: '#e5e5e5' } },
-  ];
+export function linePlot(parent, spec) {
+  const id = `wl-plot-${++plotIds}`;
+  const box = el('div', { class: 'wl-plot', 'data-plot': spec.name });
+  const titles = el('div', { class: 'wl-axis-titles' },
+    el('span', { class: 'wl-ytitle', rich: spec.yLabel || '' }),
+    spec.y2Label ? el('span', { class: 'wl-y2title', rich: spec.y2Label }) : null);
+  const stage = el('div', { class: 'wl-uplot' });
+  const xtitle = el('div', { class: 'wl-xtitle', rich: `${spec.xLabel} (${spec.xUnit})` });
+  const summary = srOnly('p', { id: `${id}-sum` });
+  box.append(titles, stage, xtitle);
+  parent.append(box);
+  const width = Math.max(260, box.clientWidth || 600);
+  const dpr = () => (typeof devicePixelRatio === 'number' ? devicePixelRatio : 1);
+  const axes = [{ stroke: '#333', grid: { stroke: '#ececec' }, size: 34, values: (u, vals) => vals.map((v) => fmt(v, 4)) }];
   const scales = { x: { time: false } };
-  if (spec.xRange) scales.x.range = spec.xRange;
-  for (const [key, s] of Object.entries(spec.yScales)) {
-    scales[key] = s.log ? { range: logRange } : {};
-    if (s.range) scales[key].range = s.range;
+  const hasY2 = spec.series.some((s) => s.scale === 'y2');
+  for (const key of hasY2 ? ['y', 'y2'] : ['y']) {
+    const log = spec.log && spec.log[key];
+    scales[key] = log ? { range: logRange } : {};
     axes.push({
       scale: key,
-      label: `${s.label} (${s.unit})`,
-      side: s.side ?? 3,
+      side: key === 'y2' ? 1 : 3,
       stroke: '#333',
-      grid: { show: key === 'y', stroke: '#e5e5e5' },
-      size: 70,
-      values: s.log ? (u, vals) => vals.map((v) => (Number.isInteger(v) ? `1e${v}` : '')) : (u, vals) => vals.map((v) => fmt(v, 2)),
-      incrs: s.log ? [1, 2, 3, 5, 10] : undefined,
+      grid: { show: key === 'y', stroke: '#ececec' },
+      // wide enough for the longest tick label (e.g. "−2.5×10⁻⁶"), so nothing is clipped
+      size: (self, vals) => {
+        if (!vals || !vals.length) return 40;
+        const r = dpr();
+        self.ctx.font = `${Math.round(11 * r)}px system-ui, sans-serif`;
+        return Math.ceil(Math.max(...vals.map((v) => self.ctx.measureText(String(v)).width)) / r) + 16;
+      },
+      font: '11px system-ui, sans-serif',
+      values: log ? (u, vals) => vals.map((v) => (Number.isInteger(v) ? plain(`10^{${v}}`.replace('-', '−')) : '')) : (u, vals) => vals.map((v) => plain(fmtRich(v, 2))),
+      incrs: log ? [1, 2, 3, 5, 10] : undefined,
     });
   }
   const series = [
-    { label: `${spec.xLabel} (${spec.xUnit})`, value: (u, v) => (v == null ? '—' : `${fmt(v, 5)} ${spec.xUnit}`) },
+    {},
     ...spec.series.map((s) => ({
-      label: s.label,
+      label: plain(s.label),
       stroke: s.color,
       width: s.width ?? 1.25,
       dash: s.dash,
       scale: s.scale || 'y',
       points: { show: false },
-      value: (u, v) => (v == null ? '—' : `${fmt(spec.yScales[s.scale || 'y'].log ? 10 ** v : v, 4)} ${s.unit}`),
+      show: s.show !== false,
     })),
   ];
+  // Legend: toggle buttons with live values (keyboard-reachable; uPlot's own legend is off).
+  const legend = el('div', { class: 'wl-legend', role: 'group', 'aria-label': `${plain(spec.title || spec.name)}: series shown (press to hide or show)` });
+  const values = [];
+  const buttons = [];
+  spec.series.forEach((s, i) => {
+    if (s.legend === false) { values.push(null); buttons.push(null); return; }
+    const val = el('span', { class: 'wl-legend-val' });
+    const b = el('button', { type: 'button', class: 'wl-legend-item', 'aria-pressed': String(s.show !== false), 'data-series': String(i + 1) },
+      el('span', { class: 'wl-swatch', style: `background:${s.color}`, 'aria-hidden': 'true' }),
+      el('span', { class: 'wl-legend-label', rich: s.label }),
+      val);
+    b.addEventListener('click', () => {
+      const show = !u.series[i + 1].show;
+      u.setSeries(i + 1, { show });
+      b.setAttribute('aria-pressed', String(show));
+      for (const j of s.with || []) u.setSeries(j + 1, { show });
+      if (spec.onToggle) spec.onToggle(i, show);
+    });
+    values.push(val);
+    buttons.push(b);
+    legend.append(b);
+  });
+  const xval = el('span', { class: 'wl-legend-x', 'aria-hidden': 'true' });
+  legend.append(xval);
+  box.append(legend, summary);
+
   const opts = {
     width,
-    height: spec.height || 240,
+    height: spec.height || 220,
     scales,
     axes,
     series,
-    cursor: { drag: { x: true, y: false }, points: { show: false } },
-    legend: { live: true },
+    legend: { show: false },
+    cursor: { drag: { x: true, y: false, setScale: true }, points: { show: false } },
+    padding: [8, 6, 0, 0],
     hooks: {
+      drawClear: [
+        (u) => {
+          if (!spec.bands) return;
+          const ctx = u.ctx;
+          const { top, height: h, left, width: w } = u.bbox;
+          for (const b of spec.bands()) {
+            const x0 = Math.max(left, u.valToPos(b.x0, 'x', true)), x1 = Math.min(left + w, u.valToPos(b.x1, 'x', true));
+            if (!(x1 > x0)) continue;
+            ctx.fillStyle = b.fill || 'rgba(122,60,194,0.10)';
+            ctx.fillRect(x0, top, x1 - x0, h);
+          }
+        },
+      ],
       draw: [
         (u) => {
-          if (!spec.markers) return;
           const ctx = u.ctx;
+          const r = dpr();
           const { left, top, width: w, height: h } = u.bbox;
           ctx.save();
-          ctx.font = `${Math.round(10 * devicePixelRatio)}px sans-serif`;
+          ctx.font = `${Math.round(11 * r)}px system-ui, sans-serif`;
           ctx.textBaseline = 'top';
-          for (const m of spec.markers()) {
-            const x = u.valToPos(m.x, 'x', true);
-            if (!(x >= left && x <= left + w)) continue;
+          ctx.textAlign = 'left';
+          const marks = (spec.markers ? spec.markers() : []).map((m) => ({ ...m, px: u.valToPos(m.x, 'x', true) })).filter((m) => m.px >= left && m.px <= left + w);
+          const pt = canvasPainter(ctx);
+          const rows = placeLabels(marks.map((m) => ({ x: m.px + 3 * r, width: m.label ? pt.measure(m.label, 11 * r) : 0 })), { gap: 4 * r, maxRows: 3 });
+          marks.forEach((m, i) => {
             ctx.strokeStyle = m.color || '#999';
-            ctx.lineWidth = devicePixelRatio;
-            ctx.setLineDash(m.dash ? m.dash.map((d) => d * devicePixelRatio) : []);
+            ctx.lineWidth = (m.width || 1) * r;
+            ctx.setLineDash(m.dash ? m.dash.map((d) => d * r) : []);
             ctx.beginPath();
-            ctx.moveTo(x, top);
-            ctx.lineTo(x, top + h);
+            ctx.moveTo(m.px, top);
+            ctx.lineTo(m.px, top + h);
             ctx.stroke();
-            if (m.label) {
-              ctx.fillStyle = m.color || '#666';
-              ctx.fillText(m.label, x + 2 * devicePixelRatio, top + (m.row || 0) * 12 * devicePixelRatio + 2);
+            if (m.label && rows[i] >= 0) {
+              const tw = pt.measure(m.label, 11 * r);
+              const y = top + rows[i] * 13 * r + 2 * r;
+              ctx.fillStyle = 'rgba(255,255,255,0.8)';
+              ctx.fillRect(m.px + 2 * r, y - r, tw + 2 * r, 13 * r);
+              pt.text(m.px + 3 * r, y, m.label, { size: 11 * r, color: m.color || '#666', baseline: 'top' });
+            }
+          });
+          ctx.setLineDash([]);
+          if (spec.bands) {
+            for (const b of spec.bands()) {
+              if (!b.label) continue;
+              const x0 = u.valToPos(b.x0, 'x', true), x1 = u.valToPos(b.x1, 'x', true);
+              if (x1 < left || x0 > left + w) continue;
+              const y = top + h - 10 * r;
+              ctx.strokeStyle = b.color || '#7a3cc2';
+              ctx.lineWidth = 2 * r;
+              ctx.beginPath();
+              ctx.moveTo(x0, y - 6 * r); ctx.lineTo(x0, y); ctx.lineTo(x1, y); ctx.lineTo(x1, y - 6 * r);
+              ctx.stroke();
+              const tw = pt.measure(b.label, 12 * r, 'bold');
+              const cx = Math.min(left + w - tw / 2 - 2, Math.max(left + tw / 2 + 2, (x0 + x1) / 2));
+              ctx.fillStyle = 'rgba(255,255,255,0.85)';
+              ctx.fillRect(cx - tw / 2 - 3 * r, y - 24 * r, tw + 6 * r, 17 * r);
+              pt.text(cx - tw / 2, y - 10 * r, b.label, { size: 12 * r, weight: 'bold', color: b.color || '#7a3cc2' });
             }
           }
           ctx.restore();
         },
       ],
+      setCursor: [
+        (u) => {
+          const i = u.cursor.idx;
+          xval.textContent = i == null ? '' : `${spec.xLabel.replace(/_/g, '')} = ${fmt(u.data[0][i], 5)} ${spec.xUnit}`;
+          spec.series.forEach((s, k) => {
+            const v = values[k];
+            if (!v) return;
+            const y = i == null ? null : u.data[k + 1][i];
+            v.textContent = y == null || !Number.isFinite(y) ? '' : ` ${fmt(spec.log && spec.log[s.scale || 'y'] ? 10 ** y : y, 3)}`;
+          });
+        },
+      ],
     },
   };
-  const u = new uPlot(opts, [[0], ...spec.series.map(() => [null])], el);
-  return u;
-}
-
-/** Keeps a plot at its container's width. */
-export function autoWidth(u, el) {
-  const ro = new ResizeObserver(() => {
-    const w = Math.max(280, el.clientWidth);
-    if (Math.abs(w - u.width) > 2) u.setSize({ width: w, height: u.height });
-  });
-  ro.observe(el);
-  return ro;
-}
-
-/**
- * Min/max decimation onto a shared x grid: each bucket contributes two x positions (its start
- * and middle) and, for every series, its min and max there. Keeps peaks; series stay aligned.
- */
-export function decimate(x, ys, buckets) {
-  const n = x.length;
-  if (n <= 2 * buckets) return [Array.from(x), ...ys.map((y) => Array.from(y))];
-  const xo = new Float64Array(2 * buckets);
-  const yo = ys.map(() => new Float64Array(2 * buckets));
-  for (let b = 0; b < buckets; b++) {
-    const lo = Math.floor((b * n) / buckets);
-    const hi = Math.max(lo + 1, Math.floor(((b + 1) * n) / buckets));
-    xo[2 * b] = x[lo];
-    xo[2 * b + 1] = x[Math.min(n - 1, (lo + hi) >> 1)];
-    ys.forEach((y, k) => {
-      let mn = y[lo];
-      let mx = y[lo];
-      let imn = lo;
-      let imx = lo;
-      for (let i = lo + 1; i < hi; i++) {
-        const v = y[i];
-        if (v < mn) { mn = v; imn = i; }
-        if (v > mx) { mx = v; imx = i; }
-      }
-      yo[k][2 * b] = imn <= imx ? mn : mx;
-      yo[k][2 * b + 1] = imn <= imx ? mx : mn;
+  if (spec.cursor) opts.cursor = { ...opts.cursor, ...spec.cursor };
+  for (const [name, fns] of Object.entries(spec.hooks || {})) opts.hooks[name] = [...(opts.hooks[name] || []), ...fns];
+  if (spec.series.every((s) => s.legend === false)) legend.hidden = true;
+  const u = new uPlot(opts, [[0], ...spec.series.map(() => [null])], stage);
+  // Accessible name and text alternative of the canvas.
+  u.ctx.canvas.setAttribute('role', 'img');
+  u.ctx.canvas.setAttribute('aria-label', plain(spec.ariaLabel || spec.title || spec.name));
+  u.ctx.canvas.setAttribute('aria-describedby', summary.id);
+  if (spec.keys !== false) {
+    u.over.tabIndex = 0;
+    u.over.setAttribute('role', 'group');
+    u.over.setAttribute('aria-label', `${plain(spec.ariaLabel || spec.name)}. Keys: left and right arrows pan, plus and minus zoom, 0 resets.`);
+    u.over.setAttribute('aria-describedby', summary.id);
+    u.over.addEventListener('keydown', (e) => {
+      const x = u.scales.x;
+      if (x.min == null) return;
+      const span = x.max - x.min;
+      const data = u.data[0];
+      const lo = data[0], hi = data[data.length - 1];
+      let a = null;
+      if (e.key === 'ArrowLeft') a = [x.min - 0.25 * span, x.max - 0.25 * span];
+      else if (e.key === 'ArrowRight') a = [x.min + 0.25 * span, x.max + 0.25 * span];
+      else if (e.key === '+' || e.key === '=') a = [x.min + 0.25 * span, x.max - 0.25 * span];
+      else if (e.key === '-' || e.key === '_') a = [x.min - 0.5 * span, x.max + 0.5 * span];
+      else if (e.key === '0' || e.key === 'Home') {
+        e.preventDefault();
+        if (spec.onUser) spec.onUser('reset');
+        if (spec.onReset) spec.onReset();
+        else u.setScale('x', { min: lo, max: hi });
+        return;
+      } else return;
+      e.preventDefault();
+      if (spec.onUser) spec.onUser('key');
+      let [m0, m1] = a;
+      const w = Math.min(m1 - m0, hi - lo);
+      if (m0 < lo) { m0 = lo; m1 = lo + w; }
+      if (m1 > hi) { m1 = hi; m0 = hi - w; }
+      u.setScale('x', { min: m0, max: m1 });
     });
   }
-  return [xo, ...yo];
-}
-
-/** CSV text from named columns (header "name (unit)"), with `#` comment lines first. */
-export function toCSV(columns, comments = []) {
-  const lines = comments.map((c) => `# ${c}`);
-  lines.push(columns.map((c) => (c.unit ? `${c.name} (${c.unit})` : c.name)).map(csvCell).join(','));
-  const n = Math.max(...columns.map((c) => c.values.length));
-  for (let i = 0; i < n; i++) {
-    lines.push(columns.map((c) => { const v = c.values[i]; return v == null || Number.isNaN(v) ? '' : String(v); }).join(','));
+  if (spec.onUser) {
+    u.over.addEventListener('dblclick', () => spec.onUser('dblclick'));
+    opts.hooks.setSelect = [...(opts.hooks.setSelect || [])];
   }
-  return lines.join('\n') + '\n';
-}
-
-function csvCell(s) {
-  return /[",\n]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
-}
-
-export function download(name, blob) {
-  const a = document.createElement('a');
-  a.href = URL.createObjectURL(blob);
-  a.download = name;
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 10000);
-}
-
-/** A PNG of a panel: its title, then its canvases stacked (plot canvases are the real pixels). */
-export async function panelPNG(title, canvases, textLines = []) {
-  const dpr = 1;
-  const w = Math.max(400, ...canvases.map((c) => c.width));
-  const h = 30 + canvases.reduce((s, c) => s + c.height + 8, 0) + textLines.length * 18 + 10;
-  const out = document.createElement('canvas');
-  out.width = w * dpr;
-  out.height = h * dpr;
-  const ctx = out.getContext('2d');
-  ctx.fillStyle = '#fff';
-  ctx.fillRect(0, 0, w, h);
-  ctx.fillStyle = '#111';
-  ctx.font = 'bold 15px sans-serif';
-  ctx.fillText(title, 10, 20);
-  let y = 30;
-  for (const c of canvases) {
-    ctx.drawImage(c, 0, y);
-    y += c.height + 8;
+  let ro = null;
+  if (typeof ResizeObserver === 'function') {
+    ro = new ResizeObserver(() => {
+      const w = Math.max(260, Math.floor(stage.clientWidth));
+      if (Math.abs(w - u.width) > 2) u.setSize({ width: w, height: u.height });
+    });
+    ro.observe(stage);
   }
-  ctx.font = '13px sans-serif';
-  for (const line of textLines) {
-    y += 18;
-    ctx.fillText(line, 10, y);
-  }
-  return new Promise((resolve) => out.toBlob(resolve, 'image/png'));
+  return {
+    u,
+    box,
+    legend,
+    buttons,
+    /** New data; keeps `keepX` ([min, max]) as the x window when given. */
+    setData(data, keepX = null) {
+      if (keepX && u.data[0].length > 1) {
+        // One commit: new data in the given window (y re-ranges over it), no detour through
+        // the whole run (which would build every path at full resolution first).
+        u.setData(data, false);
+        u.setScale('x', { min: keepX[0], max: keepX[1] });
+      } else {
+        u.setData(data);
+        // uPlot commits setData in a microtask (auto-ranging x to the data); the window goes after it.
+        if (keepX) queueMicrotask(() => u.setScale('x', { min: keepX[0], max: keepX[1] }));
+      }
+    },
+    setHeight(h) {
+      if (Math.abs(h - u.height) > 2) u.setSize({ width: u.width, height: h });
+    },
+    setYLabel(markup) {
+      titles.querySelector('.wl-ytitle').replaceChildren(rich(markup));
+    },
+    setSummary(text) {
+      summary.textContent = text;
+    },
+    redraw() {
+      u.redraw(false, false);
+    },
+    /** The visible series for an export figure (full data of the current x window). */
+    exportSeries(data = u.data) {
+      return spec.series.map((s, i) => ({ label: s.label, color: s.color, dash: s.dash, width: (s.width ?? 1.25) + 0.2, scale: s.scale || 'y', y: data[i + 1], show: u.series[i + 1].show, legend: s.legend !== false }));
+    },
+    xWindow() {
+      return [u.scales.x.min, u.scales.x.max];
+    },
+    destroy() {
+      if (ro) ro.disconnect();
+      u.destroy();
+    },
+  };
 }
 
-// A perceptually ordered colour map (viridis, 9 stops, linear in between).
+/** A canvas heat map with axes and a colour bar (the initial-condition map). */
 const VIRIDIS = [
   [68, 1, 84], [71, 44, 122], [59, 81, 139], [44, 113, 142], [33, 144, 141],
   [39, 173, 129], [92, 200, 99], [170, 220, 50], [253, 231, 37],
@@ -229,11 +318,6 @@ export function viridis(t) {
   return VIRIDIS[i].map((c, k) => Math.round(c + f * (VIRIDIS[i + 1][k] - c)));
 }
 
-/**
- * Draws a heat map with axes and a colour bar onto `canvas`.
- * m: { nx, ny, x: Float64Array, y: Float64Array, z: Float64Array (row-major, y outer), zmin, zmax,
- *      xLabel, yLabel, zLabel }
- */
 export function drawHeatmap(canvas, m) {
   const W = canvas.width;
   const H = canvas.height;
@@ -249,7 +333,7 @@ export function drawHeatmap(canvas, m) {
     for (let i = 0; i < m.nx; i++) {
       const v = m.z[j * m.nx + i];
       const [r, g, b] = viridis((v - m.zmin) / span);
-      const o = ((m.ny - 1 - j) * m.nx + i) * 4; // q̇0 grows upward
+      const o = ((m.ny - 1 - j) * m.nx + i) * 4;
       img.data[o] = r; img.data[o + 1] = g; img.data[o + 2] = b; img.data[o + 3] = 255;
     }
   }
@@ -272,13 +356,12 @@ export function drawHeatmap(canvas, m) {
     ctx.fillText(fmt(yv, 3), L - 4, T + ph - (ph * k) / 4 + 4);
     ctx.textAlign = 'center';
   }
-  ctx.fillText(m.xLabel, L + pw / 2, H - 12);
+  ctx.fillText(plain(m.xLabel), L + pw / 2, H - 12);
   ctx.save();
   ctx.translate(14, T + ph / 2);
   ctx.rotate(-Math.PI / 2);
-  ctx.fillText(m.yLabel, 0, 0);
+  ctx.fillText(plain(m.yLabel), 0, 0);
   ctx.restore();
-  // colour bar
   const cx = W - R + 16;
   for (let y = 0; y < ph; y++) {
     const [r, g, b] = viridis(1 - y / ph);
@@ -294,6 +377,8 @@ export function drawHeatmap(canvas, m) {
   ctx.translate(W - 8, T + ph / 2);
   ctx.rotate(-Math.PI / 2);
   ctx.textAlign = 'center';
-  ctx.fillText(m.zLabel, 0, 0);
+  ctx.fillText(plain(m.zLabel), 0, 0);
   ctx.restore();
 }
+
+export { rich };

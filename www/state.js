@@ -5,15 +5,15 @@
 
 /** Numeric parameters: URL/attribute name, label, unit, slider range and default (the paper case). */
 export const NUMERIC = [
-  { key: 'alpha0', label: 'α0, roll amplitude', sym: 'α0', unit: 'rad', min: 0, max: 1.5, step: 0.01, def: 0.8 },
-  { key: 'beta0', label: 'β0, pitch amplitude', sym: 'β0', unit: 'rad', min: 0, max: 1.0, step: 0.01, def: 0.5 },
-  { key: 'gamma0', label: 'γ0, yaw amplitude', sym: 'γ0', unit: 'rad', min: 0, max: 0.5, step: 0.005, def: 0.2 },
+  { key: 'alpha0', label: 'α_0, roll amplitude', sym: 'α_0', unit: 'rad', min: 0, max: 1.5, step: 0.01, def: 0.8 },
+  { key: 'beta0', label: 'β_0, pitch amplitude', sym: 'β_0', unit: 'rad', min: 0, max: 1.0, step: 0.01, def: 0.5 },
+  { key: 'gamma0', label: 'γ_0, yaw amplitude', sym: 'γ_0', unit: 'rad', min: 0, max: 0.5, step: 0.005, def: 0.2 },
   { key: 'flap_hz', label: 'Flap frequency f_d', sym: 'f_d', unit: 'Hz', min: 5, max: 60, step: 0.5, def: 25 },
   { key: 'zeta', label: 'ζ, modal damping ratio', sym: 'ζ', unit: '', min: 0, max: 0.1, step: 0.001, def: 0 },
-  { key: 'alpha_phase', label: 'Phase of α', sym: 'φα', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
-  { key: 'beta_phase', label: 'Phase of β', sym: 'φβ', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
-  { key: 'gamma_phase', label: 'Phase of γ', sym: 'φγ', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
-  { key: 'duration', label: 'Duration', sym: 'T_sim', unit: 's', min: 0.2, max: 4, step: 0.1, def: 2 },
+  { key: 'alpha_phase', label: 'Phase of α', sym: 'φ_α', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
+  { key: 'beta_phase', label: 'Phase of β', sym: 'φ_β', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
+  { key: 'gamma_phase', label: 'Phase of γ', sym: 'φ_γ', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
+  { key: 'duration', label: 'Duration', sym: 'T_{sim}', unit: 's', min: 0.2, max: 10, step: 0.1, def: 2 },
 ];
 
 /** Enumerated parameters. `disabled` choices are shown but not selectable (and rejected from URLs). */
@@ -24,7 +24,10 @@ export const ENUMS = [
 ];
 
 /** Panels that can be shown; `panels=` picks a subset (comma-separated). */
-export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report'];
+export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance'];
+
+/** Guided experiments (www/experiments.js); `exp=<id>` opens one. */
+export const EXPERIMENT_IDS = ['beat', 'no-yaw', 'damping', 'yaw', 'ic', 'resonance', 'instability'];
 
 /**
  * The lab's FE wing (wasm `feModes` input): the default synthetic outline, camber, clamp,
@@ -44,6 +47,7 @@ export function defaults() {
   for (const p of NUMERIC) s[p.key] = p.def;
   for (const e of ENUMS) s[e.key] = e.def;
   s.panels = PANELS.slice();
+  s.exp = '';
   return s;
 }
 
@@ -77,6 +81,7 @@ export function expectation(key) {
   if (e) return `one of ${e.choices.filter((c) => !(e.disabled || []).includes(c)).join(', ')}`;
   if (key === 'panels') return `a comma-separated list of ${PANELS.join(', ')}`;
   if (key === 'embed') return '0 or 1';
+  if (key === 'exp') return `one of ${EXPERIMENT_IDS.join(', ')}`;
   return 'a known parameter';
 }
 
@@ -105,6 +110,7 @@ export function parsePairs(pairs, ignore = []) {
     else if (e) v = parseEnum(e, raw);
     else if (key === 'panels') v = parsePanels(raw);
     else if (key === 'embed') v = raw === '0' || raw === '1' ? raw === '1' : null;
+    else if (key === 'exp') v = EXPERIMENT_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
     else {
       rejected.push({ key: short, why: 'unknown parameter' });
       continue;
@@ -132,6 +138,7 @@ export function toQuery(state, extra = {}) {
   for (const p of NUMERIC) q.set(p.key, String(state[p.key]));
   for (const e of ENUMS) q.set(e.key, state[e.key]);
   if (state.panels && state.panels.length !== PANELS.length) q.set('panels', state.panels.join(','));
+  if (state.exp) q.set('exp', state.exp);
   for (const [k, v] of Object.entries(extra)) q.set(k, v);
   return q.toString();
 }
@@ -159,4 +166,25 @@ export function toConfig(state, base) {
     sample_rate_hz: SAMPLE_RATE_HZ,
     initial_conditions: [],
   };
+}
+
+/** The five parameters the lab shows first (the rest follow under "More parameters"). */
+export const MAIN_KEYS = ['alpha0', 'beta0', 'gamma0', 'flap_hz', 'zeta'];
+
+/** Just the URL parameters of a store state (drops derived keys such as `result`). */
+export function paramsOf(s) {
+  const out = {};
+  for (const p of NUMERIC) out[p.key] = s[p.key];
+  for (const e of ENUMS) out[e.key] = s[e.key];
+  out.panels = s.panels;
+  out.exp = s.exp || '';
+  return out;
+}
+
+/** A one-line, human-readable parameter set for figures and exports (rich markup). */
+export function describe(s) {
+  const modes = s.modes === 'fe' ? 'FE wing modes (SI)' : 'paper table modes (paper units)';
+  return `α_0 = ${s.alpha0} rad, β_0 = ${s.beta0} rad, γ_0 = ${s.gamma0} rad, f_d = ${s.flap_hz} Hz, ζ = ${s.zeta}, ` +
+    `phases φ_α = ${s.alpha_phase}, φ_β = ${s.beta_phase}, φ_γ = ${s.gamma_phase} rad, ${s.duration} s at ${SAMPLE_RATE_HZ / 1000} kHz; ` +
+    `mode ${s.mode}, ${modes} — wingbeat lab`;
 }

@@ -1,34 +1,12 @@
 // Web Worker for the lab's expensive studies, so sliders never freeze: parameter sweeps
-// (Fig. 6), the initial-condition map (Fig. 7), long damped runs (Fig. 8) and the paper report.
+// (Fig. 6), the initial-condition map (Fig. 7), long damped runs (Fig. 8), the resonance map
+// (Floquet numbers over flap frequency and α0) and the paper report.
 // Protocol: in { id, kind, cfg, opts }; out { id, progress: [done, total] } | { id, result, ms }
 // | { id, error }. Typed arrays are transferred, not copied.
 import init, * as wb from './pkg/wingbeat.js';
+import { decimate } from './decimate.js';
 
 const ready = init({ module_or_path: new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
-
-// Min/max decimation of several series onto a shared x grid (see plot.js#decimate).
-function decimate(x, ys, buckets) {
-  const n = x.length;
-  if (n <= 2 * buckets) return [Float64Array.from(x), ...ys.map((y) => Float64Array.from(y))];
-  const xo = new Float64Array(2 * buckets);
-  const yo = ys.map(() => new Float64Array(2 * buckets));
-  for (let b = 0; b < buckets; b++) {
-    const lo = Math.floor((b * n) / buckets);
-    const hi = Math.max(lo + 1, Math.floor(((b + 1) * n) / buckets));
-    xo[2 * b] = x[lo];
-    xo[2 * b + 1] = x[Math.min(n - 1, (lo + hi) >> 1)];
-    ys.forEach((y, k) => {
-      let mn = y[lo], mx = y[lo], imn = lo, imx = lo;
-      for (let i = lo + 1; i < hi; i++) {
-        if (y[i] < mn) { mn = y[i]; imn = i; }
-        if (y[i] > mx) { mx = y[i]; imx = i; }
-      }
-      yo[k][2 * b] = imn <= imx ? mn : mx;
-      yo[k][2 * b + 1] = imn <= imx ? mx : mn;
-    });
-  }
-  return [xo, ...yo];
-}
 
 const jobs = {
   sweep({ cfg, opts }, progress) {
@@ -58,6 +36,10 @@ const jobs = {
       n: t.length,
     });
     return out;
+  },
+  resonance({ cfg, opts }, progress) {
+    // Floquet effective frequency and largest |multiplier| per flap frequency (and α0).
+    return wb.resonanceMap(cfg, opts, progress);
   },
   reproduce() {
     return wb.reproduce();

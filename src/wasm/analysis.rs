@@ -1,14 +1,16 @@
 //! The analyses of the wasm API: spectra (per series, per mode, and everything the live
-//! panels need in one `analyze` call), envelopes, plot decimation, sweeps and the
-//! initial-condition map.
+//! panels need in one `analyze` call), envelopes, plot decimation, sweeps, the
+//! initial-condition map and the resonance map.
 
 use super::helpers::{self, check_series, opt_or_nan};
 use super::marshal::{
     config_from, err, f64a, from_js, obj_with, parse_js, set, sim_js, spectrum_js, to_js,
 };
+use crate::analysis::angles::angles_on;
 use crate::analysis::beat;
 use crate::analysis::ic_map::{ic_map as core_ic_map, IcMapOptions};
 use crate::analysis::psd::{welch, WelchOptions};
+use crate::analysis::resonance::{resonance_map as core_resonance_map, ResonanceOptions};
 use crate::analysis::spectra::mode_spectra;
 use crate::analysis::sweep::{sweep as core_sweep, SweepOptions};
 use crate::config::SimConfig;
@@ -16,7 +18,7 @@ use crate::error::WingbeatError;
 use crate::model::stiffness_force;
 use crate::simulate::SimResult;
 use crate::simulate::{sample_forces, simulate as core_simulate, ForceSeries, ModeSelection};
-use js_sys::{Array, Float64Array, Function, Object};
+use js_sys::{Array, Float64Array, Function, Object, Uint32Array, Uint8Array};
 use wasm_bindgen::prelude::*;
 
 /// Welch PSD of any series (one-sided, Hann window), with peaks labelled in multiples of
@@ -120,7 +122,8 @@ pub fn spectra(
 /// Everything the lab's live panels need from one config, in one call: the simulation (all
 /// modes), and for the modes asked for (`mode`, or all when omitted) the force terms and the
 /// stiffness force S(t)·q_k (`forces`), their spectra and the envelope of the Coriolis
-/// response (`null` entries for the other modes).
+/// response (`null` entries for the other modes), and the angles α, β, γ (rad) at `sim.t`
+/// (`angles`), so a view can pose the wing at every sample without calling `anglesAt`.
 ///
 /// The envelope is taken over the first `helpers::smooth_len(n)` samples (the largest
 /// 2^a·3^b·5^c ≤ n: FFT lengths with large prime factors are several times slower) and the
@@ -172,6 +175,9 @@ pub fn analyze(
         }
     }
     set(&o, "envelope", &env)?;
+    let a = angles_on(&cfg.kinematics.compile(), &c.sim.t);
+    let angles = obj_with(&[("alpha", &a.alpha), ("beta", &a.beta), ("gamma", &a.gamma)])?;
+    set(&o, "angles", &angles)?;
     Ok(o.into())
 }
 
@@ -251,5 +257,63 @@ pub fn ic_map(
         set(&o, k, &JsValue::from_f64(v))?;
     }
     set(&o, "attribution", &to_js(&m.attribution)?)?;
+    Ok(o.into())
+}
+
+/// The resonance map: Floquet analysis of every mode over `opts.points` flap frequencies from
+/// `from_hz` to `to_hz` (and, with `alpha0_values`, each roll amplitude; arrays are then
+/// row-major `[alpha0][flap_hz]`). Per mode: effective frequency, largest |multiplier|, beat
+/// period against the nearest n·f_d (NaN where none) and that n, stability (1/0) — the numbers
+/// `simulate` reports in `floquet`, without any time series. `progress(done, total)` is called
+/// after each point when given (an exception it throws is ignored). The caps (points, α0 values,
+/// total work) are checked before any work.
+#[wasm_bindgen(js_name = resonanceMap, unchecked_return_type = "ResonanceMapResult")]
+pub fn resonance_map(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "ResonanceOptions")] opts: JsValue,
+    progress: Option<Function>,
+) -> Result<JsValue, JsError> {
+    let cfg = config_from(cfg)?;
+    if opts.is_undefined() || opts.is_null() {
+        return Err(JsError::new(
+            "invalid value for `resonance`: missing (allowed: { from_hz, to_hz, points, alpha0_values? })",
+        ));
+    }
+    let opts: ResonanceOptions = parse_js(opts, "resonance")?;
+    let m = core_resonance_map(&cfg, &opts, |i, n| {
+        if let Some(f) = &progress {
+            let _ = f.call2(
+                &JsValue::NULL,
+                &JsValue::from_f64(i as f64),
+                &JsValue::from_f64(n as f64),
+            );
+        }
+    })
+    .map_err(err)?;
+    let o = Object::new();
+    set(&o, "flap_hz", &f64a(&m.flap_hz))?;
+    if let Some(a) = &m.alpha0 {
+        set(&o, "alpha0", &f64a(a))?;
+    }
+    let modes = Array::new();
+    for r in &m.modes {
+        let beat: Vec<f64> = r.beat_period_s.iter().map(|&b| opt_or_nan(b)).collect();
+        let mo = obj_with(&[
+            ("effective_freq_hz", &r.effective_freq_hz),
+            ("max_modulus", &r.max_modulus),
+            ("beat_period_s", &beat),
+        ])?;
+        set(&mo, "name", &JsValue::from_str(&r.name))?;
+        set(&mo, "freq_hz", &JsValue::from_f64(r.freq_hz))?;
+        set(
+            &mo,
+            "beat_harmonic",
+            &Uint32Array::from(&r.beat_harmonic[..]).into(),
+        )?;
+        let stable: Vec<u8> = r.stable.iter().map(|&s| u8::from(s)).collect();
+        set(&mo, "stable", &Uint8Array::from(&stable[..]).into())?;
+        modes.push(&mo);
+    }
+    set(&o, "modes", &modes)?;
     Ok(o.into())
 }

@@ -8,8 +8,10 @@
 //! `Float64Array`s (copied once out of wasm memory, never JSON). One file per topic:
 //!
 //! * [`marshal`]: JS values in and out (the seam itself);
-//! * [`sim`]: configs, limits, `simulate`, `forceSeries`, `anglesAt`, `reproduce`;
-//! * [`analysis`]: `psd`, `spectra`, `analyze`, `envelope`, `decimateMinMax`, `sweep`, `icMap`;
+//! * [`sim`]: configs, limits, the lab's `parameters` and `applyOverrides`, `simulate`,
+//!   `forceSeries`, `anglesAt`, `reproduce`;
+//! * [`analysis`]: `psd`, `spectra`, `analyze`, `envelope`, `decimateMinMax`, `sweep`, `icMap`,
+//!   `resonanceMap`;
 //! * [`fe`]: `feModes`, the shell finite elements;
 //! * `view` (wasm32 with feature `render`): `WingView`, the 3-D view of the flexing wing;
 //! * [`types`]: the TypeScript declarations of all of the above;
@@ -31,11 +33,13 @@ pub mod types;
 #[cfg(all(feature = "render", target_arch = "wasm32"))]
 pub mod view;
 
-pub use analysis::{analyze, decimate_min_max, envelope, ic_map, psd, spectra, sweep};
+pub use analysis::{
+    analyze, decimate_min_max, envelope, ic_map, psd, resonance_map, spectra, sweep,
+};
 pub use fe::fe_modes;
 pub use sim::{
-    angles_at, default_config, force_series, limits, reproduce, reproduce_text, simulate,
-    validate_config,
+    angles_at, apply_overrides, default_config, force_series, limits, parameters, reproduce,
+    reproduce_text, simulate, validate_config,
 };
 
 use wasm_bindgen::prelude::*;

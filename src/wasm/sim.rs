@@ -1,13 +1,15 @@
-//! The simulation side of the wasm API: configs (defaults, validation, limits), the
-//! simulation itself, the force terms, the kinematic angles and the paper-claims report.
+//! The simulation side of the wasm API: configs (defaults, validation, limits, the lab's
+//! parameter table and named overrides), the simulation itself, the force terms, the kinematic angles and the paper-claims report.
 
 use super::helpers;
 use super::helpers::check_series;
-use super::marshal::{config_from, err, obj_with, sim_js, to_js};
+use super::marshal::{config_from, err, from_js, obj_with, sim_js, to_js};
 use crate::config::SimConfig;
+use crate::params::apply_overrides as core_apply_overrides;
 use crate::simulate::{force_series as core_force_series, simulate as core_simulate, ForceSeries};
 use js_sys::{Array, Float64Array};
 use serde::Serialize;
+use std::collections::BTreeMap;
 use wasm_bindgen::prelude::*;
 
 /// The paper's forward-flight case (Tables 3–6), the default of every field.
@@ -36,6 +38,9 @@ pub fn limits() -> Result<JsValue, JsError> {
         max_sweep_points: usize,
         max_ic_cells: usize,
         max_modes: usize,
+        max_resonance_points: usize,
+        max_resonance_alpha0_values: usize,
+        max_resonance_work: f64,
     }
     to_js(&Limits {
         max_duration_s: crate::config::MAX_DURATION_S,
@@ -45,6 +50,9 @@ pub fn limits() -> Result<JsValue, JsError> {
         max_sweep_points: crate::analysis::sweep::MAX_POINTS,
         max_ic_cells: crate::analysis::ic_map::MAX_CELLS,
         max_modes: crate::model::MAX_MODES,
+        max_resonance_points: crate::analysis::resonance::MAX_POINTS,
+        max_resonance_alpha0_values: crate::analysis::resonance::MAX_ALPHA0_VALUES,
+        max_resonance_work: crate::analysis::resonance::MAX_WORK,
     })
 }
 
@@ -113,4 +121,30 @@ pub fn reproduce() -> Result<JsValue, JsError> {
 #[wasm_bindgen(js_name = reproduceText)]
 pub fn reproduce_text() -> Result<String, JsError> {
     Ok(crate::reproduce::reproduce().map_err(err)?.to_text())
+}
+
+/// The lab's numeric parameters, in slider order, from the core's table (`params::PARAMS`):
+/// `{ key, symbol, label, unit, min, max, step, default }` each, defaults = the paper case.
+/// The lab builds its sliders and URL checks from this, so the ranges have one owner.
+#[wasm_bindgen(unchecked_return_type = "Param[]")]
+pub fn parameters() -> Result<JsValue, JsError> {
+    to_js(crate::params::parameters())
+}
+
+/// `base` (a `SimConfig`; `undefined` = the paper case) with named parameters set by the core
+/// (`params::apply_overrides`): `alpha0`, `beta0`, `gamma0` (first-harmonic amplitudes, rad),
+/// `flap_hz` (Hz), `zeta` (every mode), `alpha_phase`, `beta_phase`, `gamma_phase` (first-harmonic
+/// phases, rad), `duration` (s) — the same meaning as `sweep`'s parameters. Throws, naming the
+/// key, for an unknown key, a value that is not a number or lies outside its slider range, and
+/// whatever `validateConfig` would reject in the result.
+#[wasm_bindgen(js_name = applyOverrides, unchecked_return_type = "SimConfig")]
+pub fn apply_overrides(
+    #[wasm_bindgen(unchecked_param_type = "SimConfig | undefined")] base: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Overrides")] overrides: JsValue,
+) -> Result<JsValue, JsError> {
+    let base = config_from(base)?;
+    let o: BTreeMap<String, f64> = from_js(overrides, "overrides")?;
+    let c = core_apply_overrides(&base, o.iter().map(|(k, v)| (k.as_str(), *v))).map_err(err)?;
+    helpers::check_web_caps(&c).map_err(err)?;
+    to_js(&c)
 }

@@ -71,6 +71,8 @@ export interface Analysis {
   spectra: (ModeSpectra | null)[];
   /** Envelope |analytic signal| of each asked-for mode's Coriolis response (see analyze()). */
   envelope: (Float64Array | null)[];
+  /** α, β, γ (rad) at `sim.t`, for posing the 3-D wing without calling anglesAt per frame. */
+  angles: AngleSeries;
 }
 export interface SweepModeColumns {
   euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array;
@@ -105,5 +107,30 @@ export interface FeModesResult {
 export interface Limits {
   max_duration_s: number; max_sample_rate_hz: number; max_samples: number;
   web_max_sample_values: number; max_sweep_points: number; max_ic_cells: number; max_modes: number;
+  /** Resonance map caps: flap frequencies, α0 rows, and total work in integration steps. */
+  max_resonance_points: number; max_resonance_alpha0_values: number; max_resonance_work: number;
 }
+/** Key of one of the lab's numeric parameters (core `params`). */
+export type ParamKey =
+  | "alpha0" | "beta0" | "gamma0" | "flap_hz" | "zeta"
+  | "alpha_phase" | "beta_phase" | "gamma_phase" | "duration";
+/** One numeric parameter of the lab: its slider (range, step, unit) and default (the paper case). */
+export interface Param {
+  key: ParamKey; symbol: string; label: string; unit: string;
+  min: number; max: number; step: number; default: number;
+}
+/** Named parameters for `applyOverrides`; each optional, each inside its `Param` range. */
+export type Overrides = Partial<Record<ParamKey, number>>;
+/** Resonance map request: flap frequencies (Hz) and optionally roll amplitudes α0 (rad). */
+export interface ResonanceOptions { from_hz: number; to_hz: number; points: number; alpha0_values?: number[] | null }
+/** One mode's resonance map; arrays row-major [alpha0][flap_hz] (one row without alpha0). */
+export interface ResonanceModeColumns {
+  name: string; freq_hz: number; effective_freq_hz: Float64Array; max_modulus: Float64Array;
+  /** NaN where the effective frequency coincides with n·f_d. */ beat_period_s: Float64Array;
+  /** The flap harmonic n the beat is measured against. */ beat_harmonic: Uint32Array;
+  /** 1 = Floquet-stable, 0 = parametric resonance (max_modulus > 1). */ stable: Uint8Array;
+}
+export interface ResonanceMapResult { flap_hz: Float64Array; alpha0?: Float64Array; modes: ResonanceModeColumns[] }
+/** Roll α, pitch β and yaw γ (rad) at the simulation's sample times `sim.t`. */
+export interface AngleSeries { alpha: Float64Array; beta: Float64Array; gamma: Float64Array }
 "#;

@@ -87,3 +87,63 @@ export async function pngStats(page, buf) {
     return { width: c.width, height: c.height, nonWhite, fraction: nonWhite / n, colours: colours.size, foreground: fg / n };
   }, b64);
 }
+
+/**
+ * Bounding box of the foreground (pixels unlike the most common colour by more than `tol` in
+ * summed RGB) of a PNG, decoded in the page: { x0, y0, x1, y1, width, height, share }.
+ */
+export async function pngForeground(page, buf, tol = 30, inset = 0) {
+  const b64 = buf.toString('base64');
+  return page.evaluate(async ([data, tol, inset]) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${data}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width;
+    c.height = img.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    const count = new Map();
+    for (let i = 0; i < d.length; i += 4) {
+      const k = (d[i] << 16) | (d[i + 1] << 8) | d[i + 2];
+      count.set(k, (count.get(k) || 0) + 1);
+    }
+    const bg = [...count.entries()].sort((x, y) => y[1] - x[1])[0][0];
+    let x0 = Infinity, y0 = Infinity, x1 = -1, y1 = -1, fg = 0;
+    for (let y = inset; y < c.height - inset; y++) {
+      for (let x = inset; x < c.width - inset; x++) {
+        const i = 4 * (y * c.width + x);
+        if (Math.abs(d[i] - (bg >> 16)) + Math.abs(d[i + 1] - ((bg >> 8) & 255)) + Math.abs(d[i + 2] - (bg & 255)) > tol) {
+          fg++;
+          if (x < x0) x0 = x;
+          if (x > x1) x1 = x;
+          if (y < y0) y0 = y;
+          if (y > y1) y1 = y;
+        }
+      }
+    }
+    return { x0, y0, x1, y1, width: c.width, height: c.height, share: fg / (c.width * c.height) };
+  }, [b64, tol, inset]);
+}
+
+/** Whether every colour (hex #rrggbb) occurs exactly in a region (fractions of the image) of a PNG. */
+export async function pngHasColours(page, buf, colours, region = [0, 0, 1, 1]) {
+  const b64 = buf.toString('base64');
+  return page.evaluate(async ([data, colours, region]) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${data}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width;
+    c.height = img.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const [fx0, fy0, fx1, fy1] = region;
+    const x0 = Math.floor(fx0 * c.width), y0 = Math.floor(fy0 * c.height);
+    const d = ctx.getImageData(x0, y0, Math.ceil((fx1 - fx0) * c.width), Math.ceil((fy1 - fy0) * c.height)).data;
+    const seen = new Set();
+    for (let i = 0; i < d.length; i += 4) seen.add(`#${[d[i], d[i + 1], d[i + 2]].map((v) => v.toString(16).padStart(2, '0')).join('')}`);
+    return Object.fromEntries(colours.map((col) => [col, seen.has(col.toLowerCase())]));
+  }, [b64, colours, region]);
+}

@@ -251,7 +251,7 @@ test('screenshots: every panel has non-blank pixels; PNG export works', async ()
   await page.screenshot({ path: path.join(OUT, 'lab-1280x720.png') });
   await page.screenshot({ path: path.join(OUT, 'lab-full.png'), fullPage: true });
   const panels = await page.$$eval('wing-lab .wl-panel', (ps) => ps.filter((p) => !p.hidden).map((p) => p.dataset.panel));
-  assert.equal(panels.length, 8);
+  for (const p of ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report']) assert.ok(panels.includes(p), p);
   for (const name of panels) {
     const buf = await page.locator(`wing-lab .wl-panel[data-panel="${name}"]`).screenshot({ path: path.join(OUT, `panel-${name}.png`) });
     const st = await pngStats(page, buf);

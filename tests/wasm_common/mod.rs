@@ -685,6 +685,7 @@ pub fn ts_declarations_match_results() {
     };
     let a = wasm::analyze(to_js(&cfg), to_js(&opts), None).unwrap();
     check("Analysis", &a);
+    check("AngleSeries", &get(&a, "angles"));
     check("ModeForces", &get(&a, "forces.0"));
     check("ModeSpectra", &get(&a, "spectra.0"));
     check("Spectrum", &get(&a, "spectra.0.coriolis"));
@@ -722,4 +723,16 @@ pub fn ts_declarations_match_results() {
     .unwrap();
     check("FeModesResult", &fe);
     check("Mode", &get(&fe, "modes.0"));
+    check("Param", &get(&wasm::parameters().unwrap(), "0"));
+    let rm = wasm::resonance_map(
+        to_js(&cfg),
+        js_sys::JSON::parse(
+            r#"{"from_hz": 20, "to_hz": 30, "points": 3, "alpha0_values": [0.5, 0.8]}"#,
+        )
+        .unwrap(),
+        None,
+    )
+    .unwrap();
+    check("ResonanceMapResult", &rm);
+    check("ResonanceModeColumns", &get(&rm, "modes.0"));
 }

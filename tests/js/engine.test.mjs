@@ -1,0 +1,182 @@
+// The engine (www/engine.js) against a fake wasm module and a fake worker: the only module
+// that talks to wasm; results carry the angles (one crossing per recompute); old and new
+// stiffness keys; worker jobs with progress, errors and cancellation.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { createEngine, splitAngles, normalise } from '../../www/engine.js';
+import { defaults } from '../../www/state.js';
+
+function fakeWasm({ withAngles = false, newKeys = false } = {}) {
+  const calls = { analyze: 0, anglesAt: 0 };
+  const n = 5;
+  const t = Float64Array.from({ length: n }, (_, i) => i / 10000);
+  const spec = () => ({ freq_hz: new Float64Array([0, 1]), psd: new Float64Array([1, 2]) });
+  const wb = {
+    calls,
+    defaultConfig: () => ({ modes: [{ name: 'm1', freq_hz: 62.5, a: [1, 0], zeta: 0, strains: [] }] }),
+    limits: () => ({ max_samples: 2e6 }),
+    analyze(cfg, opts, k) {
+      calls.analyze++;
+      calls.last = { cfg, opts, k };
+      const sp = { euler: spec(), centrifugal: spec(), coriolis: spec(), total: spec() };
+      if (newKeys) sp.stiffness_force = spec();
+      else sp.stiffness = spec();
+      const out = { sim: { t, n, sample_rate_hz: 10000, flap_freq_hz: 25, modes: [] }, spectra: [sp], forces: [newKeys ? { stiffness_force: 1 } : { stiffness: 1 }], envelope: [] };
+      if (withAngles) out.angles = { alpha: new Float64Array(n), beta: new Float64Array(n), gamma: new Float64Array(n) };
+      return out;
+    },
+    anglesAt(cfg, times) {
+      calls.anglesAt++;
+      const out = new Float64Array(3 * times.length);
+      times.forEach((tt, i) => { out[3 * i] = tt; out[3 * i + 1] = 2 * tt; out[3 * i + 2] = 3 * tt; });
+      return out;
+    },
+  };
+  return wb;
+}
+
+function fakeWorker() {
+  const w = {
+    posted: [],
+    terminated: false,
+    postMessage(m) { w.posted.push(m); },
+    terminate() { w.terminated = true; },
+    reply(data) { w.onmessage({ data }); },
+  };
+  return w;
+}
+
+test('analyze builds the config from the parameters and returns angles from ONE anglesAt call', async () => {
+  const wb = fakeWasm();
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
+  assert.equal(e.ready, false);
+  await e.load();
+  assert.equal(e.ready, true);
+  const p = defaults();
+  p.gamma0 = 0.1; p.mode = '2'; p.detrend = 'mean';
+  const r = e.analyze(p);
+  assert.equal(wb.calls.analyze, 1);
+  assert.equal(wb.calls.anglesAt, 0, 'angles are fetched when first read, not during the slider redraw');
+  assert.equal(r.angles.alpha.length, 5);
+  assert.equal(r.angles, r.angles);
+  assert.equal(wb.calls.anglesAt, 1, 'one crossing per recompute');
+  assert.equal(wb.calls.last.k, 1);
+  assert.deepEqual(wb.calls.last.opts, { detrend: 'mean', segment_len: 8192 });
+  assert.equal(wb.calls.last.cfg.kinematics.gamma.harmonics[0].amplitude, 0.1);
+  assert.equal(r.k, 1);
+  assert.equal(r.angles.alpha.length, 5);
+  assert.equal(r.angles.beta[2], 2 * r.analysis.sim.t[2]);
+  assert.ok(r.compute_ms >= 0);
+  // Old key `stiffness` is readable under the contract's name too.
+  assert.ok(r.analysis.spectra[0].stiffness_force);
+  assert.equal(r.analysis.forces[0].stiffness_force, 1);
+});
+
+test('a wasm build that returns angles is not asked again; new keys keep an old alias', async () => {
+  const wb = fakeWasm({ withAngles: true, newKeys: true });
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
+  await e.load();
+  const r = e.analyze(defaults());
+  assert.equal(wb.calls.anglesAt, 0);
+  assert.ok(r.angles.gamma instanceof Float64Array);
+  assert.equal(r.analysis.spectra[0].stiffness, r.analysis.spectra[0].stiffness_force);
+});
+
+test('analyze before load throws; wasm errors pass through with their message', async () => {
+  const wb = fakeWasm();
+  wb.analyze = () => { throw new Error('invalid value for `duration_s`'); };
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
+  assert.throws(() => e.analyze(defaults()), /not loaded/);
+  await e.load();
+  assert.throws(() => e.analyze(defaults()), /duration_s/);
+});
+
+test('worker jobs: progress, result, error; one worker for all jobs', async () => {
+  let made = 0;
+  let w;
+  const e = createEngine({ load: async () => fakeWasm(), createWorker: () => { made++; w = fakeWorker(); return w; } });
+  const prog = [];
+  const a = e.run('sweep', { cfg: 1, opts: 2 }, (i, n) => prog.push([i, n]));
+  const b = e.run('icmap', { cfg: 1 });
+  assert.equal(made, 1);
+  assert.deepEqual(w.posted.map((m) => [m.id, m.kind]), [[a.id, 'sweep'], [b.id, 'icmap']]);
+  w.reply({ id: a.id, progress: [3, 10] });
+  w.reply({ id: a.id, result: { ok: 1 }, ms: 12 });
+  w.reply({ id: b.id, error: 'bad grid' });
+  assert.deepEqual(await a.promise, { result: { ok: 1 }, ms: 12 });
+  await assert.rejects(b.promise, /bad grid/);
+  assert.deepEqual(prog, [[3, 10]]);
+  assert.equal(e.running(a.id), false);
+});
+
+test('resonanceMap is a worker job of kind resonance with its options', async () => {
+  let w;
+  const e = createEngine({ load: async () => fakeWasm(), createWorker: () => (w = fakeWorker()) });
+  const prog = [];
+  const j = e.resonanceMap({ c: 1 }, { from_hz: 5, to_hz: 60, points: 3 }, (i, n) => prog.push([i, n]));
+  assert.deepEqual(w.posted[0], { id: j.id, kind: 'resonance', cfg: { c: 1 }, opts: { from_hz: 5, to_hz: 60, points: 3 } });
+  w.reply({ id: j.id, progress: [1, 3] });
+  w.reply({ id: j.id, result: { flap_hz: [5, 32.5, 60] }, ms: 4 });
+  assert.deepEqual((await j.promise).result.flap_hz, [5, 32.5, 60]);
+  assert.deepEqual(prog, [[1, 3]]);
+});
+
+test('cancel terminates the worker, fails its jobs, and the next job gets a fresh worker', async () => {
+  const workers = [];
+  const e = createEngine({ load: async () => fakeWasm(), createWorker: () => { const w = fakeWorker(); workers.push(w); return w; } });
+  const a = e.run('sweep', {});
+  assert.equal(e.cancel(a.id), true);
+  await assert.rejects(a.promise, /cancelled/);
+  assert.equal(workers[0].terminated, true);
+  assert.equal(e.cancel(a.id), false);
+  e.run('reproduce');
+  assert.equal(workers.length, 2);
+});
+
+test('ensureFe runs once in the worker and then the config uses the FE modes', async () => {
+  let w;
+  const e = createEngine({ load: async () => fakeWasm(), createWorker: () => (w = fakeWorker()), feInput: { n_modes: 2, mesh_size_mm: 1 } });
+  await e.load();
+  const p1 = e.ensureFe();
+  const p2 = e.ensureFe();
+  assert.equal(w.posted.length, 1);
+  assert.deepEqual(w.posted[0].input, { n_modes: 2, mesh_size_mm: 1 });
+  w.reply({ id: w.posted[0].id, result: { modes: [{ name: 'fe1', freq_hz: 62.49, a: [1, 0], zeta: 0, strains: [] }] }, ms: 1 });
+  const fe = await p1;
+  assert.equal(await p2, fe);
+  assert.equal(e.fe, fe);
+  const p = defaults();
+  p.modes = 'fe';
+  p.zeta = 0.02;
+  const cfg = e.config(p);
+  assert.equal(cfg.modes[0].name, 'fe1');
+  assert.equal(cfg.modes[0].zeta, 0.02);
+  assert.equal(e.config(defaults()).modes[0].name, 'm1');
+});
+
+test('a failing worker rejects pending jobs; dispose terminates', async () => {
+  let w;
+  const e = createEngine({ load: async () => fakeWasm(), createWorker: () => (w = fakeWorker()) });
+  const a = e.run('sweep');
+  w.onerror({ message: 'boom' });
+  await assert.rejects(a.promise, /boom/);
+  e.run('sweep').promise.catch(() => {});
+  e.dispose();
+  assert.equal(w.terminated, true);
+});
+
+test('splitAngles and normalise', () => {
+  const s = splitAngles(new Float64Array([1, 2, 3, 4, 5, 6]));
+  assert.deepEqual([...s.alpha, ...s.beta, ...s.gamma], [1, 4, 2, 5, 3, 6]);
+  const a = normalise({ spectra: [{ stiffness: 7 }], forces: [] });
+  assert.equal(a.spectra[0].stiffness_force, 7);
+});
+
+test('parameters(): the core table when the wasm has it, else null', async () => {
+  const wb = fakeWasm();
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
+  await e.load();
+  assert.equal(e.parameters(), null);
+  wb.parameters = () => [{ key: 'alpha0', min: 0, max: 1.5, step: 0.01, default: 0.8 }];
+  assert.equal(e.parameters()[0].key, 'alpha0');
+});

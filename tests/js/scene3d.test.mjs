@@ -1,0 +1,130 @@
+// Pure 3-D maths (www/scene3d.js): the camera mirror, the stroke fit, the run-wide strain range.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import * as S from '../../www/scene3d.js';
+
+// A flat rectangular "wing": span 0.05 m along x, chord 0.02 m toward −y, on a 11 × 5 grid.
+function wing() {
+  const nodes = [], tris = [];
+  for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
+  for (let i = 0; i < 10; i++) for (let j = 0; j < 4; j++) {
+    const a = i * 5 + j, b = a + 5;
+    tris.push(a, b, a + 1, b, b + 1, a + 1);
+  }
+  return { nodes: Float64Array.from(nodes), tris: Uint32Array.from(tris) };
+}
+
+test('the default camera projects its target to the image centre; orbit/zoom mirror the renderer', () => {
+  const cam = S.defaultCamera(0.05);
+  const p = S.projector(cam, 640, 480)(...cam.target);
+  assert.ok(Math.abs(p[0] - 320) < 1e-9 && Math.abs(p[1] - 240) < 1e-9);
+  const c2 = S.orbit(cam, 100, -20);
+  assert.ok(Math.abs(c2.yaw - (cam.yaw - 0.8)) < 1e-12);
+  assert.ok(Math.abs(c2.pitch - (cam.pitch - 0.16)) < 1e-12);
+  assert.equal(S.orbit(cam, 0, 1e6).pitch, Math.PI / 2 - 0.01);
+  assert.ok(Math.abs(S.zoom(cam, 2).distance - 2 * cam.distance) < 1e-15);
+  assert.equal(S.key(cam, 'x'), null);
+  // moveTo gives the orbit/zoom that reproduce a target camera
+  const to = { ...cam, yaw: -1.5, pitch: 0.4, distance: 0.2 };
+  const m = S.moveTo(cam, to);
+  const got = S.zoom(S.orbit(cam, m.dx, m.dy), m.zoom);
+  for (const k of ['yaw', 'pitch', 'distance']) assert.ok(Math.abs(got[k] - to[k]) < 1e-12, k);
+});
+
+test('rotate is R_x(α)·R_y(β)·R_z(γ) (the renderer’s wing rotation)', () => {
+  const r = S.rotate(0, 0, Math.PI / 2, [1, 0, 0]);
+  assert.ok(Math.abs(r[0]) < 1e-12 && Math.abs(r[1] - 1) < 1e-12);
+  const b = S.rotate(0, Math.PI / 2, 0, [1, 0, 0]);
+  assert.ok(Math.abs(b[2] + 1) < 1e-12);
+  const a = S.rotate(Math.PI / 2, 0, 0, [0, 1, 0]);
+  assert.ok(Math.abs(a[2] - 1) < 1e-12);
+});
+
+test('fitDistance keeps every pose of a stroke inside the image; bestView covers more than the default', () => {
+  const { nodes, tris } = wing();
+  const poses = [];
+  for (let j = 0; j < 24; j++) {
+    const ph = (2 * Math.PI * j) / 24;
+    poses.push([0.8 * Math.sin(ph), 0.5 * Math.sin(ph), 0.2 * Math.sin(ph)]);
+  }
+  const span = S.spanOf(nodes);
+  const pts = S.posePoints(nodes, poses);
+  const cam = S.defaultCamera(span);
+  const d = S.fitDistance(cam, pts, 640, 480, 0.05);
+  const bb = S.bbox({ ...cam, distance: d }, pts, 640, 480);
+  assert.ok(bb[0] >= 0.05 * 640 - 1e-6 && bb[2] <= 0.95 * 640 + 1e-6 && bb[1] >= 0.05 * 480 - 1e-6 && bb[3] <= 0.95 * 480 + 1e-6, `${bb}`);
+  // tight: slightly closer and something leaves the margin
+  const bb2 = S.bbox({ ...cam, distance: d * 0.97 }, pts, 640, 480);
+  assert.ok(bb2[0] < 0.05 * 640 || bb2[2] > 0.95 * 640 || bb2[1] < 0.05 * 480 || bb2[3] > 0.95 * 480);
+  const best = S.bestView(span, nodes, tris, poses, 640, 480);
+  const dflt = poses.reduce((s, p) => s + S.projectedArea({ ...cam, distance: cam.distance * 1.35 }, nodes, tris, p, 640, 480), 0) / poses.length / (640 * 480);
+  assert.ok(best.coverage > dflt, `${best.coverage} vs ${dflt}`);
+  const bb3 = S.bbox(best.camera, pts, 640, 480);
+  assert.ok(bb3[0] >= 0 && bb3[2] <= 640 && bb3[1] >= 0 && bb3[3] <= 480);
+});
+
+test('hull2 and extremeStates: extremes of linear functions over the run are hull vertices', () => {
+  const n = 5000;
+  const q1 = Float64Array.from({ length: n }, (_, i) => Math.sin(i / 37));
+  const q2 = Float64Array.from({ length: n }, (_, i) => 0.3 * Math.cos(i / 11));
+  const states = S.extremeStates([q1, q2]);
+  assert.ok(states.length < 400);
+  for (const [a, b] of [[1, 0], [0.3, -2], [-1, 1]]) {
+    let brute = 0;
+    for (let i = 0; i < n; i++) brute = Math.max(brute, Math.abs(a * q1[i] + b * q2[i]));
+    const hull = Math.max(...states.map(([x, y]) => Math.abs(a * x + b * y)));
+    assert.ok(Math.abs(brute - hull) < 1e-12);
+  }
+});
+
+test('strainRanges: one fixed range per component from the run’s extremes (robust over nodes)', () => {
+  const nNodes = 100;
+  const strain = new Float64Array(2 * nNodes * 3);
+  for (let i = 0; i < nNodes; i++) {
+    strain[i * 3] = i / 100; // mode 0 ε_x grows along the nodes
+    strain[(nNodes + i) * 3 + 2] = 1; // mode 1 γ_xy uniform
+  }
+  strain[99 * 3] = 1000; // a clamp-corner singularity: ignored by the robust quantile
+  const q1 = Float64Array.from({ length: 1000 }, (_, i) => 2 * Math.sin(i / 10));
+  const q2 = Float64Array.from({ length: 1000 }, (_, i) => 0.5 * Math.cos(i / 7));
+  const r = S.strainRanges(strain, nNodes, [q1, q2], 0.98);
+  assert.ok(Math.abs(S.strainRanges(strain, nNodes, [q1, q2])[1] - 0.89 * r[1] / 0.97) < 1e-9, 'default quantile 0.9');
+  let m1 = 0, m2 = 0;
+  for (let i = 0; i < 1000; i++) { m1 = Math.max(m1, Math.abs(q1[i])); m2 = Math.max(m2, Math.abs(q2[i])); }
+  assert.ok(Math.abs(r[1] - 0.97 * m1) < 1e-9, `${r[1]}`);
+  assert.equal(r[2], 0);
+  assert.ok(Math.abs(r[3] - m2) < 1e-9);
+  assert.ok(r[4] >= r[1] && r[4] >= r[3] / Math.SQRT2 - 1e-12);
+  const shapes = new Float64Array(2 * nNodes).fill(0.001);
+  const dmax = S.maxDeflection(shapes, nNodes, [q1, q2]);
+  let brute = 0;
+  for (let i = 0; i < 1000; i++) brute = Math.max(brute, Math.abs(0.001 * (q1[i] + q2[i])));
+  assert.ok(Math.abs(dmax - brute) < 1e-15);
+});
+
+test('hull2 with the interior filter equals the plain hull; outline holds every node', () => {
+  const n = 3000;
+  const xs = Float64Array.from({ length: n }, (_, i) => Math.sin(i * 0.37) * (1 + 0.3 * Math.sin(i * 0.011)));
+  const ys = Float64Array.from({ length: n }, (_, i) => Math.cos(i * 0.23) * 0.5);
+  const h = S.hull2(xs, ys);
+  // every point is inside or on the hull polygon
+  for (let i = 0; i < n; i += 7) {
+    for (let j = 0; j < h.length; j++) {
+      const a = h[j], b = h[(j + 1) % h.length];
+      assert.ok((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) >= -1e-12);
+    }
+  }
+  const small = S.hull2(xs.slice(0, 50), ys.slice(0, 50));
+  assert.ok(small.length >= 3);
+  // outline: bbox of all nodes at any pose equals that of the outline with the camber lift
+  const nodes = [];
+  for (let i = 0; i <= 20; i++) for (let j = 0; j <= 8; j++) nodes.push(0.0025 * i, -0.003 * j * (1 - i / 25), 0.002 * Math.sin((Math.PI * j) / 8));
+  const N = Float64Array.from(nodes);
+  const ol = S.outline(N);
+  assert.ok(ol.nodes.length / 3 < 40);
+  const cam = { ...S.defaultCamera(0.05), pitch: 0.6 };
+  const poses = [[0.5, 0.3, 0.1], [-0.7, -0.4, 0]];
+  const all = S.bbox(cam, S.posePoints(N, poses), 640, 480);
+  const few = S.bbox(cam, S.posePoints(ol.nodes, poses, { lift: ol.zmax }), 640, 480);
+  assert.ok(few[0] <= all[0] + 1e-9 && few[1] <= all[1] + 1e-9 && few[2] >= all[2] - 1e-9 && few[3] >= all[3] - 1e-9);
+});

@@ -1,0 +1,81 @@
+// The beat, made explicit (pure; unit-tested in tests/js/beat.test.mjs): the Floquet beat of
+// the selected mode, T_beat = 1 / |f_eff − n·f_d| with the harmonic n nearest f_eff, the
+// default window of the responses plot (about three beats, starting on an envelope maximum),
+// and the force-term shares. All numbers come from the analysis; nothing is canned.
+
+/**
+ * { fEff, n, fd, fHarm, diff, period, stable, text, formula } for mode k of an analysis.
+ * `period` is the Floquet `beat_period_s` itself (null when there is no beat).
+ */
+export function beatInfo(a, k) {
+  const m = a.sim.modes[k];
+  const f = m.floquet;
+  const fd = a.sim.flap_freq_hz;
+  const n = f.beat_harmonic;
+  const fEff = f.effective_freq_hz;
+  const period = f.beat_period_s == null || !Number.isFinite(f.beat_period_s) ? null : f.beat_period_s;
+  const fHarm = n == null ? null : n * fd;
+  const diff = fHarm == null ? null : Math.abs(fEff - fHarm);
+  return { fEff, n, fd, fHarm, diff, period, stable: f.stable, maxModulus: f.max_modulus, fk: m.freq_hz };
+}
+
+/** Index of the largest value of y on [i0, i1). */
+function argmax(y, i0, i1) {
+  let best = Math.max(0, i0);
+  for (let i = best + 1; i < Math.min(y.length, i1); i++) if (y[i] > y[best]) best = i;
+  return best;
+}
+
+/**
+ * The responses plot's opening window: [x0, x1] spanning about three beats, and the marked
+ * beat [tA, tB] with tB = tA + T_beat, tA an envelope maximum after the first beat. Without a
+ * beat (or when three beats do not fit) the whole run. `measured` is the time from tA to the
+ * next envelope maximum (≈ T_beat).
+ */
+export function beatWindow(t, env, period, { beats = 3 } = {}) {
+  const n = t.length;
+  const t0 = t[0], t1 = t[n - 1];
+  const dur = t1 - t0;
+  if (!period || !(period > 0) || period * (beats + 1) > dur || !env || env.length !== n) {
+    return { x0: t0, x1: t1, mark: null, measured: null };
+  }
+  const dt = dur / (n - 1);
+  const idx = (tt) => Math.round((tt - t0) / dt);
+  // The envelope maximum within the second beat: the beat has built up, and a full window follows.
+  const a = argmax(env, idx(t0 + period), idx(t0 + 2 * period));
+  const tA = t[a];
+  const b = argmax(env, idx(tA + 0.5 * period), idx(tA + 1.5 * period));
+  const x0 = Math.max(t0, tA - 0.5 * period);
+  const x1 = Math.min(t1, x0 + beats * period);
+  return { x0, x1, mark: [tA, tA + period], measured: t[b] - tA };
+}
+
+/** Force-term shares (paper §4.1) of mode k: [{ key, label, value }]. */
+export function shares(a, k) {
+  const c = a.sim.modes[k].contribution_percent;
+  return [
+    { key: 'euler', label: 'Euler', value: c.euler },
+    { key: 'centrifugal', label: 'Centrifugal', value: c.centrifugal },
+    { key: 'coriolis', label: 'Coriolis', value: c.coriolis },
+  ];
+}
+
+/**
+ * A display envelope: `env` averaged over a sliding window of `width` samples (one flap
+ * period), centred, so the ripple at the flap frequency and its harmonics cancels and the
+ * beat's swell and fade remain. The raw envelope stays what the CSV exports.
+ */
+export function smooth(env, width) {
+  const n = env.length;
+  const w = Math.max(1, Math.round(width));
+  if (w <= 1 || n === 0) return Float64Array.from(env);
+  const c = new Float64Array(n + 1);
+  for (let i = 0; i < n; i++) c[i + 1] = c[i] + env[i];
+  const out = new Float64Array(n);
+  const h = Math.floor(w / 2);
+  for (let i = 0; i < n; i++) {
+    const a = Math.max(0, i - h), b = Math.min(n, i - h + w);
+    out[i] = (c[b] - c[a]) / (b - a);
+  }
+  return out;
+}

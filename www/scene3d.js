@@ -1,0 +1,376 @@
+// Pure maths for the 3-D view (no DOM, no wasm), unit-tested in tests/js/scene3d.test.mjs:
+//
+// * a mirror of the renderer's orbit camera (src/render/scene.rs OrbitCamera: target, yaw,
+//   pitch, distance, 45° field of view, K up) and of the wing rotation R_x(α)·R_y(β)·R_z(γ), so
+//   the page can place every pose of the run on screen and fit the camera to the whole stroke
+//   using only the WingView API (orbit / zoom);
+// * the strain colour range of a run: per component, the robust (98th-percentile over nodes)
+//   maximum over time of |Σ_k ε_k(node) q_k(t)|, fixed for the whole run so colours pulse with
+//   the beat instead of being rescaled every frame;
+// * the largest true deflection over the run.
+// Extremes over time use the convex hull of the modal trajectory (q_1(t), q_2(t)): a linear
+// function of q — or a norm of one — takes its maximum over the run at a hull vertex, so the
+// result is exact and costs (hull vertices × nodes), not (samples × nodes).
+
+export const ORBIT_RAD_PER_PX = 0.008;
+const PITCH_LIMIT = Math.PI / 2 - 0.01;
+const TAU = 2 * Math.PI;
+
+/** The renderer's initial camera for a wing of span `span` (m): OrbitCamera::for_span. */
+export function defaultCamera(span) {
+  const s = Number.isFinite(span) && span > 0 ? span : 0.05;
+  return { target: [0.5 * s, -0.25 * s, 0], yaw: -1.95, pitch: 0.8, distance: 2.1 * s, fov: (45 * Math.PI) / 180 };
+}
+
+/** The camera after WingView.orbit(dx, dy) (same arithmetic as the renderer). */
+export function orbit(cam, dx, dy) {
+  if (!Number.isFinite(dx) || !Number.isFinite(dy)) return cam;
+  return { ...cam, yaw: (cam.yaw - dx * ORBIT_RAD_PER_PX) % TAU, pitch: Math.min(PITCH_LIMIT, Math.max(-PITCH_LIMIT, cam.pitch + dy * ORBIT_RAD_PER_PX)) };
+}
+
+/** The camera after WingView.zoom(factor). */
+export function zoom(cam, f) {
+  if (!(Number.isFinite(f) && f > 0)) return cam;
+  return { ...cam, distance: Math.min(1e3, Math.max(1e-3, cam.distance * f)) };
+}
+
+/** The camera after WingView.key(k); null when the renderer ignores the key. */
+export function key(cam, k) {
+  switch (k) {
+    case 'ArrowLeft': return orbit(cam, -12, 0);
+    case 'ArrowRight': return orbit(cam, 12, 0);
+    case 'ArrowUp': return orbit(cam, 0, 12);
+    case 'ArrowDown': return orbit(cam, 0, -12);
+    case '+': case '=': return zoom(cam, 1 / 1.1);
+    case '-': case '_': return zoom(cam, 1.1);
+    default: return null;
+  }
+}
+
+/**
+ * The orbit (dx, dy in "pixels") and zoom factor that take camera `from` to `to` (same target).
+ * Applying them with WingView.orbit / zoom reproduces `to` up to float32 rounding.
+ */
+export function moveTo(from, to) {
+  return { dx: (from.yaw - to.yaw) / ORBIT_RAD_PER_PX, dy: (to.pitch - from.pitch) / ORBIT_RAD_PER_PX, zoom: to.distance / from.distance };
+}
+
+export function eye(cam) {
+  const cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch), cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw);
+  const d = cam.distance, t = cam.target;
+  return [t[0] + d * cp * cy, t[1] + d * cp * sy, t[2] + d * sp];
+}
+
+/** A projector for a width × height image: (x, y, z) → [px, py] (pixel units, y down), or null behind the eye. */
+export function projector(cam, width, height) {
+  const e = eye(cam);
+  const t = cam.target;
+  let f = [t[0] - e[0], t[1] - e[1], t[2] - e[2]];
+  const fl = Math.hypot(...f);
+  f = f.map((v) => v / fl);
+  // s = normalize(f × up), up = K
+  let s = [f[1], -f[0], 0];
+  const sl = Math.hypot(...s) || 1;
+  s = s.map((v) => v / sl);
+  const u = [s[1] * f[2] - s[2] * f[1], s[2] * f[0] - s[0] * f[2], s[0] * f[1] - s[1] * f[0]];
+  const F = 1 / Math.tan(0.5 * cam.fov);
+  const aspect = width / Math.max(1, height);
+  return (x, y, z) => {
+    const d0 = x - e[0], d1 = y - e[1], d2 = z - e[2];
+    const depth = f[0] * d0 + f[1] * d1 + f[2] * d2;
+    if (depth <= 0) return null;
+    const nx = ((F / aspect) * (s[0] * d0 + s[1] * d1 + s[2] * d2)) / depth;
+    const ny = (F * (u[0] * d0 + u[1] * d1 + u[2] * d2)) / depth;
+    return [(nx + 1) * 0.5 * width, (1 - ny) * 0.5 * height];
+  };
+}
+
+/** R_x(α)·R_y(β)·R_z(γ) applied to p (the renderer's wing rotation). */
+export function rotate(alpha, beta, gamma, p) {
+  const [x, y, z] = p;
+  const cg = Math.cos(gamma), sg = Math.sin(gamma);
+  const x1 = cg * x - sg * y, y1 = sg * x + cg * y, z1 = z;
+  const cb = Math.cos(beta), sb = Math.sin(beta);
+  const x2 = cb * x1 + sb * z1, y2 = y1, z2 = -sb * x1 + cb * z1;
+  const ca = Math.cos(alpha), sa = Math.sin(alpha);
+  return [x2, ca * y2 - sa * z2, sa * y2 + ca * z2];
+}
+
+/**
+ * The nodes that can be extreme on screen: the convex hull of the planform (x, y), as a flat
+ * [x, y, z, …] array with z set to the largest |z| (camber) of the wing, so that with a lift
+ * of ± that much every node lies inside their hull in 3-D. Fitting the camera to these few
+ * points gives the same bounding box as all nodes, hundreds of times cheaper.
+ */
+export function outline(nodes) {
+  const n = nodes.length / 3;
+  const xs = new Float64Array(n), ys = new Float64Array(n);
+  let zmax = 0;
+  for (let i = 0; i < n; i++) {
+    xs[i] = nodes[3 * i];
+    ys[i] = nodes[3 * i + 1];
+    zmax = Math.max(zmax, Math.abs(nodes[3 * i + 2]));
+  }
+  const h = hull2(xs, ys);
+  const out = new Float64Array(3 * h.length);
+  h.forEach((i, j) => { out[3 * j] = xs[i]; out[3 * j + 1] = ys[i]; out[3 * j + 2] = 0; });
+  return { nodes: out, zmax };
+}
+
+/** Span (largest x) of flat node coordinates [x, y, z, …]. */
+export function spanOf(nodes) {
+  let s = 0;
+  for (let i = 0; i < nodes.length; i += 3) s = Math.max(s, nodes[i]);
+  return s;
+}
+
+/** Indices of `count` samples evenly spread over one flap period of a run at `rate` Hz. */
+export function flapSamples(n, rate, flapHz, count = 48, start = 0) {
+  const per = Math.max(1, Math.round(rate / flapHz));
+  const out = [];
+  for (let j = 0; j < count; j++) {
+    const i = start + Math.round((j * per) / count);
+    if (i < n) out.push(i);
+  }
+  return out;
+}
+
+/**
+ * World positions of (a subset of) the wing's nodes at the given poses: Float64Array of
+ * x, y, z triples. `lift` (m) moves every node ± along its normal to cover the drawn deflection.
+ */
+export function posePoints(nodes, poses, { stride = 1, lift = 0 } = {}) {
+  const out = [];
+  for (const [a, b, g] of poses) {
+    for (let i = 0; i < nodes.length; i += 3 * stride) {
+      for (const dz of lift > 0 ? [-lift, lift] : [0]) {
+        const w = rotate(a, b, g, [nodes[i], nodes[i + 1], nodes[i + 2] + dz]);
+        out.push(w[0], w[1], w[2]);
+      }
+    }
+  }
+  return Float64Array.from(out);
+}
+
+/** Pixel bounding box [x0, y0, x1, y1] of world points; null if any is behind the eye. */
+export function bbox(cam, pts, width, height) {
+  const pr = projector(cam, width, height);
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (let i = 0; i < pts.length; i += 3) {
+    const p = pr(pts[i], pts[i + 1], pts[i + 2]);
+    if (!p) return null;
+    if (p[0] < x0) x0 = p[0];
+    if (p[0] > x1) x1 = p[0];
+    if (p[1] < y0) y0 = p[1];
+    if (p[1] > y1) y1 = p[1];
+  }
+  return [x0, y0, x1, y1];
+}
+
+/**
+ * The smallest camera distance (same target and direction) at which every point projects
+ * inside the image with `margin` (fraction of each side) to spare. Bisection on the distance.
+ */
+export function fitDistance(cam, pts, width, height, margin = 0.05) {
+  const inside = (d) => {
+    const b = bbox({ ...cam, distance: d }, pts, width, height);
+    return b && b[0] >= margin * width && b[2] <= (1 - margin) * width && b[1] >= margin * height && b[3] <= (1 - margin) * height;
+  };
+  let lo = cam.distance * 0.05, hi = cam.distance;
+  let guard = 0;
+  while (!inside(hi) && guard++ < 40) hi *= 1.5;
+  for (let it = 0; it < 26; it++) {
+    const mid = 0.5 * (lo + hi);
+    if (inside(mid)) hi = mid;
+    else lo = mid;
+  }
+  return hi;
+}
+
+/** Projected area (pixels) of the wing's triangles at one pose, summed. */
+export function projectedArea(cam, nodes, triangles, pose, width, height) {
+  const pr = projector(cam, width, height);
+  const n = nodes.length / 3;
+  const P = new Float64Array(2 * n);
+  for (let i = 0; i < n; i++) {
+    const w = rotate(pose[0], pose[1], pose[2], [nodes[3 * i], nodes[3 * i + 1], nodes[3 * i + 2]]);
+    const p = pr(w[0], w[1], w[2]) || [NaN, NaN];
+    P[2 * i] = p[0];
+    P[2 * i + 1] = p[1];
+  }
+  let area = 0;
+  for (let t = 0; t < triangles.length; t += 3) {
+    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+    const A = 0.5 * Math.abs((P[2 * b] - P[2 * a]) * (P[2 * c + 1] - P[2 * a + 1]) - (P[2 * c] - P[2 * a]) * (P[2 * b + 1] - P[2 * a + 1]));
+    if (Number.isFinite(A)) area += A;
+  }
+  return area;
+}
+
+/**
+ * The default view of a run: from the renderer's camera direction varied over a small grid of
+ * yaw/pitch, the one whose stroke-fitting distance leaves the wing largest on screen (mean
+ * projected area over the stroke) while keeping the stroke seen from above its plane. Returns
+ * { camera, coverage } (coverage: mean wing area / image area).
+ */
+export function bestView(span, nodes, triangles, poses, width, height, { lift = 0, margin = 0.03 } = {}) {
+  const base = defaultCamera(span);
+  const ol = outline(nodes);
+  const pts = posePoints(ol.nodes, poses, { lift: lift + ol.zmax });
+  const few = poses.filter((_, j) => j % Math.max(1, Math.floor(poses.length / 8)) === 0);
+  let best = null;
+  for (const dyaw of [-0.9, -0.6, -0.3, 0, 0.3, 0.6, 0.9]) {
+    for (const pitch of [0.7, 0.9, 1.1]) {
+      const cam0 = { ...base, yaw: base.yaw + dyaw, pitch };
+      const d = fitDistance(cam0, pts, width, height, margin);
+      const cam = { ...cam0, distance: d };
+      let area = 0;
+      for (const p of few) area += projectedArea(cam, nodes, triangles, p, width, height);
+      const coverage = area / few.length / (width * height);
+      if (!best || coverage > best.coverage) best = { camera: cam, coverage };
+    }
+  }
+  return best;
+}
+
+/**
+ * Convex hull (monotone chain) of 2-D points given as two arrays; returns vertex indices.
+ * Points strictly inside the polygon of the 16 directional extremes are dropped first
+ * (Akl–Toussaint), so long trajectories sort only their outer points.
+ */
+export function hull2(xs, ys) {
+  const n = xs.length;
+  let cand = null;
+  if (n > 64) {
+    const ext = [];
+    for (let d = 0; d < 16; d++) {
+      const c = Math.cos((Math.PI * d) / 8), sn = Math.sin((Math.PI * d) / 8);
+      let best = 0, bv = -Infinity;
+      for (let i = 0; i < n; i++) {
+        const v = c * xs[i] + sn * ys[i];
+        if (v > bv) { bv = v; best = i; }
+      }
+      if (ext[ext.length - 1] !== best && ext[0] !== best) ext.push(best);
+    }
+    // ext is in angular order (counter-clockwise); keep points not strictly inside it
+    if (ext.length >= 3) {
+      cand = [];
+      const m = ext.length;
+      for (let i = 0; i < n; i++) {
+        let inside = true;
+        for (let j = 0; j < m; j++) {
+          const a = ext[j], b = ext[(j + 1) % m];
+          if ((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) <= 0) { inside = false; break; }
+        }
+        if (!inside) cand.push(i);
+      }
+    }
+  }
+  const idx = (cand || Array.from({ length: n }, (_, i) => i)).sort((a, b) => xs[a] - xs[b] || ys[a] - ys[b]);
+  const cross = (o, a, b) => (xs[a] - xs[o]) * (ys[b] - ys[o]) - (ys[a] - ys[o]) * (xs[b] - xs[o]);
+  const lower = [], upper = [];
+  for (const i of idx) {
+    while (lower.length >= 2 && cross(lower[lower.length - 2], lower[lower.length - 1], i) <= 0) lower.pop();
+    lower.push(i);
+  }
+  for (let j = idx.length - 1; j >= 0; j--) {
+    const i = idx[j];
+    while (upper.length >= 2 && cross(upper[upper.length - 2], upper[upper.length - 1], i) <= 0) upper.pop();
+    upper.push(i);
+  }
+  upper.pop();
+  lower.pop();
+  const h = lower.concat(upper);
+  return h.length ? h : idx.length ? [idx[0]] : n ? [0] : [];
+}
+
+/**
+ * Modal states q (one array per mode, length n_modes) at which every extreme over the run is
+ * reached: hull vertices for one or two modes (exact), else every `stride`-th sample plus each
+ * mode's extremes.
+ */
+export function extremeStates(qs, maxSamples = 4000) {
+  const m = qs.length;
+  const n = m ? qs[0].length : 0;
+  if (!n) return [];
+  if (m === 1) {
+    let lo = 0, hi = 0;
+    for (let i = 1; i < n; i++) {
+      if (qs[0][i] < qs[0][lo]) lo = i;
+      if (qs[0][i] > qs[0][hi]) hi = i;
+    }
+    return [[qs[0][lo]], [qs[0][hi]]];
+  }
+  if (m === 2) return hull2(qs[0], qs[1]).map((i) => [qs[0][i], qs[1][i]]);
+  const stride = Math.max(1, Math.ceil(n / maxSamples));
+  const pick = new Set();
+  for (let i = 0; i < n; i += stride) pick.add(i);
+  for (const q of qs) {
+    let lo = 0, hi = 0;
+    for (let i = 1; i < n; i++) {
+      if (q[i] < q[lo]) lo = i;
+      if (q[i] > q[hi]) hi = i;
+    }
+    pick.add(lo);
+    pick.add(hi);
+  }
+  return [...pick].map((i) => qs.map((q) => q[i]));
+}
+
+/** The p-quantile of |values| (rank round((n−1)·p); p = 0.98 is the renderer's own robust range). */
+export function robust(values, p = 0.98) {
+  const a = Array.from(values, Math.abs).filter(Number.isFinite).sort((x, y) => x - y);
+  if (!a.length) return 0;
+  return a[Math.round((a.length - 1) * p)];
+}
+
+/**
+ * Quantile over nodes used for the run-wide colour range. Strain is singular at the clamped
+ * root, and a run's extremes there are far above the rest of the wing: the 90th percentile
+ * keeps the colours readable over the wing (the hot root saturates) while still being one
+ * fixed range for the whole run.
+ */
+export const RANGE_QUANTILE = 0.9;
+
+/**
+ * The colour range of a run per component: { 1: ε_x, 2: ε_y, 3: γ_xy, 4: |ε| } (limits for
+ * WingView.set_strain_range), each the robust (q-quantile over nodes, RANGE_QUANTILE by
+ * default) maximum over time of the nodal |strain|. strainNodes[(k·n + i)·3 + c] per unit q_k; qs: q_k(t) per mode.
+ */
+export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE) {
+  const states = extremeStates(qs);
+  const m = Math.min(qs.length, Math.floor(strainNodes.length / (3 * nNodes)));
+  const mx = [new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes)];
+  for (let i = 0; i < nNodes; i++) {
+    for (const q of states) {
+      let ex = 0, ey = 0, g = 0;
+      for (let k = 0; k < m; k++) {
+        const o = (k * nNodes + i) * 3;
+        ex += strainNodes[o] * q[k];
+        ey += strainNodes[o + 1] * q[k];
+        g += strainNodes[o + 2] * q[k];
+      }
+      const mag = Math.sqrt(ex * ex + ey * ey + 0.5 * g * g);
+      if (Math.abs(ex) > mx[0][i]) mx[0][i] = Math.abs(ex);
+      if (Math.abs(ey) > mx[1][i]) mx[1][i] = Math.abs(ey);
+      if (Math.abs(g) > mx[2][i]) mx[2][i] = Math.abs(g);
+      if (mag > mx[3][i]) mx[3][i] = mag;
+    }
+  }
+  return { 1: robust(mx[0], q), 2: robust(mx[1], q), 3: robust(mx[2], q), 4: robust(mx[3], q) };
+}
+
+/** The largest |Σ_k φ_k(node) q_k(t)| over nodes and the whole run (m, true scale). */
+export function maxDeflection(shapes, nNodes, qs) {
+  const states = extremeStates(qs);
+  const m = Math.min(qs.length, Math.floor(shapes.length / nNodes));
+  let best = 0;
+  for (let i = 0; i < nNodes; i++) {
+    for (const q of states) {
+      let w = 0;
+      for (let k = 0; k < m; k++) w += shapes[k * nNodes + i] * q[k];
+      if (Math.abs(w) > best) best = Math.abs(w);
+    }
+  }
+  return best;
+}

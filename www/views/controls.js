@@ -1,0 +1,137 @@
+// Parameters panel: the five main sliders first (α0, β0, γ0, f_d, ζ: a compact strip on a
+// phone), then "More parameters" (phases, duration, mode set, selected mode, PSD detrend), the
+// preset, warnings and the compute/draw timing. Reads and writes only the store.
+import { NUMERIC, ENUMS, MAIN_KEYS, FE_LAB_INPUT, defaults, snap } from '../state.js';
+import { el, rich } from '../dom.js';
+import { fmt, plain, PAPER_UNITS_NOTE } from '../format.js';
+
+export const title = 'Parameters';
+
+const ENUM_TEXT = {
+  modes: { paper: 'Paper table (Tables 3–4)', fe: 'FE wing (shell FE, computed here)' },
+  mode: { 1: 'Mode 1: spanwise bending', 2: 'Mode 2: spanwise torsion' },
+  detrend: { none: 'none (DC visible)', mean: 'mean', linear: 'linear' },
+};
+
+const valueText = (p, v) => (p.unit ? `${v} ${p.unit}` : String(v));
+
+export function mount(ctx) {
+  const { store, section, id } = ctx;
+  const preset = el('button', {
+    type: 'button',
+    class: 'wl-preset',
+    text: 'Paper forward flight',
+    title: 'α0 = 0.8, β0 = 0.5, γ0 = 0.2 rad, f_d = 25 Hz, ζ = 0, phases 0, 2 s (paper Table 5)',
+    onclick: () => {
+      const d = defaults();
+      delete d.panels;
+      store.set(d);
+    },
+  });
+  const inputs = {};
+  const row = (p) => {
+    const label = `${plain(p.label)}${p.unit ? ', in ' + p.unit : ''}`;
+    const range = el('input', { type: 'range', id: id(p.key), min: p.min, max: p.max, step: p.step, 'data-key': p.key, 'aria-label': label });
+    const num = el('input', { type: 'number', id: id(`${p.key}-n`), min: p.min, max: p.max, step: p.step, 'data-key': p.key, 'aria-label': `${label}, exact value` });
+    range.addEventListener('input', () => store.set({ [p.key]: snap(p, Number(range.value)) }));
+    num.addEventListener('change', () => {
+      const v = Number(num.value);
+      if (num.value.trim() === '' || !Number.isFinite(v)) {
+        num.setAttribute('aria-invalid', 'true');
+        return;
+      }
+      num.removeAttribute('aria-invalid');
+      const s = snap(p, v);
+      store.set({ [p.key]: s });
+      if (s !== v) num.value = String(s);
+    });
+    inputs[p.key] = { range, num, p };
+    const lab = el('label', { for: id(p.key), class: 'wl-label' }, el('span', { class: 'wl-sym', rich: p.sym }), el('span', { class: 'wl-long', rich: p.label.includes(',') ? p.label.replace(/^[^,]*, /, '') : p.label.replace(p.sym, '').trim() }), p.unit ? el('span', { class: 'wl-unit', text: ` (${p.unit})` }) : null);
+    return el('div', { class: 'wl-row', 'data-row': p.key }, lab, range, num);
+  };
+  const main = el('div', { class: 'wl-sliders wl-main-sliders' }, ...MAIN_KEYS.map((k) => row(NUMERIC.find((p) => p.key === k))));
+  const more = el('div', { class: 'wl-sliders wl-more-sliders' }, ...NUMERIC.filter((p) => !MAIN_KEYS.includes(p.key)).map(row));
+  const selects = {};
+  const selBox = el('div', { class: 'wl-selects' });
+  for (const e of ENUMS) {
+    const s = el('select', { id: id(e.key), 'data-key': e.key });
+    for (const c of e.choices) s.append(el('option', { value: c, text: ENUM_TEXT[e.key][c], disabled: (e.disabled || []).includes(c) }));
+    s.addEventListener('change', () => store.set({ [e.key]: s.value }));
+    selBox.append(el('div', { class: 'wl-row wl-select' }, el('label', { for: id(e.key), text: e.label }), s));
+    selects[e.key] = s;
+  }
+  const warnEl = el('p', { class: 'wl-warn', role: 'status', hidden: true });
+  const timingEl = el('p', { class: 'wl-timing', 'aria-live': 'off', text: 'loading wasm…' });
+  const moreId = id('more');
+  const moreBtn = el('button', { type: 'button', class: 'wl-more-toggle', 'aria-expanded': 'true', 'aria-controls': moreId, text: 'More parameters' });
+  section.append(
+    main,
+    moreBtn,
+    el('div', { class: 'wl-more', id: moreId },
+      el('h3', { class: 'wl-more-title', text: 'More parameters' }),
+      more,
+      selBox,
+      el('div', { class: 'wl-presets' }, preset),
+      el('p', { class: 'wl-note', rich: `Sampling: 10 kHz. ${PAPER_UNITS_NOTE}` }),
+      el('p', { class: 'wl-note', rich: `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker.` }),
+    ),
+    warnEl,
+    timingEl,
+  );
+
+  const moreBox = section.querySelector('.wl-more');
+  const setMore = (open) => {
+    moreBox.hidden = !open;
+    moreBtn.setAttribute('aria-expanded', String(open));
+    moreBtn.textContent = open ? 'Fewer parameters' : 'More parameters…';
+  };
+  moreBtn.addEventListener('click', () => setMore(moreBox.hidden));
+  const sync = (s) => {
+    for (const { range, num, p } of Object.values(inputs)) {
+      const v = s[p.key];
+      if (Number(range.value) !== v) range.value = String(v);
+      if (document.activeElement !== num || Number(num.value) !== v) num.value = String(v);
+      num.removeAttribute('aria-invalid');
+      range.setAttribute('aria-valuetext', valueText(p, v));
+    }
+    for (const [k, sel] of Object.entries(selects)) if (sel.value !== s[k]) sel.value = s[k];
+  };
+  const labelModes = (s) => {
+    const fe = s.fe;
+    for (const o of selects.mode.options) {
+      const k = Number(o.value) - 1;
+      o.textContent = s.modes === 'fe' && fe ? `Mode ${k + 1}: ${fe.kinds[k]} (FE, ${fmt(fe.freq_hz[k], 4)} Hz)` : ENUM_TEXT.mode[o.value];
+    }
+  };
+  const keys = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key)];
+  const unsub = [
+    store.subscribe(keys, sync),
+    store.subscribe(['fe', 'modes'], labelModes),
+    store.subscribe(['timing', 'result', 'status'], (s) => {
+      if (s.status) timingEl.textContent = s.status;
+      else if (s.timing && s.result) {
+        const a = s.result.analysis;
+        timingEl.textContent = `compute ${s.timing.compute.toFixed(1)} ms + draw ${s.timing.draw.toFixed(1)} ms (${a.sim.n} samples × ${a.sim.modes.length} modes)`;
+      }
+      const w = (s.result && s.result.analysis.sim.warnings) || [];
+      warnEl.hidden = w.length === 0;
+      warnEl.textContent = w.join(' ');
+    }),
+  ];
+  sync(store.get());
+  labelModes(store.get());
+  return {
+    inputs,
+    selects,
+    /** Phone: a compact strip of the five main sliders; "More parameters" folds away. */
+    setLayout(mode) {
+      const narrow = mode === 'narrow';
+      section.classList.toggle('wl-compact', narrow);
+      setMore(!narrow);
+    },
+    destroy() {
+      unsub.forEach((f) => f());
+    },
+  };
+}
+

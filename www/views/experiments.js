@@ -1,0 +1,150 @@
+// Guided experiments panel: one link per experiment (a shareable URL: every parameter plus
+// exp=<id>), and for the active one what to look at and what the model predicts, recomputed
+// from every new analysis by www/experiments.js, with its numeric checks shown as ✓ / ✗.
+// Experiments that need a study (γ_0 sweep, initial-condition map) run it through the engine's
+// worker; the prediction fills in when it arrives. Reads the store; writes only `exp` and the
+// experiment's parameters (ctx.setParams).
+import { el } from '../dom.js';
+import { plain } from '../format.js';
+import { NUMERIC, ENUMS } from '../state.js';
+import { EXPERIMENTS, experiment, experimentState, experimentQuery, predict } from '../experiments.js';
+
+export const title = 'Guided experiments';
+
+const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.filter((e) => e.key !== 'modes').map((e) => e.key)];
+
+/** An absolute link to the lab page (index.html next to lab.js) with `query`. */
+export function experimentHref(id) {
+  return new URL(`../index.html?${experimentQuery(id)}`, import.meta.url).href;
+}
+
+export function mount(ctx) {
+  const { store, section, engine } = ctx;
+  section.append(el('p', {
+    class: 'wl-note wl-exp-intro',
+    text: 'Each experiment sets the parameters for one effect of the model and says what to look for. The prediction is computed from the current results and checked against the simulation; it stays live if you move the sliders. Every link can be shared.',
+  }));
+  const list = el('ul', { class: 'wl-exp-list' });
+  const links = new Map();
+  for (const e of EXPERIMENTS) {
+    const a = el('a', { class: 'wl-exp-link', href: experimentHref(e.id), 'data-exp': e.id }, el('span', { rich: e.title }), el('span', { class: 'wl-exp-fig', text: `· ${e.figure}` }));
+    a.addEventListener('click', (ev) => {
+      if (ev.button !== 0 || ev.ctrlKey || ev.metaKey || ev.shiftKey || ev.altKey) return; // new tab / window
+      ev.preventDefault();
+      choose(e.id);
+    });
+    links.set(e.id, a);
+    list.append(el('li', {}, a));
+  }
+  const detail = el('div', { class: 'wl-exp-detail' });
+  const live = el('div', { class: 'wl-sr', 'aria-live': 'polite' });
+  section.append(list, detail, live);
+
+  const studies = new Map(); // key → { result, error, job }
+  let lastAnnounced = '';
+
+  /** Applies an experiment: its parameters (on the paper defaults, mode set kept) and exp=id. */
+  function choose(id) {
+    const s = experimentState(id);
+    const patch = { exp: id };
+    for (const k of PARAM_KEYS) patch[k] = s[k];
+    ctx.setParams(patch);
+    refresh();
+  }
+
+  function studyFor(e) {
+    if (!e.study) return null;
+    const s = store.get();
+    const cfg = engine.config(s);
+    const opts = { ...e.study.opts };
+    if (e.study.kind === 'icmap') opts.mode = Number(s.mode) - 1;
+    const key = `${e.study.kind}|${JSON.stringify(opts)}|${JSON.stringify(cfg)}`;
+    let entry = studies.get(key);
+    if (!entry) {
+      entry = { result: null, error: null };
+      studies.set(key, entry);
+      const job = engine.run(e.study.kind, { cfg, opts });
+      job.promise.then(
+        ({ result }) => { entry.result = result; refresh(); },
+        (err) => {
+          if (err && err.message === 'cancelled') studies.delete(key); // another study was cancelled: rerun later
+          else entry.error = String(err && err.message ? err.message : err);
+          refresh();
+        },
+      );
+    }
+    return entry;
+  }
+
+  function refresh() {
+    const s = store.get();
+    const e = s.exp ? experiment(s.exp) : null;
+    for (const [k, a] of links) {
+      if (e && k === e.id) a.setAttribute('aria-current', 'true');
+      else a.removeAttribute('aria-current');
+    }
+    section.dataset.exp = e ? e.id : '';
+    if (!e) {
+      detail.replaceChildren(el('p', { class: 'wl-note', text: 'Choose an experiment above.' }));
+      return;
+    }
+    const a = s.result && s.result.analysis;
+    const entry = a ? studyFor(e) : null;
+    const parts = [el('h3', { class: 'wl-exp-title', rich: e.title }), el('p', { class: 'wl-exp-look', rich: e.look })];
+    if (!a) parts.push(el('p', { class: 'wl-note', text: 'Computing…' }));
+    else {
+      const p = predict(e.id, a, { mode: Number(s.mode) - 1, state: s, study: entry && entry.result });
+      const pred = el('div', { class: 'wl-exp-predict', 'data-exp-predict': e.id });
+      pred.append(el('p', { class: 'wl-exp-label', text: 'The model predicts' }));
+      for (const line of p.lines) pred.append(el('p', { class: 'wl-exp-line', rich: line }));
+      if (entry && entry.error) pred.append(el('p', { class: 'wl-error', text: `The study failed: ${entry.error}` }));
+      if (p.checks.length) {
+        const ul = el('ul', { class: 'wl-exp-checks', 'aria-label': 'Checks of the prediction against the simulation' });
+        for (const c of p.checks) {
+          ul.append(el('li', { class: c.holds ? 'wl-ok' : 'wl-bad', 'data-check': c.id, 'data-holds': String(c.holds) },
+            el('span', { class: 'wl-exp-mark', 'aria-hidden': 'true', text: c.holds ? '✓' : '✗' }),
+            el('span', { rich: `${c.holds ? 'Holds' : 'Does not hold'}: ${c.label}` })));
+        }
+        pred.append(ul);
+      }
+      parts.push(pred);
+      section.dataset.checks = p.checks.map((c) => `${c.id}:${c.holds ? 1 : 0}`).join(',');
+      section.dataset.values = JSON.stringify(p.values, (k, v) => (typeof v === 'number' && !Number.isFinite(v) ? String(v) : v));
+      const say = `${plain(e.title)}: ${p.checks.length ? p.checks.map((c) => (c.holds ? 'holds' : 'does not hold')).join(', ') : 'computing'}`;
+      if (say !== lastAnnounced) {
+        live.textContent = say;
+        lastAnnounced = say;
+      }
+    }
+    if (e.study) {
+      const target = e.study.kind === 'resonance' ? 'resonance' : 'studies';
+      const label = { resonance: 'Go to the resonance map', sweep: 'Go to the sweep study (Fig. 6)', icmap: 'Go to the initial-condition map (Fig. 7)' }[e.study.kind];
+      const go = el('button', { type: 'button', class: 'wl-exp-go', text: label });
+      go.addEventListener('click', () => {
+        const sec = section.parentElement && section.parentElement.querySelector(`[data-panel="${target}"]`);
+        if (!sec) return;
+        sec.scrollIntoView({ behavior: 'smooth', block: 'start' });
+        const study = sec.querySelector(`[data-study="${e.study.kind === 'resonance' ? 'resonance' : e.study.kind}"]`);
+        const run = study && study.querySelector('[data-run]');
+        if (run) {
+          run.focus({ preventScroll: true });
+          const out = study.querySelector('.wl-study-out');
+          if (!study.dataset.done && !(out && out.childElementCount) && !run.disabled) run.click(); // show it computed, not empty
+        }
+      });
+      parts.push(go);
+    }
+    detail.replaceChildren(...parts);
+    ctx.emit('wl-experiment', { id: e.id });
+  }
+
+  const unsub = store.subscribe(['exp', 'result'], refresh);
+  refresh();
+  return {
+    choose,
+    refresh,
+    destroy() {
+      unsub();
+    },
+  };
+}

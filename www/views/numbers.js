@@ -1,0 +1,81 @@
+// Floquet & contributions panel: both modes' natural and effective frequencies, beat periods,
+// multipliers, stability and force-term shares, as a table (its own text alternative).
+import { el, rich } from '../dom.js';
+import { fmt, UNITS } from '../format.js';
+import { toQuery } from '../state.js';
+
+export const title = 'Floquet & contributions';
+
+export const ROWS = [
+  ['freq', 'Natural frequency f_k (Hz)'],
+  ['feff', 'Floquet effective frequency (Hz)'],
+  ['favg', 'Averaged-stiffness estimate (Hz)'],
+  ['beat2', 'Beat period vs 2 f_d (s)'],
+  ['beat', 'Beat period vs nearest n·f_d (s)'],
+  ['mult', 'Floquet multipliers λ (per flap period)'],
+  ['mod', 'max |λ|'],
+  ['stable', 'Stability'],
+  ['euler', 'Euler share (%)'],
+  ['centrifugal', 'Centrifugal share (%)'],
+  ['coriolis', 'Coriolis share (%)'],
+  ['sum', 'Sum of shares (%)'],
+  ['peak', `Peak |q| total (${UNITS.q.label})`],
+];
+
+export function mount(ctx) {
+  const { store, section } = ctx;
+  const table = el('table', { class: 'wl-numtable' });
+  table.append(el('caption', { class: 'wl-sr', text: 'Floquet analysis and force-term shares of both modes for the current parameters' }));
+  table.append(el('thead', {}, el('tr', {}, el('th', { scope: 'col', text: 'Quantity' }), el('th', { scope: 'col', text: 'Mode 1' }), el('th', { scope: 'col', text: 'Mode 2' }))));
+  const tbody = el('tbody');
+  const cells = {};
+  for (const [key, label] of ROWS) {
+    const tr = el('tr', {}, el('th', { scope: 'row' }, rich(label)));
+    for (const k of [0, 1]) {
+      const td = el('td', { 'data-field': `${key}-${k}`, text: '—' });
+      cells[`${key}-${k}`] = td;
+      tr.append(td);
+    }
+    tbody.append(tr);
+  }
+  table.append(tbody);
+  section.append(table, el('p', { class: 'wl-note', rich: 'Shares are 100·Σq_{term}^2/Σq_{total}^2 (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms).' }));
+
+  const draw = (s) => {
+    if (!s.result) return;
+    const a = s.result.analysis;
+    const set = (key, k, text) => { if (cells[`${key}-${k}`]) cells[`${key}-${k}`].textContent = text; };
+    a.sim.modes.slice(0, 2).forEach((m, k) => {
+      const f = m.floquet;
+      const c = m.contribution_percent;
+      set('freq', k, fmt(m.freq_hz, 4));
+      set('feff', k, fmt(f.effective_freq_hz, 6));
+      set('favg', k, fmt(f.averaged_freq_hz, 6));
+      set('beat2', k, f.beat_period_vs_2fd_s == null ? '— (none)' : fmt(f.beat_period_vs_2fd_s, 4));
+      set('beat', k, f.beat_period_s == null ? '— (none)' : `${fmt(f.beat_period_s, 4)} (n = ${f.beat_harmonic})`);
+      set('mult', k, f.multipliers.map(([re, im]) => `${fmt(re, 4)}${im >= 0 ? ' + ' : ' − '}${fmt(Math.abs(im), 4)}i`).join(', '));
+      set('mod', k, fmt(f.max_modulus, 8));
+      set('stable', k, f.stable ? `stable (growth ${fmt(f.growth_rate_per_s, 2)} 1/s)` : `UNSTABLE (growth ${fmt(f.growth_rate_per_s, 3)} 1/s)`);
+      set('euler', k, fmt(c.euler, 4));
+      set('centrifugal', k, fmt(c.centrifugal, 4));
+      set('coriolis', k, fmt(c.coriolis, 4));
+      set('sum', k, fmt(c.euler + c.centrifugal + c.coriolis, 4));
+      let peak = 0;
+      for (const v of m.q.total) peak = Math.max(peak, Math.abs(v));
+      set('peak', k, fmt(peak, 4));
+    });
+    table.dataset.selected = String(s.result.k + 1);
+  };
+  const unsub = store.subscribe(['result'], draw);
+  const rows = () => ROWS.map(([key, label]) => [label, cells[`${key}-0`].textContent, cells[`${key}-1`].textContent]);
+  ctx.registerExport('numbers', {
+    csv: () => {
+      const s = store.get();
+      if (!s.result) return null;
+      const case_ = `wingbeat lab; ${toQuery(s)}`;
+      return ['# ' + case_, 'quantity,mode 1,mode 2', ...rows().map((r) => r.map((c) => `"${c.replace(/"/g, '""')}"`).join(','))].join('\n') + '\n';
+    },
+    table: () => (store.get().result ? [['Quantity', 'Mode 1', 'Mode 2'], ...rows()] : null),
+  });
+  return { cells, destroy: unsub };
+}

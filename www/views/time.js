@@ -1,0 +1,274 @@
+// Responses panel (paper Fig. 5) — the beat made visible: the partial and total responses of
+// the selected mode in a window of about three beats (full resolution), the beat period marked
+// (shaded from an envelope maximum to the next, T_{beat} = 1/|f_{eff} − n·f_d| from the Floquet
+// numbers), an overview of the whole run to move the window, the force-term shares, a hint
+// line (mouse, keyboard or touch wording) and a click-to-pose link to the 3-D wing.
+import { el, rich, isTouch } from '../dom.js';
+import { fmt, plain, UNITS } from '../format.js';
+import { decimate } from '../decimate.js';
+import { beatInfo, beatWindow, shares, smooth } from '../beat.js';
+import { linePlot, color } from '../plot.js';
+import { toQuery, describe } from '../state.js';
+
+export const title = 'Responses and the beat (paper Fig. 5)';
+
+const Q = UNITS.q.label;
+
+export function mount(ctx) {
+  const { store, section } = ctx;
+  const touch = isTouch();
+  const beatBox = el('div', { class: 'wl-beat', 'aria-live': 'polite' });
+  const hint = el('p', {
+    class: 'wl-hint',
+    text: touch
+      ? 'Drag across the plot to zoom in, double-tap for the whole run; drag on the strip below to move the window; tap a curve’s name to hide it; tap the plot to show that instant in the 3-D wing.'
+      : 'Drag across the plot to zoom in, double-click for the whole run; drag on the strip below to move the window; click a curve’s name to hide it; click the plot to show that instant in the 3-D wing. Keys on the focused plot: ← → pan, + − zoom, 0 back to three beats.',
+  });
+  section.append(beatBox, hint);
+  let beat = null;
+  let bw = null;
+  let win = null;
+  let userWin = false;
+  let overview = null;
+  const main = linePlot(section, {
+    name: 'time',
+    title: 'Responses',
+    ariaLabel: 'Responses plot: partial responses to the Euler, centrifugal and Coriolis forces, the total response and the Coriolis envelope over time',
+    xLabel: 't',
+    xUnit: 's',
+    yLabel: `q (${Q})`,
+    series: [
+      { label: 'Euler response', color: color('euler'), width: 1 },
+      { label: 'Centrifugal response', color: color('centrifugal'), width: 1 },
+      { label: 'Coriolis response', color: color('coriolis'), width: 1.6 },
+      { label: 'Total', color: color('total'), width: 1.2 },
+      { label: 'Coriolis envelope ± (one-flap average)', color: color('envelope'), width: 2, with: [5] },
+      { label: '−envelope', color: color('envelope'), width: 2, legend: false },
+    ],
+    height: 230,
+    bands: () => (bw && bw.mark && beat ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []),
+    markers: () => {
+      const out = [];
+      if (bw && bw.mark && beat) {
+        const [x0, x1] = main.xWindow();
+        for (let j = -40; j <= 40; j++) {
+          const x = bw.mark[0] + j * beat.period;
+          if (j !== 0 && j !== 1 && x >= x0 && x <= x1) out.push({ x, color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
+        }
+      }
+      const t3 = store.get().t3d;
+      if (t3 != null) out.push({ x: t3, label: '3-D t', color: color('cursor'), width: 1.5 });
+      return out;
+    },
+    onReset: () => resetWindow(),
+    onUser: (what) => { if (what !== 'reset') userWin = true; },
+    hooks: {
+      // a drag across the plot zooms (uPlot sets the scale itself): the user's window from now on
+      setSelect: [(u) => { if (u.select.width > 2) userWin = true; }],
+      setScale: [
+        (u, key) => {
+          if (key !== 'x' || u.scales.x.min == null) return;
+          win = [u.scales.x.min, u.scales.x.max];
+          if (overview) overview.redraw();
+        },
+      ],
+    },
+  });
+  // Click (not drag) on the plot: show that instant in the 3-D wing.
+  let down = null;
+  main.u.over.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; });
+  main.u.over.addEventListener('pointerup', (e) => {
+    if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4) {
+      const t = main.u.posToVal(e.offsetX, 'x');
+      if (Number.isFinite(t)) store.set({ t3d: Math.max(0, t), playing: false });
+    }
+    down = null;
+  });
+  main.box.title = touch ? 'Tap to show this instant in the 3-D wing' : 'Click to show this instant in the 3-D wing';
+
+  overview = linePlot(section, {
+    name: 'time-overview',
+    title: 'Whole run',
+    ariaLabel: 'Overview of the whole run (total response and envelope); the shaded window is what the responses plot shows',
+    xLabel: 't',
+    xUnit: 's',
+    yLabel: '',
+    series: [
+      { label: 'Total', color: '#777', width: 1, legend: false },
+      { label: 'Envelope', color: color('envelope'), width: 1, legend: false },
+    ],
+    height: 64,
+    keys: false,
+    bands: () => (win ? [{ x0: win[0], x1: win[1], fill: 'rgba(31,95,191,0.18)' }] : []),
+    cursor: { drag: { x: true, y: false, setScale: false } },
+    hooks: {
+      setSelect: [
+        (u) => {
+          const px = u.select.width;
+          const a = u.posToVal(u.select.left, 'x');
+          const b = u.posToVal(u.select.left + px, 'x');
+          u.setSelect({ left: 0, width: 0, top: 0, height: 0 }, false);
+          if (!(b > a) || px < 3 || b - a < 1e-4) return;
+          userWin = true;
+          setWindow([a, b]);
+        },
+      ],
+    },
+  });
+  overview.box.classList.add('wl-overview');
+  // A click on the overview centres the window there.
+  let odown = null;
+  overview.u.over.addEventListener('pointerdown', (e) => { odown = [e.clientX, e.offsetX]; });
+  overview.u.over.addEventListener('pointerup', (e) => {
+    if (odown && Math.abs(e.clientX - odown[0]) < 4 && win) {
+      const c = overview.u.posToVal(e.offsetX, 'x');
+      const w = win[1] - win[0];
+      userWin = true;
+      setWindow([c - w / 2, c + w / 2]);
+    }
+    odown = null;
+  });
+
+  const btnBeats = el('button', { type: 'button', class: 'wl-small', text: 'Three beats', onclick: () => resetWindow() });
+  const btnAll = el('button', { type: 'button', class: 'wl-small', text: 'Whole run', onclick: () => { userWin = true; setWindow(null); } });
+  const sharesBox = el('div', { class: 'wl-shares' });
+  section.append(el('div', { class: 'wl-timebar' }, btnBeats, btnAll), sharesBox);
+
+  function fullRange() {
+    const t = store.get().result.analysis.sim.t;
+    return [t[0], t[t.length - 1]];
+  }
+  function setWindow(w) {
+    const [lo, hi] = fullRange();
+    let [a, b] = w || [lo, hi];
+    const span = Math.min(b - a, hi - lo);
+    if (a < lo) { a = lo; b = lo + span; }
+    if (b > hi) { b = hi; a = hi - span; }
+    main.u.setScale('x', { min: a, max: b });
+    win = [a, b];
+    if (overview) overview.redraw();
+  }
+  function resetWindow() {
+    userWin = false;
+    if (bw) setWindow([bw.x0, bw.x1]);
+  }
+
+  let beatSig = '';
+  let sharesSig = '';
+  function drawBeat(a, k, s) {
+    const b = beat;
+    const m = a.sim.modes[k];
+    const sig = `${k}|${b.period}|${b.fEff}|${b.n}|${b.fd}|${b.stable}|${b.maxModulus}|${s.gamma0 === 0}`;
+    if (sig === beatSig) return; // unchanged text: no DOM churn (and no repeated live-region announcement)
+    beatSig = sig;
+    beatBox.replaceChildren();
+    beatBox.dataset.beatPeriod = b.period == null ? '' : String(b.period);
+    const p = (markup) => el('p', {}, rich(markup));
+    if (b.period == null) {
+      beatBox.append(p(`**No beat in mode ${k + 1}.**`.replace(/\*\*/g, '')));
+      beatBox.append(p(b.stable ? `The effective frequency f_{eff} = ${fmt(b.fEff, 6)} Hz sits on a flap harmonic, so there is nothing to beat against.` : `The largest Floquet multiplier |λ| = ${fmt(b.maxModulus, 6)} exceeds 1: the response grows every flap (a parametric instability) instead of beating.`));
+      return;
+    }
+    const strong = el('strong', { class: 'wl-beat-value', 'data-beat': String(b.period) }, rich(`T_{beat} = ${fmt(b.period, 4)} s`));
+    const lead = el('p', { class: 'wl-beat-lead' },
+      'The beat: the responses — clearest in the Coriolis envelope (red) — swell and fade once every ',
+      strong,
+      ' (shaded; dotted lines repeat it).');
+    const formula = p(
+      `The wing rings at its effective natural frequency f_{eff} = ${fmt(b.fEff, 6)} Hz while the flapping drives it at ${b.n}·f_d = ${b.n} × ${fmt(b.fd, 4)} Hz = ${fmt(b.fHarm, 6)} Hz; the two drift in and out of step: ` +
+      `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(b.fEff, 6)} − ${fmt(b.fHarm, 6)}| Hz = ${fmt(b.period, 4)} s.`,
+    );
+    formula.className = 'wl-beat-formula';
+    beatBox.append(lead, formula);
+    if (s.gamma0 === 0) beatBox.append(p('With γ_0 = 0 there is no Coriolis force (the Coriolis response is zero); the other responses still beat with this period.'));
+    if (!b.stable) beatBox.append(p(`Unstable: |λ| = ${fmt(b.maxModulus, 6)} > 1, the response grows.`));
+    void m;
+  }
+
+  function drawShares(a, k) {
+    const sig = `${k}|${shares(a, k).map((x) => fmt(x.value, 3)).join()}`;
+    if (sig === sharesSig) return;
+    sharesSig = sig;
+    sharesBox.replaceChildren(el('h3', { text: `Where mode ${k + 1}’s response comes from (share of Σq², paper §4.1)` }));
+    const list = el('ul', { class: 'wl-share-list' });
+    let sum = 0;
+    for (const sh of shares(a, k)) {
+      sum += sh.value;
+      const w = Math.max(0, Math.min(100, sh.value));
+      list.append(el('li', { 'data-share': sh.key },
+        el('span', { class: 'wl-share-name', text: sh.label }),
+        el('span', { class: 'wl-share-bar', 'aria-hidden': 'true' }, el('span', { style: `width:${w}%;background:${color(sh.key)}` })),
+        el('span', { class: 'wl-share-val', text: `${fmt(sh.value, 3)} %` })));
+    }
+    sharesBox.append(list, el('p', { class: 'wl-note', text: `Sum ${fmt(sum, 3)} %: the partial responses are not orthogonal, so shares need not add up to 100 %.` }));
+  }
+
+  const draw = (s) => {
+    const r = s.result;
+    if (!r) return;
+    const a = r.analysis;
+    const k = r.k;
+    const m = a.sim.modes[k];
+    // The core's envelope, averaged over one flap period for display (its flap-rate ripple hides the beat).
+    const env = smooth(a.envelope[k], a.sim.sample_rate_hz / a.sim.flap_freq_hz);
+    const neg = new Float64Array(env.length);
+    for (let i = 0; i < env.length; i++) neg[i] = -env[i];
+    beat = beatInfo(a, k);
+    bw = beatWindow(a.sim.t, env, beat.period);
+    const [lo, hi] = [a.sim.t[0], a.sim.t[a.sim.t.length - 1]];
+    let w = userWin && win ? [Math.max(lo, win[0]), Math.min(hi, win[1])] : [bw.x0, bw.x1];
+    if (!(w[1] > w[0])) w = [bw.x0, bw.x1];
+    main.setData([a.sim.t, m.q.euler, m.q.centrifugal, m.q.coriolis, m.q.total, env, neg], w);
+    win = w;
+    overview.setData(decimate(a.sim.t, [m.q.total, env], Math.max(200, Math.min(800, Math.round(overview.u.width || 400)))));
+    drawBeat(a, k, s);
+    drawShares(a, k);
+    const peak = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
+    main.setSummary(
+      `Mode ${k + 1}, window ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s of a ${fmt(hi, 3)} s run. Peak |q| (${plain(Q)}): total ${fmt(peak(m.q.total), 3)}, Euler ${fmt(peak(m.q.euler), 3)}, centrifugal ${fmt(peak(m.q.centrifugal), 3)}, Coriolis ${fmt(peak(m.q.coriolis), 3)}; largest Coriolis envelope ${fmt(peak(env), 3)}. ` +
+      (beat.period == null ? 'No beat.' : `Beat period ${fmt(beat.period, 4)} s, marked from ${fmt(bw.mark ? bw.mark[0] : NaN, 4)} s.`),
+    );
+    overview.setSummary(`Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.`);
+  };
+  const unsub = [
+    store.subscribe(['result'], draw),
+    store.subscribe(['t3d'], () => main.redraw()),
+  ];
+
+  ctx.registerPlot('time', main);
+  ctx.registerExport('time', {
+    csv: () => {
+      const s = store.get();
+      if (!s.result) return null;
+      const a = s.result.analysis, k = s.result.k, m = a.sim.modes[k];
+      return ctx.toCSV(
+        [
+          { name: 't', unit: 's', values: a.sim.t },
+          { name: 'euler_response', unit: UNITS.q.csv, values: m.q.euler },
+          { name: 'centrifugal_response', unit: UNITS.q.csv, values: m.q.centrifugal },
+          { name: 'coriolis_response', unit: UNITS.q.csv, values: m.q.coriolis },
+          { name: 'total_response', unit: UNITS.q.csv, values: m.q.total },
+          { name: 'coriolis_envelope', unit: UNITS.q.csv, values: a.envelope[k] },
+        ],
+        [`wingbeat lab; ${toQuery(s)}`, `mode ${k + 1}: ${m.name}; full resolution (the plot is min/max-decimated)`],
+      );
+    },
+    figure: () => {
+      const s = store.get();
+      if (!s.result) return null;
+      const a = s.result.analysis;
+      return {
+        title: `Responses of mode ${s.result.k + 1} and the beat (paper Fig. 5)`,
+        params: describe(s),
+        x: a.sim.t,
+        xRange: main.xWindow(),
+        xLabel: 't (s)',
+        yLabel: `q (${Q})`,
+        series: main.exportSeries(),
+        bands: bw && bw.mark && beat ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : [],
+        note: beat && beat.period != null ? `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(beat.fEff, 6)} − ${beat.n}×${fmt(beat.fd, 4)}| Hz = ${fmt(beat.period, 4)} s (Floquet). ` + (s.modes === 'paper' ? 'q in paper units (Table 4 is not SI).' : 'q in SI.') : '',
+      };
+    },
+  });
+  return { main, overview, resetWindow, destroy: () => { unsub.forEach((f) => f()); main.destroy(); overview.destroy(); } };
+}
