@@ -4,7 +4,8 @@
 #   native  cargo test --all-features (core, CLI, FE backends, renderer goldens on lavapipe,
 #           and the wasm API's plain-Rust helpers)
 #   wasm    wasm-bindgen-test suites: tests/wasm_api.rs in node, tests/wasm_browser.rs in Chromium
-#   e2e     node --test: tests/js (state parsing) and tests/e2e (Playwright + Debian Chromium)
+#   e2e     build the lab, type-check www/ (npm run check:js: tsc, ~2-3 s), then node --test:
+#           tests/js (unit + the real wasm in node) and tests/e2e (Playwright + Debian Chromium)
 # Installs what is missing first (scripts/ensure-tools.sh --browser). Honours CARGO_TARGET_DIR.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,6 +37,8 @@ wasm() {
 e2e() {
   echo "== e2e: build the lab, then node --test tests/js tests/e2e"
   bash scripts/build-web.sh www
+  echo "== e2e: type-check the lab's JavaScript (tsc --noEmit over www/ against pkg/wingbeat.d.ts and uPlot's types)"
+  npm run --silent check:js
   node --test --test-concurrency=1 tests/js/ tests/e2e/
 }
 

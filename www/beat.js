@@ -1,11 +1,22 @@
+// @ts-check
 // The beat, made explicit (pure; unit-tested in tests/js/beat.test.mjs): the Floquet beat of
 // the selected mode, T_beat = 1 / |f_eff − n·f_d| with the harmonic n nearest f_eff, the
 // default window of the responses plot (about three beats, starting on an envelope maximum),
 // and the force-term shares. All numbers come from the analysis; nothing is canned.
 
+/** @typedef {import('./pkg/wingbeat.js').Analysis} Analysis */
+
 /**
- * { fEff, n, fd, fHarm, diff, period, stable, text, formula } for mode k of an analysis.
- * `period` is the Floquet `beat_period_s` itself (null when there is no beat).
+ * @typedef {{ fEff: number, n: number, fd: number, fHarm: number | null, diff: number | null,
+ *   period: number | null, stable: boolean, maxModulus: number, fk: number }} BeatInfo
+ */
+
+/**
+ * The beat of mode k of an analysis. `period` is the Floquet `beat_period_s` itself (null when
+ * there is no beat).
+ * @param {Analysis} a
+ * @param {number} k
+ * @returns {BeatInfo}
  */
 export function beatInfo(a, k) {
   const m = a.sim.modes[k];
@@ -19,7 +30,12 @@ export function beatInfo(a, k) {
   return { fEff, n, fd, fHarm, diff, period, stable: f.stable, maxModulus: f.max_modulus, fk: m.freq_hz };
 }
 
-/** Index of the largest value of y on [i0, i1). */
+/**
+ * Index of the largest value of y on [i0, i1).
+ * @param {ArrayLike<number>} y
+ * @param {number} i0
+ * @param {number} i1
+ */
 function argmax(y, i0, i1) {
   let best = Math.max(0, i0);
   for (let i = best + 1; i < Math.min(y.length, i1); i++) if (y[i] > y[best]) best = i;
@@ -31,6 +47,11 @@ function argmax(y, i0, i1) {
  * beat [tA, tB] with tB = tA + T_beat, tA an envelope maximum after the first beat. Without a
  * beat (or when three beats do not fit) the whole run. `measured` is the time from tA to the
  * next envelope maximum (≈ T_beat).
+ * @param {ArrayLike<number>} t
+ * @param {ArrayLike<number> | null} env
+ * @param {number | null} period
+ * @param {{ beats?: number }} [o]
+ * @returns {{ x0: number, x1: number, mark: [number, number] | null, measured: number | null }}
  */
 export function beatWindow(t, env, period, { beats = 3 } = {}) {
   const n = t.length;
@@ -40,7 +61,7 @@ export function beatWindow(t, env, period, { beats = 3 } = {}) {
     return { x0: t0, x1: t1, mark: null, measured: null };
   }
   const dt = dur / (n - 1);
-  const idx = (tt) => Math.round((tt - t0) / dt);
+  const idx = (/** @type {number} */ tt) => Math.round((tt - t0) / dt);
   // The envelope maximum within the second beat: the beat has built up, and a full window follows.
   const a = argmax(env, idx(t0 + period), idx(t0 + 2 * period));
   const tA = t[a];
@@ -50,7 +71,11 @@ export function beatWindow(t, env, period, { beats = 3 } = {}) {
   return { x0, x1, mark: [tA, tA + period], measured: t[b] - tA };
 }
 
-/** Force-term shares (paper §4.1) of mode k: [{ key, label, value }]. */
+/**
+ * Force-term shares (paper §4.1) of mode k: [{ key, label, value }].
+ * @param {Analysis} a
+ * @param {number} k
+ */
 export function shares(a, k) {
   const c = a.sim.modes[k].contribution_percent;
   return [
@@ -64,6 +89,8 @@ export function shares(a, k) {
  * A display envelope: `env` averaged over a sliding window of `width` samples (one flap
  * period), centred, so the ripple at the flap frequency and its harmonics cancels and the
  * beat's swell and fade remain. The raw envelope stays what the CSV exports.
+ * @param {ArrayLike<number>} env
+ * @param {number} width
  */
 export function smooth(env, width) {
   const n = env.length;

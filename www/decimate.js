@@ -1,3 +1,4 @@
+// @ts-check
 // Min/max decimation of several series onto a shared x grid: the one implementation, used by
 // the plots (www/plot.js, views) and by the worker (www/worker.js). Pure; unit-tested in
 // tests/js/decimate.test.mjs.

@@ -1,3 +1,4 @@
+// @ts-check
 // DOM helpers for the lab's views: element creation, rich-text labels (sub/superscripts from
 // www/format.js markup), the stylesheet loader, input-kind detection and visually hidden text.
 import { parseRich } from './format.js';
@@ -8,9 +9,15 @@ const HERE = new URL('.', import.meta.url);
  * el('button', { class: 'x', text: 'Run', onclick, 'aria-label': '…' }, ...children).
  * `text` sets textContent; `rich` renders markup with <sub>/<sup>; aria-*, data-*, role, for,
  * hidden, tabindex are attributes (false/null omit them); everything else is a property.
+ * @template {keyof HTMLElementTagNameMap} K
+ * @param {K} tag
+ * @param {Record<string, any>} [props] values of any kind: properties, handlers, attributes
+ * @param {...(Node | string | null | undefined | false)} children
+ * @returns {HTMLElementTagNameMap[K]}
  */
 export function el(tag, props = {}, ...children) {
   const e = document.createElement(tag);
+  const asProps = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (e));
   for (const [k, v] of Object.entries(props)) {
     if (k === 'class') e.className = v;
     else if (k === 'text') e.textContent = v;
@@ -18,28 +25,39 @@ export function el(tag, props = {}, ...children) {
     else if (k === 'style' && typeof v === 'string') e.style.cssText = v;
     else if (k.startsWith('aria-') || k.startsWith('data-') || ['role', 'for', 'hidden', 'tabindex', 'title', 'scope', 'colspan'].includes(k)) {
       if (v !== false && v != null) e.setAttribute(k, v === true ? '' : String(v));
-    } else e[k] = v;
+    } else asProps[k] = v;
   }
   for (const c of children) if (c != null && c !== false) e.append(c);
   return e;
 }
 
-/** A DocumentFragment for rich markup ("f_d", "kg^½·m"): text nodes and <sub>/<sup>. */
+/**
+ * A DocumentFragment for rich markup ("f_d", "kg^½·m"): text nodes and <sub>/<sup>.
+ * @param {string} s
+ */
 export function rich(s) {
   const f = document.createDocumentFragment();
   for (const r of parseRich(s)) {
     if (r.kind === 'normal') f.append(r.text);
-    else f.append(el(r.kind, { text: r.text }));
+    else f.append(el(/** @type {'sub' | 'sup'} */ (r.kind), { text: r.text }));
   }
   return f;
 }
 
-/** Replaces an element's content by rich markup. */
+/**
+ * Replaces an element's content by rich markup.
+ * @param {Element} node
+ * @param {string} s
+ */
 export function setRich(node, s) {
   node.replaceChildren(rich(s));
 }
 
 /** Text only for assistive technology (visually hidden). */
+/**
+ * @param {keyof HTMLElementTagNameMap} [tag]
+ * @param {Record<string, any>} [props]
+ */
 export function srOnly(tag = 'p', props = {}) {
   return el(tag, { ...props, class: `wl-sr ${props.class || ''}`.trim() });
 }
@@ -53,7 +71,7 @@ export function isTouch() {
 export function ensureStyles() {
   for (const href of ['vendor/uPlot.min.css', 'style.css']) {
     const url = new URL(href, HERE).href;
-    if (![...document.querySelectorAll('link[rel=stylesheet]')].some((l) => l.href === url)) {
+    if (![...document.querySelectorAll('link[rel=stylesheet]')].some((l) => /** @type {HTMLLinkElement} */ (l).href === url)) {
       document.head.append(el('link', { rel: 'stylesheet', href: url }));
     }
   }

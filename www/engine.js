@@ -1,3 +1,4 @@
+// @ts-check
 // The lab's engine: the ONLY module that talks to the wasm module and to the Web Worker.
 // Views never call wasm; they read results from the store (www/store.js), which www/lab.js
 // fills from this engine. Unit-tested against a fake wasm object and a fake worker in
@@ -12,19 +13,35 @@
 // Results carry the kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`),
 // from wasm `analyze` when it provides them and otherwise from ONE `anglesAt` call per
 // recompute (made lazily, on first read), so the 3-D view never crosses into wasm per frame.
-import { toConfig, FE_LAB_INPUT } from './state.js';
+import { overridesOf, FE_LAB_INPUT, SAMPLE_RATE_HZ } from './state.js';
+
+/** @typedef {typeof import('./pkg/wingbeat.js')} Wasm the wasm module's exports (www/pkg/wingbeat.d.ts) */
+/** @typedef {import('./pkg/wingbeat.js').SimConfig} SimConfig */
+/** @typedef {import('./pkg/wingbeat.js').Analysis} Analysis */
+/** @typedef {import('./pkg/wingbeat.js').AngleSeries} AngleSeries */
+/** @typedef {import('./pkg/wingbeat.js').FeModesResult} FeModesResult */
+/**
+ * One live analysis: the config, the selected mode index k, the URL parameters it came from,
+ * the wasm result, the angles on `analysis.sim.t` and the wasm time.
+ * @typedef {{ cfg: SimConfig, k: number, params: import('./state.js').Params, analysis: Analysis, angles: AngleSeries | null, compute_ms: number }} LiveResult
+ */
+/** @typedef {{ resolve: (v: { result: any, ms: number }) => void, reject: (e: Error) => void, progress: (done: number, total: number) => void, kind: string }} Job */
 
 const HERE = new URL('.', import.meta.url);
 
+/** @type {Promise<Wasm> | null} */
 let shared = null;
 /** Loads and instantiates the wasm module once per page (the module is stateless). */
 export function loadWasm() {
   if (!shared) {
-    shared = import(new URL('pkg/wingbeat.js', HERE).href).then(async (m) => {
+    /** @type {Promise<Wasm>} */
+    const p = import(new URL('pkg/wingbeat.js', HERE).href).then(async (/** @type {Wasm} */ m) => {
       await m.default({ module_or_path: new URL('pkg/wingbeat_bg.wasm', HERE) });
       return m;
     });
-    shared.catch(() => { shared = null; });
+    shared = p;
+    p.catch(() => { shared = null; });
+    return p;
   }
   return shared;
 }
@@ -48,23 +65,7 @@ export function splitAngles(flat) {
 }
 
 /**
- * Brings an `analyze` result to the current API contract, whichever wasm build produced it:
- * `spectra[k].stiffness_force` and `forces[k].stiffness_force` (older builds: `stiffness`).
- * The old key stays as an alias so either name reads the same series.
- */
-export function normalise(a) {
-  for (const group of [a.spectra || [], a.forces || []]) {
-    for (const s of group) {
-      if (!s) continue;
-      if (s.stiffness_force == null && s.stiffness != null) s.stiffness_force = s.stiffness;
-      if (s.stiffness == null && s.stiffness_force != null) s.stiffness = s.stiffness_force;
-    }
-  }
-  return a;
-}
-
-/**
- * @param {{ load?: () => Promise<object>, createWorker?: () => Worker, feInput?: object }} [deps]
+ * @param {{ load?: () => Promise<Wasm>, createWorker?: () => Worker, feInput?: import('./pkg/wingbeat.js').FemInput }} [deps]
  *   `load` resolves to the wasm module's exports (default: loadWasm); `createWorker` makes the
  *   study worker (default: www/worker.js). Tests pass fakes.
  */
@@ -72,12 +73,18 @@ export function createEngine(deps = {}) {
   const load = deps.load || loadWasm;
   const createWorker = deps.createWorker || defaultWorker;
   const feInput = deps.feInput || FE_LAB_INPUT;
+  /** @type {Wasm | null} */
   let wb = null;
+  /** @type {SimConfig | null} */
   let base = null;
+  /** @type {Worker | null} */
   let worker = null;
+  /** @type {Map<number, Job>} */
   const jobs = new Map();
   let jobId = 0;
+  /** @type {Promise<FeModesResult> | null} */
   let fePromise = null;
+  /** @type {FeModesResult | null} */
   let fe = null;
 
   function failAll(why) {
@@ -137,38 +144,57 @@ export function createEngine(deps = {}) {
       return wb && wb.WingView;
     },
     limits() {
+      if (!wb) throw new Error('engine: wasm not loaded');
       return wb.limits();
     },
-    /** The core's table of the lab's numeric parameters (wasm `parameters()`), or null in older builds. */
+    /** The core's table of the lab's numeric parameters (wasm `parameters()`; null before load). */
     parameters() {
-      return wb && typeof wb.parameters === 'function' ? wb.parameters() : null;
+      return wb ? wb.parameters() : null;
     },
-    /** The SimConfig for URL parameters: the paper table, or the FE wing's modes. */
+    /**
+     * The SimConfig for URL parameters, built by the core (wasm `applyOverrides`): the paper
+     * case (or, with modes=fe once computed, the FE wing's modes) at the lab's sample rate, with
+     * every numeric parameter applied by its key. Throws the wasm error (naming the key) for a
+     * value the core rejects.
+     */
+    /**
+     * @param {import('./state.js').Params} params URL parameters (www/state.js)
+     * @returns {SimConfig}
+     */
     config(params) {
-      const b = params.modes === 'fe' && fe ? { modes: fe.modes } : base;
-      return toConfig(params, b);
+      if (!wb) throw new Error('engine: wasm not loaded');
+      const b = { ...base, sample_rate_hz: SAMPLE_RATE_HZ };
+      if (params.modes === 'fe' && fe) b.modes = fe.modes;
+      return wb.applyOverrides(b, overridesOf(params));
     },
     /**
      * The live analysis of the selected mode: { cfg, k, analysis, angles, compute_ms }.
      * Throws the wasm error (its message names the field) for a rejected config.
      */
+    /**
+     * @param {import('./state.js').Params} params URL parameters (www/state.js)
+     * @returns {LiveResult}
+     */
     analyze(params) {
-      if (!wb) throw new Error('engine: wasm not loaded');
+      const w = wb;
+      if (!w) throw new Error('engine: wasm not loaded');
       const cfg = engine.config(params);
       const k = Number(params.mode) - 1;
       const t0 = now();
-      const a = normalise(wb.analyze(cfg, { detrend: params.detrend, segment_len: 8192 }, k));
+      const a = w.analyze(cfg, { detrend: params.detrend, segment_len: 8192 }, k);
       const t1 = now();
-      const res = { cfg, k, params, analysis: a, compute_ms: t1 - t0 };
+      /** @type {LiveResult} */
+      const res = { cfg, k, params, analysis: a, angles: null, compute_ms: t1 - t0 };
+      /** @type {AngleSeries | null} */
       let angles = a.angles && a.angles.alpha ? a.angles : null;
-      if (angles || typeof wb.anglesAt !== 'function') res.angles = angles;
+      if (angles || typeof w.anglesAt !== 'function') res.angles = angles;
       else {
         // Older wasm builds: ONE anglesAt call for the whole run, made when a view first reads
         // the angles (the 3-D view, on its next frame), so the slider's redraw does not wait.
         Object.defineProperty(res, 'angles', {
           enumerable: true,
           get() {
-            if (!angles) angles = splitAngles(wb.anglesAt(cfg, a.sim.t));
+            if (!angles) angles = splitAngles(w.anglesAt(cfg, a.sim.t));
             return angles;
           },
         });
@@ -178,6 +204,12 @@ export function createEngine(deps = {}) {
     /**
      * Runs a study in the worker: kind ∈ sweep | icmap | damping | resonance | reproduce | fe (see
      * www/worker.js). Returns { id, promise } where promise resolves to { result, ms }.
+     */
+    /**
+     * @param {string} kind
+     * @param {Record<string, any>} [payload]
+     * @param {(done: number, total: number) => void} [onProgress]
+     * @returns {{ id: number, promise: Promise<{ result: any, ms: number }> }}
      */
     run(kind, payload = {}, onProgress = () => {}) {
       const id = ++jobId;
@@ -196,6 +228,9 @@ export function createEngine(deps = {}) {
      * The resonance map (wasm `resonanceMap`, run in the worker): Floquet f_eff and largest
      * |multiplier| of every mode over opts = { from_hz, to_hz, points, alpha0_values? }.
      * Same return value as run(): { id, promise } (cancel with cancel(id)).
+     * @param {SimConfig} cfg
+     * @param {import('./pkg/wingbeat.js').ResonanceOptions} opts
+     * @param {(done: number, total: number) => void} [onProgress]
      */
     resonanceMap(cfg, opts, onProgress = () => {}) {
       return engine.run('resonance', { cfg, opts }, onProgress);
@@ -220,11 +255,14 @@ export function createEngine(deps = {}) {
     ensureFe() {
       if (fe) return Promise.resolve(fe);
       if (!fePromise) {
-        fePromise = engine.run('fe', { input: feInput }).promise.then(({ result }) => {
-          fe = result;
+        /** @type {Promise<FeModesResult>} */
+        const p = engine.run('fe', { input: feInput }).promise.then(({ result }) => {
+          fe = /** @type {FeModesResult} */ (result);
           return fe;
         });
-        fePromise.catch(() => { fePromise = null; });
+        fePromise = p;
+        p.catch(() => { fePromise = null; });
+        return p;
       }
       return fePromise;
     },

@@ -1,3 +1,4 @@
+// @ts-check
 // Guided experiments: one-click parameter sets, each with what to look at and what the model
 // predicts, the prediction computed from the live analysis (never canned numbers). Pure module
 // (no DOM), unit-tested in tests/js/experiments.test.mjs against synthetic fixtures.
@@ -14,7 +15,7 @@
 // still recomputed from whatever the analysis returns.
 
 import { defaults, toQuery } from './state.js';
-import { UNITS } from './format.js';
+import { UNITS, errorText } from './format.js';
 
 /**
  * Compact number formatting in the lab's rich-label markup (www/format.js): exponents as
@@ -373,12 +374,19 @@ export function experiment(id) {
 }
 
 /** The full lab state of an experiment: the paper defaults plus its parameters (panels kept). */
+/**
+ * @param {string} id
+ * @param {string[]} [panels]
+ * @returns {import('./state.js').Params | null}
+ */
 export function experimentState(id, panels) {
   const e = experiment(id);
   if (!e) return null;
   const s = defaults();
-  for (const [k, v] of Object.entries(e.params)) s[k] = v;
-  if (!('mode' in e.params)) s.mode = String((e.mode ?? 0) + 1);
+  /** @type {Record<string, unknown>} */
+  const into = s;
+  for (const [k, v] of Object.entries(e.params)) into[k] = v;
+  if (!('mode' in e.params)) s.mode = (e.mode ?? 0) === 1 ? '2' : '1';
   if (panels) s.panels = panels.slice();
   return s;
 }
@@ -397,7 +405,7 @@ export function predict(id, analysis, ctx = {}) {
   try {
     return e.predict(analysis, ctx);
   } catch (err) {
-    return { lines: [`The prediction could not be computed: ${err && err.message ? err.message : err}`], checks: [], values: {} };
+    return { lines: [`The prediction could not be computed: ${errorText(err)}`], checks: [], values: {} };
   }
 }
 
@@ -422,6 +430,12 @@ export function bands(x, flag) {
  * Flap frequencies where f_{eff} of a mode crosses n·f_d (n = 1..nMax): the resonances
  * (linear interpolation between grid points; NaN values skipped, and with `stable` given, only
  * between two stable points).
+ */
+/**
+ * @param {ArrayLike<number>} fd
+ * @param {ArrayLike<number>} feff
+ * @param {number} [nMax]
+ * @param {ArrayLike<boolean | number> | null} [stable]
  */
 export function resonanceCrossings(fd, feff, nMax = 4, stable = null) {
   const out = [];

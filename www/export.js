@@ -1,3 +1,4 @@
+// @ts-check
 // Exports: CSV text, publishable figures (PNG at 2× and SVG from ONE drawing routine, with
 // title, axes, legend swatches and the parameter line), downloads, and the label placement the
 // live plots share. The drawing code talks to a small "painter" (canvas or SVG), so both files
@@ -70,7 +71,23 @@ function approxWidth(text, size) {
   return [...text].length * size * 0.56;
 }
 
-/** A painter over a CanvasRenderingContext2D (coordinates in CSS pixels; pre-scaled). */
+/**
+ * The 2-D context of a canvas (throws where the browser gives none, e.g. out of memory).
+ * @param {HTMLCanvasElement} c
+ * @returns {CanvasRenderingContext2D}
+ */
+export function context2d(c) {
+  const ctx = c.getContext('2d');
+  if (!ctx) throw new Error('no 2-D canvas context');
+  return ctx;
+}
+
+/** @typedef {(s: string, size: number) => number} MeasureFn text width in CSS px of rich markup at a font size */
+
+/**
+ * A painter over a CanvasRenderingContext2D (coordinates in CSS pixels; pre-scaled).
+ * @param {CanvasRenderingContext2D} ctx
+ */
 export function canvasPainter(ctx) {
   const font = (size, weight = 'normal') => `${weight} ${size}px ${FONT}`;
   return {
@@ -78,7 +95,7 @@ export function canvasPainter(ctx) {
       if (fill) { ctx.fillStyle = fill; ctx.fillRect(x, y, w, h); }
       if (stroke) { ctx.strokeStyle = stroke; ctx.lineWidth = 1; ctx.strokeRect(x + 0.5, y + 0.5, w, h); }
     },
-    line(pts, color, width = 1, dash = null, alpha = 1) {
+    line(pts, color, width = 1, dash = /** @type {number[] | null} */ (null), alpha = 1) {
       if (pts.length < 4) return;
       ctx.save();
       ctx.globalAlpha = alpha;
@@ -98,6 +115,12 @@ export function canvasPainter(ctx) {
       ctx.stroke();
       ctx.restore();
     },
+    /**
+     * @param {number} x
+     * @param {number} y
+     * @param {string} s rich markup
+     * @param {{ size?: number, weight?: string, color?: string, align?: 'left' | 'center' | 'right', baseline?: CanvasTextBaseline, rotate?: number }} [o]
+     */
     text(x, y, s, { size = 12, weight = 'normal', color = '#222', align = 'left', baseline = 'alphabetic', rotate = 0 } = {}) {
       ctx.save();
       ctx.translate(x, y);
@@ -130,15 +153,21 @@ export function canvasPainter(ctx) {
 
 const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 
-/** A painter that builds an SVG document; `toString()` returns it. */
+/**
+ * A painter that builds an SVG document; `toString()` returns it.
+ * @param {number} width
+ * @param {number} height
+ * @param {MeasureFn | null} [measureFn]
+ */
 export function svgPainter(width, height, measureFn = null) {
+  /** @type {string[]} */
   const parts = [];
   const measure = (s, size = 12) => (measureFn ? measureFn(s, size) : parseRich(s).reduce((w, r) => w + approxWidth(r.text, r.kind !== 'normal' ? size * 0.72 : size), 0));
   return {
     rect(x, y, w, h, fill, stroke) {
       parts.push(`<rect x="${x}" y="${y}" width="${w}" height="${h}" fill="${fill || 'none'}"${stroke ? ` stroke="${stroke}"` : ''}/>`);
     },
-    line(pts, color, width = 1, dash = null, alpha = 1) {
+    line(pts, color, width = 1, dash = /** @type {number[] | null} */ (null), alpha = 1) {
       let d = '';
       let pen = false;
       for (let i = 0; i < pts.length; i += 2) {
@@ -345,7 +374,13 @@ export function wrap(p, text, max, size = 12) {
   return lines;
 }
 
-/** The figure as SVG text (width × height CSS px). */
+/**
+ * The figure as SVG text (width × height CSS px).
+ * @param {any} fig a figure description (see drawFigure)
+ * @param {number} [width]
+ * @param {number} [height]
+ * @param {MeasureFn | null} [measureFn]
+ */
 export function figureSVG(fig, width = 900, height = 560, measureFn = null) {
   const p = svgPainter(width, height, measureFn);
   drawFigure(p, fig, width, height);
@@ -357,7 +392,7 @@ export function figurePNG(fig, width = 900, height = 560, scale = 2) {
   const c = document.createElement('canvas');
   c.width = Math.round(width * scale);
   c.height = Math.round(height * scale);
-  const ctx = c.getContext('2d');
+  const ctx = context2d(c);
   ctx.scale(scale, scale);
   drawFigure(canvasPainter(ctx), fig, width, height);
   return new Promise((resolve) => c.toBlob((blob) => resolve({ blob, width: c.width, height: c.height }), 'image/png'));
@@ -368,7 +403,7 @@ export function figurePNG(fig, width = 900, height = 560, scale = 2) {
  * rows: [[cell, …], …]; the first row is the header.
  */
 export function tablePNG(title, params, rows, scale = 2) {
-  const probe = canvasPainter(document.createElement('canvas').getContext('2d'));
+  const probe = canvasPainter(context2d(document.createElement('canvas')));
   const cols = rows[0].length;
   const widths = Array.from({ length: cols }, (_, j) => Math.max(...rows.map((r) => probe.measure(plain(String(r[j])), 12))) + 18);
   const width = Math.max(520, 32 + widths.reduce((a, b) => a + b, 0));
@@ -377,7 +412,7 @@ export function tablePNG(title, params, rows, scale = 2) {
   const c = document.createElement('canvas');
   c.width = width * scale;
   c.height = height * scale;
-  const ctx = c.getContext('2d');
+  const ctx = context2d(c);
   ctx.scale(scale, scale);
   const p = canvasPainter(ctx);
   p.rect(0, 0, width, height, '#fff');

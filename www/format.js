@@ -1,3 +1,4 @@
+// @ts-check
 // Number and unit formatting shared by the views and the exports. Pure (no DOM); unit-tested
 // in tests/js/format.test.mjs.
 //
@@ -44,7 +45,9 @@ const SUP = { '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵
  * one character, or a {braced} group. A lone `_`/`^` at the end is kept as text.
  */
 export function parseRich(s) {
+  /** @type {{ text: string, kind: 'normal' | 'sub' | 'sup' }[]} */
   const runs = [];
+  /** @param {string} text @param {'normal' | 'sub' | 'sup'} kind */
   const push = (text, kind) => {
     if (!text) return;
     const last = runs[runs.length - 1];
@@ -66,7 +69,7 @@ export function parseRich(s) {
         }
       }
       // one code point
-      const cp = String.fromCodePoint(str.codePointAt(i + 1));
+      const cp = String.fromCodePoint(/** @type {number} i + 1 < length */ (str.codePointAt(i + 1)));
       push(cp, kind);
       i += 1 + cp.length;
       continue;
@@ -95,4 +98,15 @@ export function fmtS(v, digits = 4) {
 /** Percent with one decimal. */
 export function pct(v) {
   return Number.isFinite(v) ? `${v.toFixed(1)} %` : '—';
+}
+
+/**
+ * The message of a thrown value (an Error's message, a wasm error's text, anything else as text).
+ * @param {unknown} e
+ * @returns {string}
+ */
+export function errorText(e) {
+  if (e instanceof Error) return e.message;
+  if (e && typeof e === 'object' && 'message' in e) return String(e.message);
+  return String(e);
 }

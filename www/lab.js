@@ -1,10 +1,12 @@
+// @ts-check
 // <wing-lab>: the wingbeat browser lab as a custom element (light DOM, no framework).
 //
 //   <script type="module" src="lab.js"></script>
 //   <wing-lab gamma0="0.1" flap_hz="25" panels="controls,numbers,spectrum"></wing-lab>
 //
 // Module map (model / view split in the manner of PhET sims; each module has one job):
-//   state.js     pure: parameters, URL/attribute parsing and validation, SimConfig (toConfig)
+//   state.js     pure: parameters, URL/attribute parsing and validation, overridesOf (the
+//                SimConfig itself is the core's: engine.config → wasm applyOverrides)
 //   store.js     observable state: get / set(patch) / subscribe(keys, fn); keys = the URL
 //                parameters + result (latest analysis, with angles), fe, t3d (3-D instant),
 //                playing, timing, status
@@ -40,8 +42,8 @@ import { NUMERIC, ENUMS, parsePairs, parseQuery, toQuery, defaults, paramsOf, de
 import { createStore } from './store.js';
 import { createEngine } from './engine.js';
 import { el, ensureStyles } from './dom.js';
-import { plain } from './format.js';
-import { toCSV, download, figurePNG, figureSVG, tablePNG, drawFigure, canvasPainter } from './export.js';
+import { plain, errorText } from './format.js';
+import { toCSV, download, figurePNG, figureSVG, tablePNG, drawFigure, canvasPainter, context2d } from './export.js';
 import * as controls from './views/controls.js';
 import * as numbers from './views/numbers.js';
 import * as time from './views/time.js';
@@ -55,6 +57,42 @@ import * as resonance from './views/resonance.js';
 
 export { loadWasm } from './engine.js';
 
+/**
+ * The store's state: the URL parameters plus what the engine and the views derive.
+ * @typedef {import('./state.js').Params & {
+ *   result: import('./engine.js').LiveResult | null,
+ *   fe: import('./engine.js').FeModesResult | null,
+ *   t3d: number | null,
+ *   playing: boolean,
+ *   timing: { compute: number, draw: number, end: number } | null,
+ *   status: string | null,
+ * }} LabState
+ */
+/** @typedef {ReturnType<typeof import('./plot.js').linePlot>} Plot */
+/**
+ * What a panel registers for export (each optional; `null` when there is nothing to export yet).
+ * @typedef {{ csv?: () => string | null, figure?: () => any, table?: () => any, canvas?: () => HTMLCanvasElement | null }} ExportReg
+ */
+/**
+ * What a view gets from the element (see the module map above).
+ * @typedef {{
+ *   store: import('./store.js').Store<LabState>,
+ *   engine: ReturnType<typeof createEngine>,
+ *   section: HTMLElement,
+ *   uid: string,
+ *   id: (s: string) => string,
+ *   toCSV: typeof toCSV,
+ *   registerPlot: (name: string, plot: Plot) => void,
+ *   registerExport: (name: string, reg: ExportReg) => void,
+ *   exportButtons: (name: string, label: string, kinds?: string[]) => HTMLElement,
+ *   emit: (type: string, detail?: unknown) => void,
+ *   notice: (text: string) => void,
+ *   setParams: (patch: Partial<LabState>) => void,
+ * }} ViewContext
+ */
+/** A mounted view: destroy() always; some views add hooks (startWhenVisible, setLayout, studies …). */
+/** @typedef {{ destroy(): void, [hook: string]: any }} View */
+
 const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance };
 /** DOM (= tab) order of the panels; style.css places them so that it is also the visual order. */
 export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'spectrum', 'numbers', 'strain', 'studies', 'resonance', 'report'];
@@ -63,15 +101,37 @@ const FIG_W = 900, FIG_H = 560;
 let instances = 0;
 
 export class WingLab extends HTMLElement {
+  // Made in connectedCallback / build(), before anything reads them:
+  /** @type {import('./store.js').Store<LabState>} */
+  store;
+  /** @type {ReturnType<typeof createEngine>} */
+  engine;
+  /** @type {HTMLElement} */
+  root;
+  /** @type {HTMLElement} */
+  noticeEl;
+  /** @type {HTMLElement} */
+  errorEl;
+  /** @type {Record<string, HTMLElement>} */
+  panels;
+
   constructor() {
     super();
     this.uid = `wl${++instances}`;
     this.renders = 0;
     this.raf = 0;
+    /** @type {Record<string, View>} */
     this.views = {};
+    /** @type {Record<string, ExportReg>} */
     this.exportsReg = {};
+    /** @type {Record<string, Plot>} */
     this.plotReg = {};
+    /** @type {(() => void)[]} */
     this.unsub = [];
+    /** @type {ResizeObserver | null} */
+    this.ro = null;
+    /** @type {{ compute: number, draw: number, end: number } | null} */
+    this.lastTiming = null;
   }
 
   // ---------- test and embedding hooks ----------
@@ -126,7 +186,7 @@ export class WingLab extends HTMLElement {
         if (this.store.get().panels.includes('wing3d')) this.views.wing3d.startWhenVisible();
         this.dispatchEvent(new CustomEvent('wl-ready', { bubbles: true }));
       })
-      .catch((e) => this.error(`Could not load the wasm module: ${e && e.message ? e.message : e}`));
+      .catch((e) => this.error(`Could not load the wasm module: ${errorText(e)}`));
   }
 
   disconnectedCallback() {
@@ -166,7 +226,8 @@ export class WingLab extends HTMLElement {
     };
     // Several labs on a page: each names its sections after itself (unique landmarks).
     const fig = this.closest('figure');
-    const labName = this.getAttribute('aria-label') || (fig && fig.querySelector('figcaption') ? fig.querySelector('figcaption').textContent.trim() : '');
+    const caption = fig && fig.querySelector('figcaption');
+    const labName = this.getAttribute('aria-label') || (caption ? (caption.textContent || '').trim() : '');
     for (const name of LAYOUT) {
       const view = VIEWS[name];
       const named = labName ? { 'aria-label': `${plain(view.title)} — ${labName}` } : { 'aria-labelledby': id(`h-${name}`) };
@@ -244,7 +305,7 @@ export class WingLab extends HTMLElement {
       this.store.set({ status: 'computing the FE wing’s modes in a worker…' });
       this.engine.ensureFe().then(
         (fe) => { this.store.set({ fe }); this.schedule(); },
-        (e) => this.error(`The FE wing could not be computed: ${e && e.message ? e.message : e}`),
+        (e) => this.error(`The FE wing could not be computed: ${errorText(e)}`),
       );
       return;
     }
@@ -252,7 +313,7 @@ export class WingLab extends HTMLElement {
     try {
       r = this.engine.analyze(paramsOf(s));
     } catch (e) {
-      this.error(`Computation rejected: ${e && e.message ? e.message : e}`);
+      this.error(`Computation rejected: ${errorText(e)}`);
       return;
     }
     this.error('');
@@ -274,6 +335,7 @@ export class WingLab extends HTMLElement {
     const write = () => {
       this.urlTimer = 0;
       this.urlWritten = performance.now();
+      /** @type {Record<string, string>} */
       const extra = new URLSearchParams(location.search).get('embed') === '1' ? { embed: '1' } : {};
       history.replaceState(null, '', `${location.pathname}?${toQuery(this.state, extra)}${location.hash}`);
     };
@@ -299,7 +361,7 @@ export class WingLab extends HTMLElement {
     const fig = reg.figure && reg.figure();
     if (kind === 'svg') {
       if (!fig) return nothing();
-      const probe = canvasPainter(document.createElement('canvas').getContext('2d'));
+      const probe = canvasPainter(context2d(document.createElement('canvas')));
       download(`wingbeat-${name}.svg`, new Blob([figureSVG(fig, FIG_W, FIG_H, (s, size) => probe.measure(s, size))], { type: 'image/svg+xml' }));
       this.lastExport = { name, kind };
       return;
@@ -320,7 +382,7 @@ function canvasPNG(title, params, src) {
   const c = document.createElement('canvas');
   c.width = 2 * w;
   c.height = 2 * h;
-  const ctx = c.getContext('2d');
+  const ctx = context2d(c);
   ctx.scale(2, 2);
   const p = canvasPainter(ctx);
   p.rect(0, 0, w, h, '#fff');

@@ -1,3 +1,4 @@
+// @ts-check
 // Page bootstrap for index.html: registers <wing-lab> and applies the chrome-less iframe mode
 // (?embed=1). The lab itself lives in lab.js.
 import './lab.js';

@@ -1,3 +1,4 @@
+// @ts-check
 // Live line plots around uPlot (vendor/uPlot.esm.js, copied from node_modules by the build):
 // rich axis titles in HTML (sub/superscripts, never clipped), a keyboard-reachable legend of
 // toggle buttons with live values, frequency/time markers whose labels never overlap, shaded
@@ -6,7 +7,7 @@
 import uPlot from './vendor/uPlot.esm.js';
 import { el, rich, srOnly } from './dom.js';
 import { fmt, fmtRich, plain } from './format.js';
-import { placeLabels, canvasPainter } from './export.js';
+import { placeLabels, canvasPainter, context2d } from './export.js';
 
 export { uPlot };
 
@@ -14,7 +15,7 @@ const COLORS = {
   euler: '#1f77b4',
   centrifugal: '#ff7f0e',
   coriolis: '#2ca02c',
-  stiffness: '#9467bd',
+  stiffness_force: '#9467bd',
   total: '#222222',
   free: '#8c564b',
   envelope: '#d62728',
@@ -32,6 +33,12 @@ export function log10OrNull(v) {
   return v > 0 && Number.isFinite(v) ? Math.log10(v) : null;
 }
 
+/**
+ * @param {uPlot} u
+ * @param {number | null} min
+ * @param {number | null} max
+ * @returns {uPlot.Range.MinMax}
+ */
 function logRange(u, min, max) {
   if (min == null || max == null || !Number.isFinite(max)) return [-12, 0];
   const hi = Math.ceil(max + 1e-9);
@@ -43,17 +50,31 @@ function logRange(u, min, max) {
 let plotIds = 0;
 
 /**
- * A line plot in `parent`.
- * spec: { name, xLabel, xUnit, yLabel, y2Label (rich markup), series: [{ label, unit, color,
- *   scale: 'y'|'y2', dash, width, legend: false }], log: { y, y2 }, height, markers: () =>
- *   [{ x, label, color, dash }], bands: () => [{ x0, x1, label, color, fill }], ariaLabel,
- *   keys: true (focusable: ← → pan, + − zoom, 0 reset), onReset }
+ * @typedef {{ label: string, unit?: string, color: string, scale?: 'y' | 'y2', dash?: number[],
+ *   width?: number, legend?: boolean, show?: boolean, with?: number[] }} SeriesSpec
+ * @typedef {{ x: number, label: string, color: string, dash?: number[], width?: number }} Marker
+ * @typedef {{ x0: number, x1: number, label?: string, color?: string, fill?: string }} Band
+ * @typedef {{
+ *   name: string, title?: string, xLabel: string, xUnit: string, yLabel?: string, y2Label?: string,
+ *   series: SeriesSpec[], log?: { y?: boolean, y2?: boolean }, height?: number,
+ *   markers?: () => Marker[], bands?: () => Band[], ariaLabel?: string, keys?: boolean,
+ *   cursor?: uPlot.Cursor, hooks?: uPlot.Hooks.Arrays,
+ *   onReset?: () => void, onUser?: (what: string) => void, onToggle?: (i: number, show: boolean) => void,
+ * }} PlotSpec
+ */
+
+/**
+ * A line plot in `parent`: markers at x positions with labels, shaded bands, a keyboard
+ * (← → pan, + − zoom, 0 reset when `keys` is not false), legend toggle buttons.
+ * @param {HTMLElement} parent
+ * @param {PlotSpec} spec
  */
 export function linePlot(parent, spec) {
   const id = `wl-plot-${++plotIds}`;
   const box = el('div', { class: 'wl-plot', 'data-plot': spec.name });
+  const ytitle = el('span', { class: 'wl-ytitle', rich: spec.yLabel || '' });
   const titles = el('div', { class: 'wl-axis-titles' },
-    el('span', { class: 'wl-ytitle', rich: spec.yLabel || '' }),
+    ytitle,
     spec.y2Label ? el('span', { class: 'wl-y2title', rich: spec.y2Label }) : null);
   const stage = el('div', { class: 'wl-uplot' });
   const xtitle = el('div', { class: 'wl-xtitle', rich: `${spec.xLabel} (${spec.xUnit})` });
@@ -62,7 +83,9 @@ export function linePlot(parent, spec) {
   parent.append(box);
   const width = Math.max(260, box.clientWidth || 600);
   const dpr = () => (typeof devicePixelRatio === 'number' ? devicePixelRatio : 1);
+  /** @type {uPlot.Axis[]} */
   const axes = [{ stroke: '#333', grid: { stroke: '#ececec' }, size: 34, values: (u, vals) => vals.map((v) => fmt(v, 4)) }];
+  /** @type {Record<string, uPlot.Scale>} */
   const scales = { x: { time: false } };
   const hasY2 = spec.series.some((s) => s.scale === 'y2');
   for (const key of hasY2 ? ['y', 'y2'] : ['y']) {
@@ -85,6 +108,7 @@ export function linePlot(parent, spec) {
       incrs: log ? [1, 2, 3, 5, 10] : undefined,
     });
   }
+  /** @type {uPlot.Series[]} */
   const series = [
     {},
     ...spec.series.map((s) => ({
@@ -99,7 +123,9 @@ export function linePlot(parent, spec) {
   ];
   // Legend: toggle buttons with live values (keyboard-reachable; uPlot's own legend is off).
   const legend = el('div', { class: 'wl-legend', role: 'group', 'aria-label': `${plain(spec.title || spec.name)}: series shown (press to hide or show)` });
+  /** @type {(HTMLElement | null)[]} */
   const values = [];
+  /** @type {(HTMLButtonElement | null)[]} */
   const buttons = [];
   spec.series.forEach((s, i) => {
     if (s.legend === false) { values.push(null); buttons.push(null); return; }
@@ -123,6 +149,7 @@ export function linePlot(parent, spec) {
   legend.append(xval);
   box.append(legend, summary);
 
+  /** @type {uPlot.Options & { hooks: uPlot.Hooks.Arrays, cursor: uPlot.Cursor }} */
   const opts = {
     width,
     height: spec.height || 220,
@@ -225,10 +252,11 @@ export function linePlot(parent, spec) {
     u.over.setAttribute('aria-describedby', summary.id);
     u.over.addEventListener('keydown', (e) => {
       const x = u.scales.x;
-      if (x.min == null) return;
+      if (x.min == null || x.max == null) return;
       const span = x.max - x.min;
       const data = u.data[0];
       const lo = data[0], hi = data[data.length - 1];
+      /** @type {number[] | null} */
       let a = null;
       if (e.key === 'ArrowLeft') a = [x.min - 0.25 * span, x.max - 0.25 * span];
       else if (e.key === 'ArrowRight') a = [x.min + 0.25 * span, x.max + 0.25 * span];
@@ -250,10 +278,12 @@ export function linePlot(parent, spec) {
       u.setScale('x', { min: m0, max: m1 });
     });
   }
-  if (spec.onUser) {
-    u.over.addEventListener('dblclick', () => spec.onUser('dblclick'));
+  const onUser = spec.onUser;
+  if (onUser) {
+    u.over.addEventListener('dblclick', () => onUser('dblclick'));
     opts.hooks.setSelect = [...(opts.hooks.setSelect || [])];
   }
+  /** @type {ResizeObserver | null} */
   let ro = null;
   if (typeof ResizeObserver === 'function') {
     ro = new ResizeObserver(() => {
@@ -268,6 +298,10 @@ export function linePlot(parent, spec) {
     legend,
     buttons,
     /** New data; keeps `keepX` ([min, max]) as the x window when given. */
+    /**
+     * @param {uPlot.AlignedData} data
+     * @param {number[] | null} [keepX]
+     */
     setData(data, keepX = null) {
       if (keepX && u.data[0].length > 1) {
         // One commit: new data in the given window (y re-ranges over it), no detour through
@@ -284,7 +318,7 @@ export function linePlot(parent, spec) {
       if (Math.abs(h - u.height) > 2) u.setSize({ width: u.width, height: h });
     },
     setYLabel(markup) {
-      titles.querySelector('.wl-ytitle').replaceChildren(rich(markup));
+      ytitle.replaceChildren(rich(markup));
     },
     setSummary(text) {
       summary.textContent = text;
@@ -321,7 +355,7 @@ export function viridis(t) {
 export function drawHeatmap(canvas, m) {
   const W = canvas.width;
   const H = canvas.height;
-  const ctx = canvas.getContext('2d');
+  const ctx = context2d(canvas);
   ctx.fillStyle = '#fff';
   ctx.fillRect(0, 0, W, H);
   const L = 78, R = 90, T = 12, B = 46;
@@ -340,7 +374,7 @@ export function drawHeatmap(canvas, m) {
   const tmp = document.createElement('canvas');
   tmp.width = m.nx;
   tmp.height = m.ny;
-  tmp.getContext('2d').putImageData(img, 0, 0);
+  context2d(tmp).putImageData(img, 0, 0);
   ctx.imageSmoothingEnabled = false;
   ctx.drawImage(tmp, L, T, pw, ph);
   ctx.strokeStyle = '#333';

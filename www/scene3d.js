@@ -1,3 +1,4 @@
+// @ts-check
 // Pure maths for the 3-D view (no DOM, no wasm), unit-tested in tests/js/scene3d.test.mjs:
 //
 // * a mirror of the renderer's orbit camera (src/render/scene.rs OrbitCamera: target, yaw,
@@ -16,7 +17,17 @@ export const ORBIT_RAD_PER_PX = 0.008;
 const PITCH_LIMIT = Math.PI / 2 - 0.01;
 const TAU = 2 * Math.PI;
 
-/** The renderer's initial camera for a wing of span `span` (m): OrbitCamera::for_span. */
+/**
+ * The mirror of the renderer's orbit camera: target (m), yaw and pitch (rad), distance (m),
+ * vertical field of view (rad).
+ * @typedef {{ target: number[], yaw: number, pitch: number, distance: number, fov: number }} Camera
+ */
+
+/**
+ * The renderer's initial camera for a wing of span `span` (m): OrbitCamera::for_span.
+ * @param {number} span
+ * @returns {Camera}
+ */
 export function defaultCamera(span) {
   const s = Number.isFinite(span) && span > 0 ? span : 0.05;
   return { target: [0.5 * s, -0.25 * s, 0], yaw: -1.95, pitch: 0.8, distance: 2.1 * s, fov: (45 * Math.PI) / 180 };
@@ -218,6 +229,7 @@ export function bestView(span, nodes, triangles, poses, width, height, { lift = 
   const ol = outline(nodes);
   const pts = posePoints(ol.nodes, poses, { lift: lift + ol.zmax });
   const few = poses.filter((_, j) => j % Math.max(1, Math.floor(poses.length / 8)) === 0);
+  /** @type {{ camera: Camera, coverage: number } | null} */
   let best = null;
   for (const dyaw of [-0.9, -0.6, -0.3, 0, 0.3, 0.6, 0.9]) {
     for (const pitch of [0.7, 0.9, 1.1]) {
@@ -240,8 +252,10 @@ export function bestView(span, nodes, triangles, poses, width, height, { lift = 
  */
 export function hull2(xs, ys) {
   const n = xs.length;
+  /** @type {number[] | null} */
   let cand = null;
   if (n > 64) {
+    /** @type {number[]} */
     const ext = [];
     for (let d = 0; d < 16; d++) {
       const c = Math.cos((Math.PI * d) / 8), sn = Math.sin((Math.PI * d) / 8);
@@ -254,7 +268,9 @@ export function hull2(xs, ys) {
     }
     // ext is in angular order (counter-clockwise); keep points not strictly inside it
     if (ext.length >= 3) {
-      cand = [];
+      /** @type {number[]} */
+      const kept = [];
+      cand = kept;
       const m = ext.length;
       for (let i = 0; i < n; i++) {
         let inside = true;
@@ -262,7 +278,7 @@ export function hull2(xs, ys) {
           const a = ext[j], b = ext[(j + 1) % m];
           if ((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) <= 0) { inside = false; break; }
         }
-        if (!inside) cand.push(i);
+        if (!inside) kept.push(i);
       }
     }
   }

@@ -1,9 +1,21 @@
+// @ts-check
 // Lab state <-> URL query / element attributes. Pure functions (no DOM), unit-tested in
-// tests/js/state.test.mjs. Everything read from outside is validated here: a value that is not
+// tests/js/state.test.mjs. The slider table NUMERIC mirrors the core's parameter table (wasm
+// `parameters()`, src/params.rs; tests/js/wasm.test.mjs checks every field); the SimConfig is
+// built by the core (wasm `applyOverrides`, called by www/engine.js from overridesOf()). Everything read from outside is validated here: a value that is not
 // a plain decimal number inside its slider's range, or not one of an enum's choices, is dropped
 // (the default is used) and reported by name so the page can show a notice (as text only).
 
-/** Numeric parameters: URL/attribute name, label, unit, slider range and default (the paper case). */
+/**
+ * @typedef {{ key: 'alpha0' | 'beta0' | 'gamma0' | 'flap_hz' | 'zeta' | 'alpha_phase' | 'beta_phase' | 'gamma_phase' | 'duration',
+ *   label: string, sym: string, unit: string, min: number, max: number, step: number, def: number }} NumericParam
+ * @typedef {{ key: 'modes' | 'mode' | 'detrend', label: string, choices: string[], def: string, disabled?: string[] }} EnumParam
+ */
+
+/**
+ * Numeric parameters: URL/attribute name, label, unit, slider range and default (the paper case).
+ * @type {NumericParam[]}
+ */
 export const NUMERIC = [
   { key: 'alpha0', label: 'α_0, roll amplitude', sym: 'α_0', unit: 'rad', min: 0, max: 1.5, step: 0.01, def: 0.8 },
   { key: 'beta0', label: 'β_0, pitch amplitude', sym: 'β_0', unit: 'rad', min: 0, max: 1.0, step: 0.01, def: 0.5 },
@@ -16,7 +28,10 @@ export const NUMERIC = [
   { key: 'duration', label: 'Duration', sym: 'T_{sim}', unit: 's', min: 0.2, max: 10, step: 0.1, def: 2 },
 ];
 
-/** Enumerated parameters. `disabled` choices are shown but not selectable (and rejected from URLs). */
+/**
+ * Enumerated parameters. `disabled` choices are shown but not selectable (and rejected from URLs).
+ * @type {EnumParam[]}
+ */
 export const ENUMS = [
   { key: 'modes', label: 'Mode set', choices: ['paper', 'fe'], def: 'paper' },
   { key: 'mode', label: 'Selected mode', choices: ['1', '2'], def: '1' },
@@ -42,16 +57,31 @@ export const SAMPLE_RATE_HZ = 10000;
 
 const NUMBER_RE = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
 
+/**
+ * The lab's URL parameters (one store property each).
+ * @typedef {{
+ *   alpha0: number, beta0: number, gamma0: number, flap_hz: number, zeta: number,
+ *   alpha_phase: number, beta_phase: number, gamma_phase: number, duration: number,
+ *   modes: 'paper' | 'fe', mode: '1' | '2', detrend: 'none' | 'mean' | 'linear', panels: string[], exp: string, embed?: boolean,
+ * }} Params
+ */
+
+/** @returns {Params} */
 export function defaults() {
+  /** @type {Record<string, unknown>} */
   const s = {};
   for (const p of NUMERIC) s[p.key] = p.def;
   for (const e of ENUMS) s[e.key] = e.def;
   s.panels = PANELS.slice();
   s.exp = '';
-  return s;
+  return /** @type {Params} */ (s);
 }
 
 /** Parses one numeric value; returns a number or null when not a plain in-range decimal. */
+/**
+ * @param {NumericParam} p
+ * @param {unknown} raw
+ */
 export function parseNumber(p, raw) {
   if (typeof raw !== 'string' || raw.length > 32 || !NUMBER_RE.test(raw.trim())) return null;
   const v = Number(raw.trim());
@@ -59,6 +89,10 @@ export function parseNumber(p, raw) {
   return v;
 }
 
+/**
+ * @param {EnumParam} e
+ * @param {unknown} raw
+ */
 function parseEnum(e, raw) {
   if (typeof raw !== 'string') return null;
   const v = raw.trim();
@@ -66,6 +100,7 @@ function parseEnum(e, raw) {
   return v;
 }
 
+/** @param {unknown} raw */
 function parsePanels(raw) {
   if (typeof raw !== 'string' || raw.length > 200) return null;
   const list = raw.split(',').map((s) => s.trim()).filter(Boolean);
@@ -89,9 +124,15 @@ export function expectation(key) {
  * Reads state from name/value pairs (URLSearchParams or element attributes).
  * Returns { state, rejected: [{ key, why }] }; `key` is truncated to 40 characters.
  * Unknown names are rejected too, except those in `ignore`.
+ * @param {Iterable<[string, string]> | string[][]} pairs
+ * @param {string[]} [ignore]
+ * @returns {{ state: Params, rejected: { key: string, why: string }[] }}
  */
 export function parsePairs(pairs, ignore = []) {
   const state = defaults();
+  /** @type {Record<string, unknown>} */
+  const into = state;
+  /** @type {{ key: string, why: string }[]} */
   const rejected = [];
   const seen = new Set();
   for (const [rawKey, raw] of pairs) {
@@ -105,6 +146,7 @@ export function parsePairs(pairs, ignore = []) {
     seen.add(key);
     const p = NUMERIC.find((q) => q.key === key);
     const e = ENUMS.find((q) => q.key === key);
+    /** @type {number | string | string[] | boolean | null} */
     let v = null;
     if (p) v = parseNumber(p, raw);
     else if (e) v = parseEnum(e, raw);
@@ -116,12 +158,15 @@ export function parsePairs(pairs, ignore = []) {
       continue;
     }
     if (v === null) rejected.push({ key: short, why: `expected ${expectation(key)}` });
-    else state[key] = v;
+    else into[key] = v;
   }
   return { state, rejected };
 }
 
-/** Parses a query string such as location.search. */
+/**
+ * Parses a query string such as location.search.
+ * @param {string} search
+ */
 export function parseQuery(search) {
   let params;
   try {
@@ -132,11 +177,15 @@ export function parseQuery(search) {
   return parsePairs(params.entries());
 }
 
-/** Serialises state to a query string (no leading '?'); all parameters, shortest exact decimals. */
+/**
+ * Serialises state to a query string (no leading '?'); all parameters, shortest exact decimals.
+ * @param {Params} state
+ * @param {Record<string, string>} [extra]
+ */
 export function toQuery(state, extra = {}) {
   const q = new URLSearchParams();
   for (const p of NUMERIC) q.set(p.key, String(state[p.key]));
-  for (const e of ENUMS) q.set(e.key, state[e.key]);
+  for (const e of ENUMS) q.set(e.key, String(state[e.key]));
   if (state.panels && state.panels.length !== PANELS.length) q.set('panels', state.panels.join(','));
   if (state.exp) q.set('exp', state.exp);
   for (const [k, v] of Object.entries(extra)) q.set(k, v);
@@ -144,6 +193,10 @@ export function toQuery(state, extra = {}) {
 }
 
 /** Rounds a slider value to its step grid (avoids 0.30000000000000004 in URLs). */
+/**
+ * @param {NumericParam} p
+ * @param {number} v
+ */
 export function snap(p, v) {
   const k = Math.round((v - p.min) / p.step);
   const s = p.min + k * p.step;
@@ -151,37 +204,42 @@ export function snap(p, v) {
   return Math.min(p.max, Math.max(p.min, Number(s.toFixed(digits))));
 }
 
-/** The wasm SimConfig for a state, given the paper base config from wasm's defaultConfig(). */
-export function toConfig(state, base) {
-  const angle = (amp, phase) => ({ kind: 'fourier', mean: 0, harmonics: [{ n: 1, amplitude: amp, phase }] });
-  return {
-    kinematics: {
-      flap_freq_hz: state.flap_hz,
-      alpha: angle(state.alpha0, state.alpha_phase),
-      beta: angle(state.beta0, state.beta_phase),
-      gamma: angle(state.gamma0, state.gamma_phase),
-    },
-    modes: base.modes.map((m) => ({ ...m, zeta: state.zeta })),
-    duration_s: state.duration,
-    sample_rate_hz: SAMPLE_RATE_HZ,
-    initial_conditions: [],
-  };
+/**
+ * The named overrides of a state for wasm `applyOverrides(base, overrides)`: the value of every
+ * numeric parameter, by key. What each key means (γ0 is the first-harmonic amplitude of the yaw
+ * angle, ζ applies to every mode, …) is decided by the core (src/params.rs), not here.
+ * @param {Params} state
+ * @returns {import('./pkg/wingbeat.js').Overrides}
+ */
+export function overridesOf(state) {
+  /** @type {import('./pkg/wingbeat.js').Overrides} */
+  const o = {};
+  for (const p of NUMERIC) o[p.key] = Number(state[p.key]);
+  return o;
 }
 
 /** The five parameters the lab shows first (the rest follow under "More parameters"). */
 export const MAIN_KEYS = ['alpha0', 'beta0', 'gamma0', 'flap_hz', 'zeta'];
 
-/** Just the URL parameters of a store state (drops derived keys such as `result`). */
+/**
+ * Just the URL parameters of a store state (drops derived keys such as `result`).
+ * @param {Params} s
+ * @returns {Params}
+ */
 export function paramsOf(s) {
+  /** @type {Record<string, unknown>} */
   const out = {};
   for (const p of NUMERIC) out[p.key] = s[p.key];
   for (const e of ENUMS) out[e.key] = s[e.key];
   out.panels = s.panels;
   out.exp = s.exp || '';
-  return out;
+  return /** @type {Params} */ (out);
 }
 
-/** A one-line, human-readable parameter set for figures and exports (rich markup). */
+/**
+ * A one-line, human-readable parameter set for figures and exports (rich markup).
+ * @param {Params} s
+ */
 export function describe(s) {
   const modes = s.modes === 'fe' ? 'FE wing modes (SI)' : 'paper table modes (paper units)';
   return `α_0 = ${s.alpha0} rad, β_0 = ${s.beta0} rad, γ_0 = ${s.gamma0} rad, f_d = ${s.flap_hz} Hz, ζ = ${s.zeta}, ` +

@@ -1,3 +1,4 @@
+// @ts-check
 // The lab's observable state (the "model" of a PhET-style model/view split): one flat object
 // of properties — the URL parameters of www/state.js plus derived ones such as `result` (the
 // latest analysis), `fe` (the FE wing), `t3d` (the instant shown by the 3-D view) — with
@@ -5,11 +6,23 @@
 // reaches into them. Pure (no DOM); unit-tested in tests/js/store.test.mjs.
 
 /**
- * @param {object} initial
- * @returns {{ get(): object, set(patch: object): string[], subscribe(keys: string[]|'*', fn: Function): () => void }}
+ * @template {object} T
+ * @typedef {{
+ *   get(): Readonly<T>,
+ *   set(patch: Partial<T>): string[],
+ *   subscribe(keys: string[] | '*', fn: (state: Readonly<T>, changed: string[]) => void): () => void,
+ * }} Store
  */
-export function createStore(initial = {}) {
+
+/**
+ * @template {object} T
+ * @param {T} initial
+ * @returns {Store<T>}
+ */
+export function createStore(initial) {
+  /** @type {Readonly<T>} */
   let state = Object.freeze({ ...initial });
+  /** @type {Set<{ keys: string[] | '*', fn: (state: Readonly<T>, changed: string[]) => void }>} */
   const subs = new Set();
   let depth = 0;
   return {
@@ -23,16 +36,20 @@ export function createStore(initial = {}) {
      * A subscriber may call set() again; such nested changes notify as well.
      */
     set(patch) {
+      /** @type {string[]} */
       const changed = [];
+      /** @type {Record<string, unknown>} */
       const next = { ...state };
+      /** @type {Record<string, unknown>} */
+      const cur = state;
       for (const [k, v] of Object.entries(patch || {})) {
-        if (!Object.is(state[k], v)) {
+        if (!Object.is(cur[k], v)) {
           next[k] = v;
           changed.push(k);
         }
       }
       if (!changed.length) return changed;
-      state = Object.freeze(next);
+      state = /** @type {Readonly<T>} */ (Object.freeze(next));
       if (++depth > 50) {
         depth = 0;
         throw new Error('store: set() recursion deeper than 50 (a subscriber keeps changing state)');
@@ -49,7 +66,7 @@ export function createStore(initial = {}) {
     },
     /** Calls fn(state, changedKeys) whenever one of `keys` changes ('*': any). Returns unsubscribe. */
     subscribe(keys, fn) {
-      const s = { keys: keys === '*' ? '*' : [...keys], fn };
+      const s = { keys: keys === '*' ? /** @type {'*'} */ ('*') : [...keys], fn };
       subs.add(s);
       return () => subs.delete(s);
     },

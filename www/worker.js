@@ -1,3 +1,4 @@
+// @ts-check
 // Web Worker for the lab's expensive studies, so sliders never freeze: parameter sweeps
 // (Fig. 6), the initial-condition map (Fig. 7), long damped runs (Fig. 8), the resonance map
 // (Floquet numbers over flap frequency and α0) and the paper report.
@@ -5,6 +6,7 @@
 // | { id, error }. Typed arrays are transferred, not copied.
 import init, * as wb from './pkg/wingbeat.js';
 import { decimate } from './decimate.js';
+import { errorText } from './format.js';
 
 const ready = init({ module_or_path: new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
 
@@ -61,17 +63,20 @@ function transferList(v) {
   return [...new Set(transferables(v))];
 }
 
-self.onmessage = async (ev) => {
+/** The worker's global scope (a DedicatedWorkerGlobalScope; tsconfig's lib is the page's DOM). */
+const scope = /** @type {{ postMessage(message: unknown, transfer?: Transferable[]): void, onmessage: ((ev: MessageEvent) => void) | null }} */ (/** @type {unknown} */ (self));
+
+scope.onmessage = async (ev) => {
   const { id, kind } = ev.data || {};
   try {
     await ready;
     const job = jobs[kind];
     if (!job) throw new Error(`unknown job ${String(kind).slice(0, 40)}`);
     const t0 = performance.now();
-    const result = job(ev.data, (done, total) => self.postMessage({ id, progress: [done, total] }));
+    const result = job(ev.data, (done, total) => scope.postMessage({ id, progress: [done, total] }));
     const ms = performance.now() - t0;
-    self.postMessage({ id, result, ms }, transferList(result));
+    scope.postMessage({ id, result, ms }, transferList(result));
   } catch (e) {
-    self.postMessage({ id, error: String(e && e.message ? e.message : e) });
+    scope.postMessage({ id, error: errorText(e) });
   }
 };

@@ -193,7 +193,7 @@ test('CSV export of plotted series has units and full resolution', async () => {
   const header = spec.find((l) => !l.startsWith('#'));
   assert.match(header, /^f \(Hz\),psd_euler_force \(\(kg\^½·m\/s²\)\^2\/Hz\),psd_centrifugal_force/);
   assert.match(header, /psd_coriolis_force/);
-  assert.match(header, /psd_stiffness_term/);
+  assert.match(header, /psd_stiffness_force/);
   assert.match(header, /psd_total_response/);
   const rows = spec.filter((l) => !l.startsWith('#')).slice(1);
   assert.equal(rows.length, 8192 / 2 + 1);

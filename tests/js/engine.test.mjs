@@ -1,13 +1,14 @@
 // The engine (www/engine.js) against a fake wasm module and a fake worker: the only module
-// that talks to wasm; results carry the angles (one crossing per recompute); old and new
-// stiffness keys; worker jobs with progress, errors and cancellation.
+// that talks to wasm; the config comes from wasm applyOverrides (the core interprets every
+// parameter); results carry the angles (one crossing per recompute); worker jobs with progress,
+// errors and cancellation. tests/js/wasm.test.mjs runs the same engine on the real wasm.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { createEngine, splitAngles, normalise } from '../../www/engine.js';
+import { createEngine, splitAngles } from '../../www/engine.js';
 import { defaults } from '../../www/state.js';
 
-function fakeWasm({ withAngles = false, newKeys = false } = {}) {
-  const calls = { analyze: 0, anglesAt: 0 };
+function fakeWasm({ withAngles = false } = {}) {
+  const calls = { analyze: 0, anglesAt: 0, applyOverrides: [] };
   const n = 5;
   const t = Float64Array.from({ length: n }, (_, i) => i / 10000);
   const spec = () => ({ freq_hz: new Float64Array([0, 1]), psd: new Float64Array([1, 2]) });
@@ -15,13 +16,18 @@ function fakeWasm({ withAngles = false, newKeys = false } = {}) {
     calls,
     defaultConfig: () => ({ modes: [{ name: 'm1', freq_hz: 62.5, a: [1, 0], zeta: 0, strains: [] }] }),
     limits: () => ({ max_samples: 2e6 }),
+    // Stand-in for the core's apply_overrides: records its input and tags the result (what each
+    // key means is the core's business, tested in tests/js/wasm.test.mjs and tests/params.rs).
+    applyOverrides(base, overrides) {
+      calls.applyOverrides.push({ base, overrides });
+      if (overrides.duration > 10) throw new Error('invalid value for `overrides.duration`');
+      return { ...base, applied: overrides };
+    },
     analyze(cfg, opts, k) {
       calls.analyze++;
       calls.last = { cfg, opts, k };
-      const sp = { euler: spec(), centrifugal: spec(), coriolis: spec(), total: spec() };
-      if (newKeys) sp.stiffness_force = spec();
-      else sp.stiffness = spec();
-      const out = { sim: { t, n, sample_rate_hz: 10000, flap_freq_hz: 25, modes: [] }, spectra: [sp], forces: [newKeys ? { stiffness_force: 1 } : { stiffness: 1 }], envelope: [] };
+      const sp = { euler: spec(), centrifugal: spec(), coriolis: spec(), stiffness_force: spec(), total: spec() };
+      const out = { sim: { t, n, sample_rate_hz: 10000, flap_freq_hz: 25, modes: [] }, spectra: [sp], forces: [{ stiffness_force: 1 }], envelope: [] };
       if (withAngles) out.angles = { alpha: new Float64Array(n), beta: new Float64Array(n), gamma: new Float64Array(n) };
       return out;
     },
@@ -62,24 +68,29 @@ test('analyze builds the config from the parameters and returns angles from ONE 
   assert.equal(wb.calls.anglesAt, 1, 'one crossing per recompute');
   assert.equal(wb.calls.last.k, 1);
   assert.deepEqual(wb.calls.last.opts, { detrend: 'mean', segment_len: 8192 });
-  assert.equal(wb.calls.last.cfg.kinematics.gamma.harmonics[0].amplitude, 0.1);
+  // The config is the core's: base (the paper case at 10 kHz) plus every numeric parameter by key.
+  assert.equal(wb.calls.applyOverrides.length, 1);
+  assert.equal(wb.calls.last.cfg, r.cfg);
+  assert.equal(r.cfg.applied.gamma0, 0.1);
+  assert.deepEqual(Object.keys(r.cfg.applied).sort(), ['alpha0', 'alpha_phase', 'beta0', 'beta_phase', 'duration', 'flap_hz', 'gamma0', 'gamma_phase', 'zeta']);
+  assert.equal(r.cfg.sample_rate_hz, 10000);
+  assert.equal(r.cfg.modes[0].name, 'm1');
   assert.equal(r.k, 1);
   assert.equal(r.angles.alpha.length, 5);
   assert.equal(r.angles.beta[2], 2 * r.analysis.sim.t[2]);
   assert.ok(r.compute_ms >= 0);
-  // Old key `stiffness` is readable under the contract's name too.
   assert.ok(r.analysis.spectra[0].stiffness_force);
   assert.equal(r.analysis.forces[0].stiffness_force, 1);
 });
 
-test('a wasm build that returns angles is not asked again; new keys keep an old alias', async () => {
-  const wb = fakeWasm({ withAngles: true, newKeys: true });
+test('a wasm build that returns angles is not asked again', async () => {
+  const wb = fakeWasm({ withAngles: true });
   const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
   await e.load();
   const r = e.analyze(defaults());
   assert.equal(wb.calls.anglesAt, 0);
   assert.ok(r.angles.gamma instanceof Float64Array);
-  assert.equal(r.analysis.spectra[0].stiffness, r.analysis.spectra[0].stiffness_force);
+  assert.equal(r.analysis.spectra[0].stiffness, undefined, 'no old alias: one name, stiffness_force');
 });
 
 test('analyze before load throws; wasm errors pass through with their message', async () => {
@@ -87,8 +98,11 @@ test('analyze before load throws; wasm errors pass through with their message', 
   wb.analyze = () => { throw new Error('invalid value for `duration_s`'); };
   const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
   assert.throws(() => e.analyze(defaults()), /not loaded/);
+  assert.throws(() => e.config(defaults()), /not loaded/);
   await e.load();
   assert.throws(() => e.analyze(defaults()), /duration_s/);
+  // A value the core rejects in applyOverrides: its error, naming the key, passes through.
+  assert.throws(() => e.config({ ...defaults(), duration: 60 }), /overrides\.duration/);
 });
 
 test('worker jobs: progress, result, error; one worker for all jobs', async () => {
@@ -150,7 +164,7 @@ test('ensureFe runs once in the worker and then the config uses the FE modes', a
   p.zeta = 0.02;
   const cfg = e.config(p);
   assert.equal(cfg.modes[0].name, 'fe1');
-  assert.equal(cfg.modes[0].zeta, 0.02);
+  assert.equal(cfg.applied.zeta, 0.02, 'ζ applied by the core to the FE modes');
   assert.equal(e.config(defaults()).modes[0].name, 'm1');
 });
 
@@ -165,18 +179,16 @@ test('a failing worker rejects pending jobs; dispose terminates', async () => {
   assert.equal(w.terminated, true);
 });
 
-test('splitAngles and normalise', () => {
+test('splitAngles', () => {
   const s = splitAngles(new Float64Array([1, 2, 3, 4, 5, 6]));
   assert.deepEqual([...s.alpha, ...s.beta, ...s.gamma], [1, 4, 2, 5, 3, 6]);
-  const a = normalise({ spectra: [{ stiffness: 7 }], forces: [] });
-  assert.equal(a.spectra[0].stiffness_force, 7);
 });
 
-test('parameters(): the core table when the wasm has it, else null', async () => {
+test('parameters(): the core table once loaded, else null', async () => {
   const wb = fakeWasm();
-  const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
-  await e.load();
-  assert.equal(e.parameters(), null);
   wb.parameters = () => [{ key: 'alpha0', min: 0, max: 1.5, step: 0.01, default: 0.8 }];
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
+  assert.equal(e.parameters(), null);
+  await e.load();
   assert.equal(e.parameters()[0].key, 'alpha0');
 });

@@ -1,3 +1,4 @@
+// @ts-check
 // Parameters panel: the five main sliders first (α0, β0, γ0, f_d, ζ: a compact strip on a
 // phone), then "More parameters" (phases, duration, mode set, selected mode, PSD detrend), the
 // preset, warnings and the compute/draw timing. Reads and writes only the store.
@@ -15,6 +16,7 @@ const ENUM_TEXT = {
 
 const valueText = (p, v) => (p.unit ? `${v} ${p.unit}` : String(v));
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section, id } = ctx;
   const preset = el('button', {
@@ -23,8 +25,7 @@ export function mount(ctx) {
     text: 'Paper forward flight',
     title: 'α0 = 0.8, β0 = 0.5, γ0 = 0.2 rad, f_d = 25 Hz, ζ = 0, phases 0, 2 s (paper Table 5)',
     onclick: () => {
-      const d = defaults();
-      delete d.panels;
+      const { panels: _kept, ...d } = defaults(); // every parameter but the panel choice
       store.set(d);
     },
   });
@@ -64,28 +65,28 @@ export function mount(ctx) {
   const timingEl = el('p', { class: 'wl-timing', 'aria-live': 'off', text: 'loading wasm…' });
   const moreId = id('more');
   const moreBtn = el('button', { type: 'button', class: 'wl-more-toggle', 'aria-expanded': 'true', 'aria-controls': moreId, text: 'More parameters' });
-  section.append(
-    main,
-    moreBtn,
-    el('div', { class: 'wl-more', id: moreId },
+  const moreBox = el('div', { class: 'wl-more', id: moreId },
       el('h3', { class: 'wl-more-title', text: 'More parameters' }),
       more,
       selBox,
       el('div', { class: 'wl-presets' }, preset),
       el('p', { class: 'wl-note', rich: `Sampling: 10 kHz. ${PAPER_UNITS_NOTE}` }),
       el('p', { class: 'wl-note', rich: `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker.` }),
-    ),
+  );
+  section.append(
+    main,
+    moreBtn,
+    moreBox,
     warnEl,
     timingEl,
   );
 
-  const moreBox = section.querySelector('.wl-more');
-  const setMore = (open) => {
+  const setMore = (/** @type {boolean} */ open) => {
     moreBox.hidden = !open;
     moreBtn.setAttribute('aria-expanded', String(open));
     moreBtn.textContent = open ? 'Fewer parameters' : 'More parameters…';
   };
-  moreBtn.addEventListener('click', () => setMore(moreBox.hidden));
+  moreBtn.addEventListener('click', () => setMore(Boolean(moreBox.hidden)));
   const sync = (s) => {
     for (const { range, num, p } of Object.values(inputs)) {
       const v = s[p.key];

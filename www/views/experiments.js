@@ -1,3 +1,4 @@
+// @ts-check
 // Guided experiments panel: one link per experiment (a shareable URL: every parameter plus
 // exp=<id>), and for the active one what to look at and what the model predicts, recomputed
 // from every new analysis by www/experiments.js, with its numeric checks shown as ✓ / ✗.
@@ -5,7 +6,7 @@
 // worker; the prediction fills in when it arrives. Reads the store; writes only `exp` and the
 // experiment's parameters (ctx.setParams).
 import { el } from '../dom.js';
-import { plain } from '../format.js';
+import { plain, errorText } from '../format.js';
 import { NUMERIC, ENUMS } from '../state.js';
 import { EXPERIMENTS, experiment, experimentState, experimentQuery, predict } from '../experiments.js';
 
@@ -18,6 +19,7 @@ export function experimentHref(id) {
   return new URL(`../index.html?${experimentQuery(id)}`, import.meta.url).href;
 }
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section, engine } = ctx;
   section.append(el('p', {
@@ -46,6 +48,8 @@ export function mount(ctx) {
   /** Applies an experiment: its parameters (on the paper defaults, mode set kept) and exp=id. */
   function choose(id) {
     const s = experimentState(id);
+    if (!s) return;
+    /** @type {Record<string, unknown>} */
     const patch = { exp: id };
     for (const k of PARAM_KEYS) patch[k] = s[k];
     ctx.setParams(patch);
@@ -67,8 +71,8 @@ export function mount(ctx) {
       job.promise.then(
         ({ result }) => { entry.result = result; refresh(); },
         (err) => {
-          if (err && err.message === 'cancelled') studies.delete(key); // another study was cancelled: rerun later
-          else entry.error = String(err && err.message ? err.message : err);
+          if (errorText(err) === 'cancelled') studies.delete(key); // another study was cancelled: rerun later
+          else entry.error = errorText(err);
           refresh();
         },
       );
@@ -90,6 +94,7 @@ export function mount(ctx) {
     }
     const a = s.result && s.result.analysis;
     const entry = a ? studyFor(e) : null;
+    /** @type {HTMLElement[]} */
     const parts = [el('h3', { class: 'wl-exp-title', rich: e.title }), el('p', { class: 'wl-exp-look', rich: e.look })];
     if (!a) parts.push(el('p', { class: 'wl-note', text: 'Computing…' }));
     else {
@@ -124,9 +129,11 @@ export function mount(ctx) {
         const sec = section.parentElement && section.parentElement.querySelector(`[data-panel="${target}"]`);
         if (!sec) return;
         sec.scrollIntoView({ behavior: 'smooth', block: 'start' });
+        /** @type {HTMLElement | null} */
         const study = sec.querySelector(`[data-study="${e.study.kind === 'resonance' ? 'resonance' : e.study.kind}"]`);
-        const run = study && study.querySelector('[data-run]');
-        if (run) {
+        /** @type {HTMLButtonElement | null} */
+        const run = study && study.querySelector('button[data-run]');
+        if (study && run) {
           run.focus({ preventScroll: true });
           const out = study.querySelector('.wl-study-out');
           if (!study.dataset.done && !(out && out.childElementCount) && !run.disabled) run.click(); // show it computed, not empty

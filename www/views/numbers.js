@@ -1,3 +1,4 @@
+// @ts-check
 // Floquet & contributions panel: both modes' natural and effective frequencies, beat periods,
 // multipliers, stability and force-term shares, as a table (its own text alternative).
 import { el, rich } from '../dom.js';
@@ -22,6 +23,7 @@ export const ROWS = [
   ['peak', `Peak |q| total (${UNITS.q.label})`],
 ];
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section } = ctx;
   const table = el('table', { class: 'wl-numtable' });

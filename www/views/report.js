@@ -1,8 +1,11 @@
+// @ts-check
 // Paper claims check: reproduce() in the worker, every claim with what wingbeat computes.
 import { el } from '../dom.js';
+import { errorText } from '../format.js';
 
 export const title = 'Paper claims check';
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { section, engine } = ctx;
   const btn = el('button', { type: 'button', class: 'wl-run', text: 'Check the paper’s claims', 'data-run': 'report' });
@@ -28,7 +31,7 @@ export function mount(ctx) {
         status.textContent = `${s.holds} hold, ${s.partly} partly, ${s.fails} fail, ${s.input} inputs (${ms.toFixed(0)} ms, worker)`;
         ctx.emit('wl-study', { kind: 'reproduce' });
       })
-      .catch((e) => { status.textContent = `Error: ${e && e.message ? e.message : e}`; })
+      .catch((e) => { status.textContent = `Error: ${errorText(e)}`; })
       .finally(() => { btn.disabled = false; prog.hidden = true; });
   });
   section.append(el('div', { class: 'wl-study-controls' }, btn, prog, status), el('p', { class: 'wl-note', text: 'The paper preset as printed, zero initial conditions; every verdict is computed.' }), out);

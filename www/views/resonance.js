@@ -1,3 +1,4 @@
+// @ts-check
 // Resonance map study panel: the Floquet effective frequency of each mode and the largest
 // |multiplier| over a range of flap frequencies (wasm `resonanceMap`, a worker job through the
 // engine, with progress and cancel), the lines f = n·f_d (n = 1…4) over the f_eff curves, and
@@ -6,10 +7,10 @@
 // text alternative (summary sentence + table: where unstable, where resonant), CSV, PNG and
 // SVG export (the f_eff plot as a figure).
 import { el } from '../dom.js';
-import { plain } from '../format.js';
+import { plain, errorText } from '../format.js';
 import { linePlot, viridis } from '../plot.js';
 import { describe, toQuery } from '../state.js';
-import { toCSV } from '../export.js';
+import { toCSV, context2d } from '../export.js';
 import { resonanceSummary, resonanceCrossings, bands, fmt } from '../experiments.js';
 
 export const title = 'Resonance map: effective frequency and stability vs flap frequency';
@@ -72,7 +73,7 @@ export function drawResonanceHeatmap(canvas, r) {
   canvas.width = Math.round(cssW * dpr);
   canvas.height = Math.round(cssH * dpr);
   canvas.style.height = `${cssH}px`;
-  const ctx = canvas.getContext('2d');
+  const ctx = context2d(canvas);
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = '#fff';
   ctx.fillRect(0, 0, cssW, cssH);
@@ -98,7 +99,7 @@ export function drawResonanceHeatmap(canvas, r) {
   const tmp = document.createElement('canvas');
   tmp.width = nx;
   tmp.height = ny;
-  tmp.getContext('2d').putImageData(img, 0, 0);
+  context2d(tmp).putImageData(img, 0, 0);
   ctx.imageSmoothingEnabled = false;
   ctx.drawImage(tmp, L, T, pw, ph);
   const f0 = r.flap_hz[0], f1 = r.flap_hz[nx - 1];
@@ -257,9 +258,19 @@ function clipLines(series, nModes) {
   return series.map((s, i) => (i < nModes ? s : { ...s, y: Array.from(s.y, (v) => (v != null && v <= top ? v : null)) }));
 }
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section, engine } = ctx;
   const uid = ctx.id('res');
+  /**
+   * A labelled number box (rich label): [label, input].
+   * @param {string} label
+   * @param {number} value
+   * @param {number} min
+   * @param {number} max
+   * @param {number | 'any'} step
+   * @returns {[HTMLLabelElement, HTMLInputElement]}
+   */
   const num = (label, value, min, max, step) => {
     const i = el('input', { type: 'number', value, min, max, step, 'aria-label': plain(label) });
     return [el('label', { class: 'wl-inline' }, el('span', { rich: label }), ' ', i), i];
@@ -287,11 +298,16 @@ export function mount(ctx) {
   );
   section.append(box);
 
+  /** @type {import('../pkg/wingbeat.js').ResonanceMapResult | null} */
   let result = null;
+  /** @type {Promise<unknown> | null} */
   let current = null;
   let rowIndex = 0;
+  /** @type {import('../lab.js').Plot | null} */
   let fPlot = null;
+  /** @type {import('../lab.js').Plot | null} */
   let mPlot = null;
+  /** @type {ResizeObserver | null} */
   let heat = null;
   const cleanup = () => {
     for (const p of [fPlot, mPlot]) if (p) p.destroy();
@@ -374,6 +390,7 @@ export function mount(ctx) {
   }
 
   function drawRow(r, sumBox) {
+    if (!fPlot || !mPlot) return;
     const row = resonanceRow(r, rowIndex);
     const x = row.fd;
     const lines = [];
@@ -429,7 +446,7 @@ export function mount(ctx) {
       },
       (e) => {
         finish();
-        status.textContent = e && e.message === 'cancelled' ? 'Cancelled.' : `Error: ${e && e.message ? e.message : e}`;
+        status.textContent = errorText(e) === 'cancelled' ? 'Cancelled.' : `Error: ${errorText(e)}`;
         return null;
       },
     );

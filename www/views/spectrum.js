@@ -1,3 +1,4 @@
+// @ts-check
 // Spectra panel (paper Fig. 4): Welch PSDs of the Euler, centrifugal and Coriolis forces and of
 // the stiffness force S(t)·q_k (left axis), and of the total response (right axis), with
 // markers at the flap harmonics n·f_d, the natural frequency f_k and the Floquet f_{eff}.
@@ -8,6 +9,7 @@ import { SAMPLE_RATE_HZ, toQuery, describe } from '../state.js';
 
 export const title = 'Spectra of the force terms';
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section } = ctx;
   let markers = [];
@@ -24,7 +26,7 @@ export function mount(ctx) {
       { label: 'Euler force', color: color('euler') },
       { label: 'Centrifugal force', color: color('centrifugal') },
       { label: 'Coriolis force', color: color('coriolis'), width: 1.6 },
-      { label: 'Stiffness force S(t)·q', color: color('stiffness') },
+      { label: 'Stiffness force S(t)·q', color: color('stiffness_force') },
       { label: 'Total response (right axis)', color: color('total'), scale: 'y2', dash: [4, 3] },
     ],
     markers: () => markers,
@@ -54,7 +56,7 @@ export function mount(ctx) {
       for (let i = 0; i < n; i++) out[i] = log10OrNull(arr[i]);
       return out;
     };
-    const stiff = sp.stiffness_force || sp.stiffness;
+    const stiff = sp.stiffness_force;
     plot.setData([Array.from(freq.subarray(0, n)), pos(sp.euler.psd), pos(sp.centrifugal.psd), pos(sp.coriolis.psd), pos(stiff.psd), pos(sp.total.psd)]);
     const marks = [];
     for (let j = 1; j * fd <= fmax; j++) marks.push({ x: j * fd, label: `${j}f_d`, color: '#8a8a8a' });
@@ -74,8 +76,8 @@ export function mount(ctx) {
   ctx.registerExport('spectrum', {
     csv: () => {
       const s = store.get();
-      if (!s.result) return null;
-      const sp = s.result.analysis.spectra[s.result.k];
+      const sp = s.result && s.result.analysis.spectra[s.result.k];
+      if (!s.result || !sp) return null;
       const pu = UNITS.fpsd.csv;
       return ctx.toCSV(
         [
@@ -83,7 +85,7 @@ export function mount(ctx) {
           { name: 'psd_euler_force', unit: pu, values: sp.euler.psd },
           { name: 'psd_centrifugal_force', unit: pu, values: sp.centrifugal.psd },
           { name: 'psd_coriolis_force', unit: pu, values: sp.coriolis.psd },
-          { name: 'psd_stiffness_term', unit: pu, values: (sp.stiffness_force || sp.stiffness).psd },
+          { name: 'psd_stiffness_force', unit: pu, values: sp.stiffness_force.psd },
           { name: 'psd_total_response', unit: UNITS.qpsd.csv, values: sp.total.psd },
         ],
         [`wingbeat lab; ${toQuery(s)}`, `mode ${s.result.k + 1}; Welch, Hann, 8192-sample segments, detrend ${s.detrend}; all bins up to Nyquist`],

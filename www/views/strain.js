@@ -1,3 +1,4 @@
+// @ts-check
 // Strain panel (paper Fig. 9): ε_x, ε_y, γ_xy at the point P, Σ_k ε_k q_k(t).
 import { el, rich } from '../dom.js';
 import { fmt, PAPER_UNITS_NOTE } from '../format.js';
@@ -7,6 +8,7 @@ import { toQuery, describe } from '../state.js';
 
 export const title = 'Strain at the point P (paper Fig. 9)';
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section } = ctx;
   const plot = linePlot(section, {

@@ -1,7 +1,8 @@
+// @ts-check
 // Studies panel (paper Figs. 6–8), computed on demand in the worker through the engine:
 // contribution vs a parameter, the initial-condition map, damping. Each can be cancelled.
 import { el } from '../dom.js';
-import { fmt, UNITS } from '../format.js';
+import { fmt, UNITS, errorText } from '../format.js';
 import { linePlot, color, drawHeatmap } from '../plot.js';
 import { NUMERIC, toQuery, describe } from '../state.js';
 
@@ -9,6 +10,7 @@ export const title = 'Studies (paper Figs. 6–8)';
 
 const Q = UNITS.q.label;
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section, engine } = ctx;
   const studies = {};
@@ -28,10 +30,26 @@ export function mount(ctx) {
     section.append(box);
     studies[key] = { box, out, status, heading };
   };
+  /**
+   * A labelled number box: [label, input].
+   * @param {string} label
+   * @param {number} value
+   * @param {number} min
+   * @param {number} max
+   * @param {number | 'any'} step
+   * @returns {[HTMLLabelElement, HTMLInputElement]}
+   */
   const num = (label, value, min, max, step) => {
     const i = el('input', { type: 'number', value, min, max, step, 'aria-label': label });
     return [el('label', { class: 'wl-inline' }, label + ' ', i), i];
   };
+  /**
+   * A labelled select: [label, select].
+   * @param {string} label
+   * @param {[string, string][]} opts value, text
+   * @param {string} value
+   * @returns {[HTMLLabelElement, HTMLSelectElement]}
+   */
   const sel = (label, opts, value) => {
     const s = el('select', { 'aria-label': label });
     for (const [v, t] of opts) s.append(el('option', { value: v, text: t }));
@@ -67,7 +85,7 @@ export function mount(ctx) {
       })
       .catch((e) => {
         finish();
-        status.textContent = e && e.message === 'cancelled' ? 'Cancelled.' : `Error: ${e && e.message ? e.message : e}`;
+        status.textContent = errorText(e) === 'cancelled' ? 'Cancelled.' : `Error: ${errorText(e)}`;
       });
   }
 
@@ -78,8 +96,9 @@ export function mount(ctx) {
   const [ln, pts] = num('points', 26, 2, 201, 1);
   sp.addEventListener('change', () => {
     const p = NUMERIC.find((q) => q.key === sp.value);
-    from.value = p.min;
-    to.value = p.max;
+    if (!p) return;
+    from.value = String(p.min);
+    to.value = String(p.max);
   });
   study('sweep', 'Contribution vs parameter (Fig. 6)', [lp, lf, lt, ln], (btn, prog, status, out, cancel) => {
     const opts = { param: sp.value, from: Number(from.value), to: Number(to.value), points: Math.round(Number(pts.value)) };

@@ -1,3 +1,4 @@
+// @ts-check
 // Responses panel (paper Fig. 5) — the beat made visible: the partial and total responses of
 // the selected mode in a window of about three beats (full resolution), the beat period marked
 // (shaded from an envelope maximum to the next, T_{beat} = 1/|f_{eff} − n·f_d| from the Floquet
@@ -14,6 +15,7 @@ export const title = 'Responses and the beat (paper Fig. 5)';
 
 const Q = UNITS.q.label;
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section } = ctx;
   const touch = isTouch();
@@ -25,10 +27,14 @@ export function mount(ctx) {
       : 'Drag across the plot to zoom in, double-click for the whole run; drag on the strip below to move the window; click a curve’s name to hide it; click the plot to show that instant in the 3-D wing. Keys on the focused plot: ← → pan, + − zoom, 0 back to three beats.',
   });
   section.append(beatBox, hint);
+  /** @type {import('../beat.js').BeatInfo | null} */
   let beat = null;
+  /** @type {ReturnType<typeof beatWindow> | null} */
   let bw = null;
+  /** @type {number[] | null} window shown [t0, t1] (s) */
   let win = null;
   let userWin = false;
+  /** @type {import('../lab.js').Plot | null} made after the main plot, whose hooks redraw it */
   let overview = null;
   const main = linePlot(section, {
     name: 'time',
@@ -46,14 +52,15 @@ export function mount(ctx) {
       { label: '−envelope', color: color('envelope'), width: 2, legend: false },
     ],
     height: 230,
-    bands: () => (bw && bw.mark && beat ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []),
+    bands: () => (bw && bw.mark && beat && beat.period != null ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []),
     markers: () => {
+      /** @type {import('../plot.js').Marker[]} */
       const out = [];
-      if (bw && bw.mark && beat) {
+      if (bw && bw.mark && beat && beat.period != null) {
         const [x0, x1] = main.xWindow();
         for (let j = -40; j <= 40; j++) {
           const x = bw.mark[0] + j * beat.period;
-          if (j !== 0 && j !== 1 && x >= x0 && x <= x1) out.push({ x, color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
+          if (j !== 0 && j !== 1 && x0 != null && x1 != null && x >= x0 && x <= x1) out.push({ x, label: '', color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
         }
       }
       const t3 = store.get().t3d;
@@ -67,7 +74,7 @@ export function mount(ctx) {
       setSelect: [(u) => { if (u.select.width > 2) userWin = true; }],
       setScale: [
         (u, key) => {
-          if (key !== 'x' || u.scales.x.min == null) return;
+          if (key !== 'x' || u.scales.x.min == null || u.scales.x.max == null) return;
           win = [u.scales.x.min, u.scales.x.max];
           if (overview) overview.redraw();
         },
@@ -75,6 +82,7 @@ export function mount(ctx) {
     },
   });
   // Click (not drag) on the plot: show that instant in the 3-D wing.
+  /** @type {number[] | null} */
   let down = null;
   main.u.over.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; });
   main.u.over.addEventListener('pointerup', (e) => {
@@ -86,7 +94,7 @@ export function mount(ctx) {
   });
   main.box.title = touch ? 'Tap to show this instant in the 3-D wing' : 'Click to show this instant in the 3-D wing';
 
-  overview = linePlot(section, {
+  const ov = linePlot(section, {
     name: 'time-overview',
     title: 'Whole run',
     ariaLabel: 'Overview of the whole run (total response and envelope); the shaded window is what the responses plot shows',
@@ -115,13 +123,15 @@ export function mount(ctx) {
       ],
     },
   });
-  overview.box.classList.add('wl-overview');
+  overview = ov;
+  ov.box.classList.add('wl-overview');
   // A click on the overview centres the window there.
+  /** @type {number[] | null} */
   let odown = null;
-  overview.u.over.addEventListener('pointerdown', (e) => { odown = [e.clientX, e.offsetX]; });
-  overview.u.over.addEventListener('pointerup', (e) => {
+  ov.u.over.addEventListener('pointerdown', (e) => { odown = [e.clientX, e.offsetX]; });
+  ov.u.over.addEventListener('pointerup', (e) => {
     if (odown && Math.abs(e.clientX - odown[0]) < 4 && win) {
-      const c = overview.u.posToVal(e.offsetX, 'x');
+      const c = ov.u.posToVal(e.offsetX, 'x');
       const w = win[1] - win[0];
       userWin = true;
       setWindow([c - w / 2, c + w / 2]);
@@ -135,9 +145,12 @@ export function mount(ctx) {
   section.append(el('div', { class: 'wl-timebar' }, btnBeats, btnAll), sharesBox);
 
   function fullRange() {
-    const t = store.get().result.analysis.sim.t;
+    const r = store.get().result;
+    if (!r) return [0, 1];
+    const t = r.analysis.sim.t;
     return [t[0], t[t.length - 1]];
   }
+  /** @param {number[] | null} w */
   function setWindow(w) {
     const [lo, hi] = fullRange();
     let [a, b] = w || [lo, hi];
@@ -155,15 +168,21 @@ export function mount(ctx) {
 
   let beatSig = '';
   let sharesSig = '';
+  /**
+   * @param {import('../pkg/wingbeat.js').Analysis} a
+   * @param {number} k
+   * @param {import('../lab.js').LabState} s
+   */
   function drawBeat(a, k, s) {
     const b = beat;
+    if (!b) return;
     const m = a.sim.modes[k];
     const sig = `${k}|${b.period}|${b.fEff}|${b.n}|${b.fd}|${b.stable}|${b.maxModulus}|${s.gamma0 === 0}`;
     if (sig === beatSig) return; // unchanged text: no DOM churn (and no repeated live-region announcement)
     beatSig = sig;
     beatBox.replaceChildren();
     beatBox.dataset.beatPeriod = b.period == null ? '' : String(b.period);
-    const p = (markup) => el('p', {}, rich(markup));
+    const p = (/** @type {string} */ markup) => el('p', {}, rich(markup));
     if (b.period == null) {
       beatBox.append(p(`**No beat in mode ${k + 1}.**`.replace(/\*\*/g, '')));
       beatBox.append(p(b.stable ? `The effective frequency f_{eff} = ${fmt(b.fEff, 6)} Hz sits on a flap harmonic, so there is nothing to beat against.` : `The largest Floquet multiplier |λ| = ${fmt(b.maxModulus, 6)} exceeds 1: the response grows every flap (a parametric instability) instead of beating.`));
@@ -220,7 +239,7 @@ export function mount(ctx) {
     if (!(w[1] > w[0])) w = [bw.x0, bw.x1];
     main.setData([a.sim.t, m.q.euler, m.q.centrifugal, m.q.coriolis, m.q.total, env, neg], w);
     win = w;
-    overview.setData(decimate(a.sim.t, [m.q.total, env], Math.max(200, Math.min(800, Math.round(overview.u.width || 400)))));
+    ov.setData(decimate(a.sim.t, [m.q.total, env], Math.max(200, Math.min(800, Math.round(ov.u.width || 400)))));
     drawBeat(a, k, s);
     drawShares(a, k);
     const peak = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
@@ -228,7 +247,7 @@ export function mount(ctx) {
       `Mode ${k + 1}, window ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s of a ${fmt(hi, 3)} s run. Peak |q| (${plain(Q)}): total ${fmt(peak(m.q.total), 3)}, Euler ${fmt(peak(m.q.euler), 3)}, centrifugal ${fmt(peak(m.q.centrifugal), 3)}, Coriolis ${fmt(peak(m.q.coriolis), 3)}; largest Coriolis envelope ${fmt(peak(env), 3)}. ` +
       (beat.period == null ? 'No beat.' : `Beat period ${fmt(beat.period, 4)} s, marked from ${fmt(bw.mark ? bw.mark[0] : NaN, 4)} s.`),
     );
-    overview.setSummary(`Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.`);
+    ov.setSummary(`Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.`);
   };
   const unsub = [
     store.subscribe(['result'], draw),
@@ -270,5 +289,5 @@ export function mount(ctx) {
       };
     },
   });
-  return { main, overview, resetWindow, destroy: () => { unsub.forEach((f) => f()); main.destroy(); overview.destroy(); } };
+  return { main, overview: ov, resetWindow, destroy: () => { unsub.forEach((f) => f()); main.destroy(); ov.destroy(); } };
 }

@@ -1,3 +1,4 @@
+// @ts-check
 // 3-D wing panel: the shell-FE wing flapping (roll α, pitch β, yaw γ about the root), bending
 // and twisting as the simulated q_k(t) say, coloured by strain — drawn by the wasm WingView
 // (WebGPU where the browser has it, WebGL2 otherwise; a plain explanation where neither works).
@@ -14,9 +15,10 @@
 // frame). Test hooks on the box: data-state (loading | ready | unavailable), data-backend,
 // data-frames, data-coverage (estimated wing share of the canvas at the fitted view).
 import { el, rich, isTouch } from '../dom.js';
-import { fmt } from '../format.js';
+import { fmt, errorText } from '../format.js';
 import { beatInfo } from '../beat.js';
 import * as S from '../scene3d.js';
+import { context2d } from '../export.js';
 
 export const title = '3-D wing';
 
@@ -44,22 +46,30 @@ const SCENE_LEGEND = [
   ['wing', 'Flapping frame I″, J″, K″ (bright red, green, blue)', 'rgb(255,64,51)', 'rgb(77,255,77)', 'rgb(89,140,255)'],
 ];
 
+/** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section, engine, uid } = ctx;
   const touch = isTouch();
+  /** @type {import('../pkg/wingbeat.js').WingView | null} */
   let view = null;
+  /** @type {import('../pkg/wingbeat.js').FeModesResult | null} */
   let fe = null;
   let started = false;
   let frames = 0;
-  let cam = null; // mirror of the renderer's camera
+  /** @type {S.Camera | null} mirror of the renderer's camera */
+  let cam = null;
   let userCamera = false;
   let fitKey = '';
+  /** @type {Record<number, number> | null} colour limit per colour mode (1 ε_x … 4 |ε|) */
   let ranges = null;
+  /** @type {number | null} largest true deflection over the run (m) */
   let runDeflection = null;
   let raf = 0;
   let pending = 0;
   let dirty = false;
+  /** @type {IntersectionObserver | null} */
   let io = null;
+  /** @type {ResizeObserver | null} */
   let ro = null;
   const box = el('div', { class: 'wl-wing3d-box', 'data-wing3d': '', 'data-state': 'loading' });
   if (!document.getElementById('wing3d')) box.id = 'wing3d';
@@ -170,14 +180,16 @@ export function mount(ctx) {
       fe = await engine.ensureFe();
       store.set({ fe });
     } catch (e) {
-      unavailable(`the FE wing could not be computed: ${e && e.message ? e.message : e}`);
+      unavailable(`the FE wing could not be computed: ${errorText(e)}`);
       return;
     }
     fitCanvas();
+    const renderer = engine.renderer;
+    if (!renderer) return;
     try {
-      view = await engine.renderer.createFromArrays(canvas, fe.nodes, fe.triangles, fe.shapes, fe.strain_nodes);
+      view = await renderer.createFromArrays(canvas, fe.nodes, fe.triangles, fe.shapes, fe.strain_nodes);
     } catch (e) {
-      unavailable(e && e.message ? e.message : String(e));
+      unavailable(errorText(e));
       return;
     }
     cam = S.defaultCamera(S.spanOf(fe.nodes));
@@ -195,13 +207,14 @@ export function mount(ctx) {
     if (started || io) return;
     if (typeof IntersectionObserver !== 'function') { start(); return; }
     status.textContent = 'The 3-D view starts when this panel is on screen.';
-    io = new IntersectionObserver((entries) => {
+    const obs = new IntersectionObserver((entries) => {
       if (entries.some((e) => e.isIntersecting)) {
-        io.disconnect();
+        obs.disconnect();
         start();
       }
     });
-    io.observe(box);
+    io = obs;
+    obs.observe(box);
   }
 
   /** Drawing-buffer size from the stage (device pixels). Returns true when it changed. */
@@ -216,7 +229,7 @@ export function mount(ctx) {
     canvas.width = W;
     canvas.height = H;
     if (view) {
-      try { view.resize(W, H); } catch (e) { status.textContent = `resize: ${e.message || e}`; }
+      try { view.resize(W, H); } catch (e) { status.textContent = `resize: ${errorText(e)}`; }
     }
     return true;
   }
@@ -246,6 +259,7 @@ export function mount(ctx) {
     const lift = (runDeflection || 0) * exaggeration();
     if (search || !fitKey) {
       const best = S.bestView(S.spanOf(fe.nodes), fe.nodes, fe.triangles, ps, canvas.width, canvas.height, { lift });
+      if (!best) return;
       moveCamera(best.camera);
       box.dataset.coverage = best.coverage.toFixed(3);
     } else {
@@ -287,6 +301,7 @@ export function mount(ctx) {
     if (!dirty || !view || !fe) return;
     dirty = false;
     const s = store.get();
+    if (!s.result) return;
     const a = s.result.analysis;
     const qs = a.sim.modes.map((m) => m.q.total);
     const n = fe.nodes.length / 3;
@@ -345,13 +360,14 @@ export function mount(ctx) {
   }
 
   function bindCamera() {
+    /** @type {number[] | null} */
     let last = null;
     canvas.addEventListener('pointerdown', (e) => { last = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
     canvas.addEventListener('pointermove', (e) => {
       if (!last || !view) return;
       const dx = e.clientX - last[0], dy = e.clientY - last[1];
       view.orbit(dx, dy);
-      cam = S.orbit(cam, dx, dy);
+      if (cam) cam = S.orbit(cam, dx, dy);
       userCamera = true;
       last = [e.clientX, e.clientY];
       draw();
@@ -396,7 +412,11 @@ export function mount(ctx) {
     ];
     const show = { fixed: showAxes.checked, wing: showAxes.checked, body: showAxes.checked, plane: showPlane.checked };
     // the plane's label goes to the first of its corners / edge midpoints that is on screen
-    const inView = (p) => p && p[0] > 10 && p[0] < w - 90 && p[1] > 20 && p[1] < h - 10;
+    /**
+     * @param {number[] | null} p
+     * @returns {p is number[]}
+     */
+    const inView = (p) => !!p && p[0] > 10 && p[0] < w - 90 && p[1] > 20 && p[1] < h - 10;
     // ... the one farthest from the wing (its middle, at this pose), so it does not sit on the wing
     const mid = pr(...S.rotate(ang[0], ang[1], ang[2], [0.45 * l, -0.2 * l, 0])) || [w / 2, h / 2];
     const planeAt = [[1.1 * l, 0, 0.9 * l], [1.1 * l, 0, -0.9 * l], [0.5 * l, 0, 0.9 * l], [0.5 * l, 0, -0.9 * l], [-0.1 * l, 0, 0.9 * l], [-0.1 * l, 0, -0.9 * l], [1.1 * l, 0, 0]]
@@ -417,7 +437,7 @@ export function mount(ctx) {
     const r = s.result;
     describeTime();
     time.value = String(s.t3d ?? 0);
-    if (!view || !r || !r.angles) return;
+    if (!view || !fe || !r || !r.angles) return;
     refresh();
     const a = r.analysis;
     const n = a.sim.t.length;
@@ -431,7 +451,7 @@ export function mount(ctx) {
       lg = view.set_frame(ang[0], ang[1], ang[2], q, ex, Number(colour.value));
       view.render();
     } catch (e) {
-      status.textContent = `render: ${e.message || e}`;
+      status.textContent = `render: ${errorText(e)}`;
       return;
     }
     frames += 1;
@@ -456,7 +476,8 @@ export function mount(ctx) {
   }
 
   function drawLegend(lg, isFe) {
-    const c2 = legend.getContext('2d');
+    if (!view) return;
+    const c2 = context2d(legend);
     const { width: w, height: h } = legend;
     c2.clearRect(0, 0, w, h);
     const stops = view.legend_stops();
