@@ -27,7 +27,7 @@ fn gamma_sweep(c: &mut Criterion) {
     let mut g = c.benchmark_group("sweep");
     g.sample_size(20);
     g.bench_function("γ0 sweep, 31 points, 2 s each", |b| {
-        b.iter(|| sweep(black_box(&cfg), &opts, |_, _| {}).unwrap())
+        b.iter(|| sweep(black_box(&cfg), &opts, |_, _| {}).unwrap());
     });
     g.finish();
 }
@@ -36,7 +36,7 @@ fn ic(c: &mut Criterion) {
     let cfg = SimConfig::paper();
     let opts = IcMapOptions::default();
     c.bench_function("IC map 101×101, mode 1, 2 s", |b| {
-        b.iter(|| ic_map(black_box(&cfg), &opts).unwrap())
+        b.iter(|| ic_map(black_box(&cfg), &opts).unwrap());
     });
 }
 

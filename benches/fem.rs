@@ -24,7 +24,7 @@ fn bench_wing(c: &mut Criterion) {
             r.freq_hz[1]
         );
         group.bench_function(format!("h={h}mm"), |b| {
-            b.iter(|| compute_modes(black_box(&input)).unwrap())
+            b.iter(|| compute_modes(black_box(&input)).unwrap());
         });
     }
     group.finish();
@@ -46,7 +46,7 @@ fn bench_backends(c: &mut Criterion) {
                 ..EigenOptions::default()
             };
             group.bench_function(format!("{}/h={h}mm", backend.name()), |b| {
-                b.iter(|| compute_modes_with(black_box(&input), opt).unwrap())
+                b.iter(|| compute_modes_with(black_box(&input), opt).unwrap());
             });
         }
     }

@@ -1,18 +1,6 @@
 // Scene decorations: the fixed frame, the I″–J″–K″ triad, the body axis (line list) and the
-// translucent stroke plane (triangle list, alpha-blended). Same uniform block as wing.wgsl.
-
-struct Uniforms {
-    view_proj: mat4x4<f32>,
-    frame_rot: mat4x4<f32>,
-    wing_rot: mat4x4<f32>,
-    q0: vec4<f32>,
-    q1: vec4<f32>,
-    eye: vec4<f32>,
-    light: vec4<f32>,
-    params: vec4<f32>,
-};
-
-@group(0) @binding(0) var<uniform> u: Uniforms;
+// translucent stroke plane (triangle list, alpha-blended). Compiled after shaders/prelude.wgsl
+// (the uniform block `u`, shared with wing.wgsl).
 
 struct VertexIn {
     @location(0) pos: vec3<f32>,

@@ -3,26 +3,8 @@
 //
 // Per vertex (stride 140 bytes): undeformed position (x, y, camber z) in metres, then for up
 // to 8 modes the shape φ_k and the strains ε_x,k, ε_y,k, γ_xy,k, each packed 4 modes per vec4.
-
-struct Uniforms {
-    view_proj: mat4x4<f32>,
-    // R_x(α)·R_y(β): the rotating frame I″–J″–K″.
-    frame_rot: mat4x4<f32>,
-    // R_x(α)·R_y(β)·R_z(γ): the wing.
-    wing_rot: mat4x4<f32>,
-    // True modal coordinates q_0..q_3 and q_4..q_7.
-    q0: vec4<f32>,
-    q1: vec4<f32>,
-    // Eye position (xyz).
-    eye: vec4<f32>,
-    // Direction toward the light (xyz), unit.
-    light: vec4<f32>,
-    // x: exaggeration, y: colour mode (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude),
-    // z: 1 / legend limit, w: 1 when the target is sRGB (else the shader gamma-encodes).
-    params: vec4<f32>,
-};
-
-@group(0) @binding(0) var<uniform> u: Uniforms;
+//
+// Compiled after shaders/prelude.wgsl (the uniform block `u`, `diverging`, `srgb_to_linear`).
 
 struct VertexIn {
     @location(0) pos: vec3<f32>,
@@ -69,28 +51,6 @@ fn vs_main(v: VertexIn) -> VertexOut {
     out.world = world;
     out.t = 0.5 + 0.5 * clamp(s * u.params.z, -1.0, 1.0);
     return out;
-}
-
-fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
-    return pow(c, vec3<f32>(2.2));
-}
-
-// Moreland's cool-warm diverging map, the same stops as `scene::DIVERGING_STOPS`.
-fn diverging(t: f32) -> vec3<f32> {
-    let c0 = vec3<f32>(0.230, 0.299, 0.754);
-    let c1 = vec3<f32>(0.552, 0.690, 0.996);
-    let c2 = vec3<f32>(0.865, 0.865, 0.865);
-    let c3 = vec3<f32>(0.956, 0.604, 0.486);
-    let c4 = vec3<f32>(0.706, 0.016, 0.150);
-    let x = clamp(t, 0.0, 1.0) * 4.0;
-    if (x < 1.0) {
-        return mix(c0, c1, x);
-    } else if (x < 2.0) {
-        return mix(c1, c2, x - 1.0);
-    } else if (x < 3.0) {
-        return mix(c2, c3, x - 2.0);
-    }
-    return mix(c3, c4, x - 3.0);
 }
 
 @fragment

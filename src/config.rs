@@ -51,6 +51,16 @@ impl SimConfig {
         Self::default()
     }
 
+    /// The `fe-wing` preset: the paper's forward-flight kinematics (Table 5) with the first
+    /// [`presets::FE_WING_MODES`] shell-FE modes of the default wing
+    /// ([`presets::fe_wing_modes`]). Takes about a second natively.
+    pub fn fe_wing() -> Result<Self> {
+        Ok(SimConfig {
+            modes: presets::fe_wing_modes()?,
+            ..SimConfig::paper()
+        })
+    }
+
     /// Parses a JSON config; unknown fields are errors, missing ones take the paper's values.
     pub fn from_json(text: &str) -> Result<Self> {
         serde_json::from_str(text).map_err(|e| WingbeatError::Parse {

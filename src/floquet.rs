@@ -12,6 +12,7 @@
 //! * The beat: the forced response at harmonic n_b·f_d beats against the effective frequency
 //!   with period 1 / |f_eff − n_b f_d|. The paper's mode-1 Coriolis beat uses n_b = 2.
 
+pub use crate::solve::propagator::multipliers;
 use crate::solve::propagator::period_map;
 use crate::solve::LinearOde;
 use nalgebra::{Complex, Matrix2, Vector2};
@@ -34,27 +35,6 @@ pub fn is_stable(l: &[C64; 2]) -> bool {
         m <= 1.0 + STABILITY_TOL
     } else {
         m <= 1.0 + STABILITY_TOL_REAL
-    }
-}
-
-/// Eigenvalues of a real 2×2 matrix.
-pub fn multipliers(m: &Matrix2<f64>) -> [C64; 2] {
-    let tr = m[(0, 0)] + m[(1, 1)];
-    let det = m[(0, 0)] * m[(1, 1)] - m[(0, 1)] * m[(1, 0)];
-    let disc = tr * tr - 4.0 * det;
-    if disc >= 0.0 {
-        let s = disc.sqrt();
-        // Numerically stable pair: larger root first, the other from det / larger.
-        let l1 = if tr >= 0.0 {
-            0.5 * (tr + s)
-        } else {
-            0.5 * (tr - s)
-        };
-        let l2 = if l1 != 0.0 { det / l1 } else { 0.0 };
-        [C64::new(l1, 0.0), C64::new(l2, 0.0)]
-    } else {
-        let s = (-disc).sqrt();
-        [C64::new(0.5 * tr, 0.5 * s), C64::new(0.5 * tr, -0.5 * s)]
     }
 }
 

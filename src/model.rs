@@ -16,7 +16,7 @@
 //!
 //! Units: with mass-normalised mode shapes (∫φ_k φ_e dm = δ_ke, φ in kg^-½) a_k is in
 //! kg^½·m, q_k in kg^½·m, the forcing terms in kg^½·m/s². The paper's Table 4 vectors are not
-//! in those units (see `MODEL.md`); the `paper` preset uses them as printed.
+//! in those units (see `docs/model.md`); the `paper` preset uses them as printed.
 
 use crate::error::{check_range, Result, WingbeatError};
 use crate::kinematics::{Kinematics, RateState};

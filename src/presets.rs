@@ -1,6 +1,6 @@
 //! The paper's data (Jankauski & Shen, Tables 3–6) as ready-made inputs.
 //!
-//! Caveats (see `MODEL.md`): Table 4's a_k are used exactly as printed, although they are not
+//! Caveats (see `docs/model.md`): Table 4's a_k are used exactly as printed, although they are not
 //! SI values for mass-normalised modes (for a ≈ 60 mg wing, |a_x| of mode 1 should be of order
 //! 1e-4 kg^½·m). Every response of a mode scales with its a_k, so relative results — force
 //! contributions, spectra shapes, beat periods — are unaffected; absolute q and strain are not
@@ -59,22 +59,19 @@ pub fn paper_kinematics() -> Kinematics {
 /// Number of shell-FE modes in the `fe-wing` preset.
 pub const FE_WING_MODES: usize = 4;
 
-/// The `fe-wing` preset: the paper's forward-flight kinematics (Table 5) with the first
-/// [`FE_WING_MODES`] shell-FE modes of the default wing (the synthetic Manduca-like outline,
-/// 13 % camber, root clamp, "paper-frequencies" material, 1 mm elements): SI a_k in kg^½·m and
-/// the modal strains at P = [`crate::fem::STRAIN_POINT_P_MM`]. Takes about a second natively.
-pub fn fe_wing_config() -> crate::Result<crate::config::SimConfig> {
+/// The modes of the `fe-wing` preset: the first [`FE_WING_MODES`] shell-FE modes of the
+/// default wing (the synthetic Manduca-like outline, 13 % camber, root clamp,
+/// "paper-frequencies" material, 1 mm elements): SI a_k in kg^½·m and the modal strains at
+/// P = [`crate::fem::STRAIN_POINT_P_MM`]. Takes about a second natively. The whole preset
+/// (these modes under the paper's kinematics) is [`crate::config::SimConfig::fe_wing`].
+pub fn fe_wing_modes() -> crate::Result<Vec<Mode>> {
     let input = crate::fem::FemInput {
         n_modes: FE_WING_MODES,
         ..Default::default()
     };
     let fe = crate::fem::compute_modes(&input)?;
     let (x, y) = crate::fem::STRAIN_POINT_P_MM;
-    let modes = fe.model_modes(0.0, &[("P".to_string(), x, y)], "strain point")?;
-    Ok(crate::config::SimConfig {
-        modes,
-        ..crate::config::SimConfig::paper()
-    })
+    fe.model_modes(0.0, &[("P".to_string(), x, y)], "strain point")
 }
 
 /// Names of the built-in presets.

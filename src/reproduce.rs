@@ -6,13 +6,16 @@
 
 use crate::analysis::beat::measure;
 use crate::analysis::contribution::Contributions;
-use crate::analysis::ic_map::{ic_map, IcAttribution, IcMapOptions};
+use crate::analysis::ic_map::{ic_map, IcAttribution, IcMap, IcMapOptions};
+use crate::analysis::psd::{welch, Detrend, WelchOptions};
 use crate::analysis::strain::peak_abs;
 use crate::analysis::sweep::{sweep, SweepOptions, SweepParam};
 use crate::config::SimConfig;
 use crate::error::Result;
-use crate::model::coefficients;
-use crate::simulate::simulate;
+use crate::fem::{compute_modes, Clamp, FemInput, FemModes, ShellMaterial};
+use crate::kinematics::Compiled;
+use crate::model::{coefficients, stiffness_coefficient, ForceTerm};
+use crate::simulate::{simulate, SimResult};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -151,21 +154,14 @@ fn fmt_c(c: &Contributions) -> String {
     )
 }
 
-fn claim(
-    claims: &mut Vec<Claim>,
-    id: &str,
-    section: &str,
-    says: &str,
-    computed: String,
-    verdict: Verdict,
-) {
-    claims.push(Claim {
+fn claim(id: &str, section: &str, says: &str, computed: String, verdict: Verdict) -> Claim {
+    Claim {
         id: id.into(),
         section: section.into(),
         paper_says: says.into(),
         computed,
         verdict,
-    });
+    }
 }
 
 fn yes(b: bool) -> Verdict {
@@ -180,49 +176,156 @@ fn yes(b: bool) -> Verdict {
 /// f1 is within about 2 % of the fine-mesh value).
 pub const FE_MESH_MM: f64 = 1.5;
 
+/// What several claims share, computed once: the paper case, its kinematics, the FE runs of
+/// §3.1, the harmonic content of the mode-1 force terms, and the 2 s and 10 s simulations.
+struct Context {
+    cfg: SimConfig,
+    /// Flap frequency f_d, Hz.
+    fd: f64,
+    /// Flap period, s.
+    period: f64,
+    /// Sample rate, Hz.
+    fs: f64,
+    kin: Compiled,
+    /// FE of the default outline: root clamp, the material as printed, a 3 mm basal strip.
+    fe: FemModes,
+    printed: FemModes,
+    strip: FemModes,
+    /// Harmonic amplitudes 0..=NH of mode 1's Euler, centrifugal and Coriolis forces and of
+    /// the stiffness coefficient.
+    he: Vec<f64>,
+    hc: Vec<f64>,
+    hr: Vec<f64>,
+    hs: Vec<f64>,
+    /// The paper case over 2 s and over 10 s (where a beat is measured).
+    sim: SimResult,
+    sim_long: SimResult,
+}
+
+/// Harmonics examined in the Fig. 4 claims.
+const NH: usize = 8;
+
+impl Context {
+    fn new() -> Result<Self> {
+        let cfg = SimConfig::paper();
+        let fd = cfg.kinematics.flap_freq_hz;
+        let period = 1.0 / fd;
+        let kin = cfg.kinematics.compile();
+        let fe_in = FemInput {
+            n_modes: 2,
+            mesh_size_mm: FE_MESH_MM,
+            ..Default::default()
+        };
+        let fe = compute_modes(&fe_in)?;
+        let printed = compute_modes(&FemInput {
+            material: ShellMaterial::paper_as_printed(),
+            ..fe_in.clone()
+        })?;
+        let strip = compute_modes(&FemInput {
+            clamp: Clamp::Strip { x_mm: 3.0 },
+            ..fe_in
+        })?;
+        let m1 = &cfg.modes[0];
+        let kin_ref = &kin;
+        let term =
+            |k: usize| move |t: f64| coefficients(m1, &kin_ref.state(t)).force(ForceTerm::ALL[k]);
+        let he = harmonic_amplitudes(term(0), period, NH);
+        let hc = harmonic_amplitudes(term(1), period, NH);
+        let hr = harmonic_amplitudes(term(2), period, NH);
+        let hs = harmonic_amplitudes(|t| stiffness_coefficient(&kin.state(t)), period, NH);
+        let sim = simulate(&cfg)?;
+        let sim_long = simulate(&SimConfig {
+            duration_s: 10.0,
+            ..cfg.clone()
+        })?;
+        Ok(Context {
+            fs: cfg.sample_rate_hz,
+            fd,
+            period,
+            kin,
+            fe,
+            printed,
+            strip,
+            he,
+            hc,
+            hr,
+            hs,
+            sim,
+            sim_long,
+            cfg,
+        })
+    }
+}
+
+/// One claim of the paper, checked against the computation.
+type ClaimCheck = fn(&Context) -> Result<Claim>;
+
+/// The claims of the report, in the paper's order.
+const CLAIMS: [ClaimCheck; 16] = [
+    material_as_printed,
+    natural_frequencies,
+    force_magnitudes,
+    stiffness_coriolis_2wd,
+    centrifugal_3wd,
+    euler_wd,
+    mode1_coriolis_dominant,
+    mode1_coriolis_beat,
+    mode2_centrifugal_dominant,
+    mode2_beat_3wd,
+    beat_proportional_to_gamma0,
+    fig6_coriolis_vs_gamma0,
+    fig7_ic_map,
+    fig8_damping,
+    fig9_shear_largest,
+    fig9_strain_beat,
+];
+
 /// Builds the report for the paper's forward-flight case.
 pub fn reproduce() -> Result<Report> {
-    let cfg = SimConfig::paper();
-    let fd = cfg.kinematics.flap_freq_hz;
-    let period = 1.0 / fd;
-    let kin_owned = cfg.kinematics.compile();
-    let kin = &kin_owned;
-    let fs = cfg.sample_rate_hz;
-    let mut claims = Vec::new();
+    let ctx = Context::new()?;
+    let claims = CLAIMS
+        .iter()
+        .map(|check| check(&ctx))
+        .collect::<Result<Vec<_>>>()?;
+    let mut summary = Summary::default();
+    for c in &claims {
+        match c.verdict {
+            Verdict::Holds => summary.holds += 1,
+            Verdict::Partly => summary.partly += 1,
+            Verdict::Fails => summary.fails += 1,
+            Verdict::Input => summary.input += 1,
+        }
+    }
+    Ok(Report {
+        case: "paper preset: forward flight α0 = 0.8, β0 = 0.5, γ0 = 0.2 rad, f_d = 25 Hz; modes 62.5 / 86.9 Hz with Table 4 vectors as printed; ζ = 0; q(0) = q̇(0) = 0; 2 s at 10 kHz (10 s where a beat is measured)".into(),
+        claims,
+        summary,
+    })
+}
 
-    // ---- §3.1: the FE step, with wingbeat's own shell model of the synthetic outline ----
-    use crate::fem::{compute_modes, Clamp, FemInput, ShellMaterial};
-    let fe_in = FemInput {
-        n_modes: 2,
-        mesh_size_mm: FE_MESH_MM,
-        ..Default::default()
-    };
-    let fe = compute_modes(&fe_in)?;
-    let printed = compute_modes(&FemInput {
-        material: ShellMaterial::paper_as_printed(),
-        ..fe_in.clone()
-    })?;
-    let strip = compute_modes(&FemInput {
-        clamp: Clamp::Strip { x_mm: 3.0 },
-        ..fe_in.clone()
-    })?;
-    let (f1, f2) = (fe.freq_hz[0], fe.freq_hz[1]);
-    let (s1, s2) = (strip.freq_hz[0], strip.freq_hz[1]);
-    let paper_ratio = crate::presets::PAPER_FREQ_HZ[1] / crate::presets::PAPER_FREQ_HZ[0];
-    claim(
-        &mut claims,
+// ---- §3.1: the FE step, with wingbeat's own shell model of the synthetic outline ----
+
+fn material_as_printed(c: &Context) -> Result<Claim> {
+    let f1 = c.fe.freq_hz[0];
+    Ok(claim(
         "material-as-printed",
         "§3.1, Table 2",
         "A paper wing with t = 81 µm, E = 10 MPa, ρ = 860 kg/m³, ν = 0.3 and 13 % camber has f1 = 62.5 Hz.",
         format!(
             "Shell FE of the synthetic Manduca-like outline ({FE_MESH_MM} mm mesh, root clamp): E = 10 MPa gives f1 = {:.3} Hz. Frequencies scale with √E; f1 = 62.5 Hz needs E ≈ {:.1} GPa — the printed 10 MPa is a unit slip. Threshold: within 10 % of 62.5 Hz.",
-            printed.freq_hz[0],
+            c.printed.freq_hz[0],
             crate::fem::PAPER_FREQUENCIES_E_PA * (62.5 / f1).powi(2) / 1e9
         ),
-        yes((printed.freq_hz[0] / 62.5 - 1.0).abs() < 0.1),
-    );
-    claim(
-        &mut claims,
+        yes((c.printed.freq_hz[0] / 62.5 - 1.0).abs() < 0.1),
+    ))
+}
+
+fn natural_frequencies(c: &Context) -> Result<Claim> {
+    let (fe, strip) = (&c.fe, &c.strip);
+    let (f1, f2) = (fe.freq_hz[0], fe.freq_hz[1]);
+    let (s1, s2) = (strip.freq_hz[0], strip.freq_hz[1]);
+    let paper_ratio = crate::presets::PAPER_FREQ_HZ[1] / crate::presets::PAPER_FREQ_HZ[0];
+    Ok(claim(
         "natural-frequencies",
         "§3.1, Table 3",
         "The paper wing's first two modes are spanwise bending at 62.5 Hz and spanwise torsion at 86.9 Hz (f2/f1 = 1.39), within 4.5 % of the insect's 60 / 84 Hz.",
@@ -246,42 +349,39 @@ pub fn reproduce() -> Result<Report> {
         } else {
             Verdict::Fails
         },
-    );
+    ))
+}
 
-    // ---- Fig. 4: magnitudes and spectra of the system parameters (mode 1) ----
-    let m1 = &cfg.modes[0];
-    let term = |k: usize| {
-        move |t: f64| coefficients(m1, &kin.state(t)).force(crate::model::ForceTerm::ALL[k])
-    };
-    let peak_of = |f: &dyn Fn(f64) -> f64| {
+// ---- Fig. 4: magnitudes and spectra of the system parameters (mode 1) ----
+
+fn force_magnitudes(c: &Context) -> Result<Claim> {
+    let m1 = &c.cfg.modes[0];
+    let kin = &c.kin;
+    let peak = |k: usize| {
         (0..2000)
-            .map(|j| f(j as f64 * period / 2000.0).abs())
+            .map(|j| {
+                let t = j as f64 * c.period / 2000.0;
+                coefficients(m1, &kin.state(t))
+                    .force(ForceTerm::ALL[k])
+                    .abs()
+            })
             .fold(0.0, f64::max)
     };
-    let pe = peak_of(&term(0));
-    let pc = peak_of(&term(1));
-    let pr = peak_of(&term(2));
-    claim(
-        &mut claims,
+    let (pe, pc, pr) = (peak(0), peak(1), peak(2));
+    Ok(claim(
         "force-magnitudes",
         "§3.3, Fig. 4",
         "For mode 1 the Euler force has the largest magnitude, the Coriolis force the second largest, the centrifugal force the smallest.",
         format!("Peak |F| over a flap: Euler {pe:.4e}, Coriolis {pr:.4e}, centrifugal {pc:.4e} (Table 4 units)."),
         yes(pe > pr && pr > pc),
-    );
-    let nh = 8;
-    let he = harmonic_amplitudes(term(0), period, nh);
-    let hc = harmonic_amplitudes(term(1), period, nh);
-    let hr = harmonic_amplitudes(term(2), period, nh);
-    let hs = harmonic_amplitudes(
-        |t| crate::model::stiffness_coefficient(&kin.state(t)),
-        period,
-        nh,
-    );
-    let (ks, ss) = argmax_ac(&hs);
-    let (kr, sr) = argmax_ac(&hr);
-    claim(
-        &mut claims,
+    ))
+}
+
+fn stiffness_coriolis_2wd(c: &Context) -> Result<Claim> {
+    let (hs, hr) = (&c.hs, &c.hr);
+    let (ks, ss) = argmax_ac(hs);
+    let (kr, sr) = argmax_ac(hr);
+    Ok(claim(
         "stiffness-coriolis-2wd",
         "§3.3",
         "The stiffness term and the Coriolis force vary nearly sinusoidally at about 2ω_d.",
@@ -294,10 +394,13 @@ pub fn reproduce() -> Result<Report> {
             hr[2]
         ),
         yes(ks == 2 && kr == 2 && ss > 0.9 && sr > 0.9),
-    );
-    let (kc, _) = argmax_ac(&hc);
-    claim(
-        &mut claims,
+    ))
+}
+
+fn centrifugal_3wd(c: &Context) -> Result<Claim> {
+    let hc = &c.hc;
+    let (kc, _) = argmax_ac(hc);
+    Ok(claim(
         "centrifugal-3wd",
         "§3.3",
         "The centrifugal force oscillates predominantly at 3ω_d, with a subharmonic at ω_d.",
@@ -307,20 +410,23 @@ pub fn reproduce() -> Result<Report> {
             hc[2],
             hc[3],
             hc[4],
-            100.0 * share(&hc, 1),
-            100.0 * share(&hc, 3)
+            100.0 * share(hc, 1),
+            100.0 * share(hc, 3)
         ),
-        if kc == 3 && share(&hc, 3) >= 2.0 / 3.0 {
+        if kc == 3 && share(hc, 3) >= 2.0 / 3.0 {
             Verdict::Holds
         } else if kc == 3 || hc[3] > 0.5 * hc[kc] {
             Verdict::Partly
         } else {
             Verdict::Fails
         },
-    );
-    let (ke, se) = argmax_ac(&he);
-    claim(
-        &mut claims,
+    ))
+}
+
+fn euler_wd(c: &Context) -> Result<Claim> {
+    let he = &c.he;
+    let (ke, se) = argmax_ac(he);
+    Ok(claim(
         "euler-wd",
         "§3.3",
         "The Euler force oscillates at ω_d with superharmonics 2ω_d, 3ω_d, …; 3ω_d and above are negligible.",
@@ -331,35 +437,32 @@ pub fn reproduce() -> Result<Report> {
             he[3],
             he[4],
             100.0 * se,
-            100.0 * (3..=nh).map(|h| share(&he, h)).sum::<f64>()
+            100.0 * (3..=NH).map(|h| share(he, h)).sum::<f64>()
         ),
-        yes(ke == 1 && (3..=nh).map(|h| share(&he, h)).sum::<f64>() < 0.05),
-    );
+        yes(ke == 1 && (3..=NH).map(|h| share(he, h)).sum::<f64>() < 0.05),
+    ))
+}
 
-    // ---- §3.4: responses ----
-    let sim = simulate(&cfg)?;
-    let r1 = &sim.modes[0];
-    let r2 = &sim.modes[1];
-    let c1 = r1.contribution_percent;
-    claim(
-        &mut claims,
+// ---- §3.4: responses ----
+
+fn mode1_coriolis_dominant(c: &Context) -> Result<Claim> {
+    let c1 = c.sim.modes[0].contribution_percent;
+    Ok(claim(
         "mode1-coriolis-dominant",
         "§3.4, Fig. 5; §4.1",
         "Mode 1's response is dominated by the Coriolis force; the Euler force gives the second largest response; the centrifugal contribution is very minor.",
         format!("Contributions over 2 s: {} (shares need not sum to 100 %: cross terms).", fmt_c(&c1)),
         yes(c1.coriolis > c1.euler && c1.euler > c1.centrifugal && c1.centrifugal < 10.0),
-    );
-    let fl1 = &r1.floquet;
-    let long = SimConfig {
-        duration_s: 10.0,
-        ..cfg.clone()
-    };
-    let sim_long = simulate(&long)?;
-    let b1 = measure(&sim_long.modes[0].q.coriolis, fs, fd, 0.0, 1.0);
+    ))
+}
+
+fn mode1_coriolis_beat(c: &Context) -> Result<Claim> {
+    let (fd, fs) = (c.fd, c.fs);
+    let fl1 = &c.sim.modes[0].floquet;
+    let b1 = measure(&c.sim_long.modes[0].q.coriolis, fs, fd, 0.0, 1.0);
     let pred1 = (fl1.effective_freq_hz - 2.0 * fd).abs();
     let meas1 = b1.beat_freq_hz.unwrap_or(f64::NAN);
-    claim(
-        &mut claims,
+    Ok(claim(
         "mode1-coriolis-beat",
         "§3.4, §4",
         "The Coriolis response of mode 1 shows a clear beat between the 2ω_d forcing and the effective natural frequency of mode 1.",
@@ -373,11 +476,13 @@ pub fn reproduce() -> Result<Report> {
             b1.modulation_index
         ),
         yes(b1.modulation_index > 0.2 && ((meas1 - pred1) / pred1).abs() < 0.01),
-    );
-    let c2 = r2.contribution_percent;
+    ))
+}
+
+fn mode2_centrifugal_dominant(c: &Context) -> Result<Claim> {
+    let c2 = c.sim.modes[1].contribution_percent;
     let (dom2, _) = c2.dominant();
-    claim(
-        &mut claims,
+    Ok(claim(
         "mode2-centrifugal-dominant",
         "§3.4; §5",
         "Mode 2's response is dominated by the centrifugal force; Euler and Coriolis contributions are comparatively low.",
@@ -387,14 +492,17 @@ pub fn reproduce() -> Result<Report> {
         } else {
             Verdict::Fails
         },
-    );
-    let fl2 = &r2.floquet;
-    let b2c = measure(&sim_long.modes[1].q.centrifugal, fs, fd, 0.0, 1.0);
-    let b2t = measure(&sim_long.modes[1].q.total, fs, fd, 0.0, 1.0);
+    ))
+}
+
+fn mode2_beat_3wd(c: &Context) -> Result<Claim> {
+    let (fd, fs) = (c.fd, c.fs);
+    let fl2 = &c.sim.modes[1].floquet;
+    let b2c = measure(&c.sim_long.modes[1].q.centrifugal, fs, fd, 0.0, 1.0);
+    let b2t = measure(&c.sim_long.modes[1].q.total, fs, fd, 0.0, 1.0);
     let pred2 = (fl2.effective_freq_hz - 3.0 * fd).abs();
     let close = |m: Option<f64>| m.is_some_and(|m| ((m - pred2) / pred2).abs() < 0.02);
-    claim(
-        &mut claims,
+    Ok(claim(
         "mode2-beat-3wd",
         "§3.4",
         "Mode 2 shows a beat between 3ω_d and its effective natural frequency.",
@@ -414,14 +522,16 @@ pub fn reproduce() -> Result<Report> {
         } else {
             Verdict::Fails
         },
-    );
+    ))
+}
 
-    // ---- §4: beat amplitude ∝ γ0 ----
-    let half = crate::analysis::sweep::apply(&cfg, SweepParam::Gamma0, 0.1)?;
+// ---- §4: beat amplitude ∝ γ0 ----
+
+fn beat_proportional_to_gamma0(c: &Context) -> Result<Claim> {
+    let half = crate::analysis::sweep::apply(&c.cfg, SweepParam::Gamma0, 0.1)?;
     let sim_half = simulate(&half)?;
-    let ratio = peak_abs(&r1.q.coriolis) / peak_abs(&sim_half.modes[0].q.coriolis);
-    claim(
-        &mut claims,
+    let ratio = peak_abs(&c.sim.modes[0].q.coriolis) / peak_abs(&sim_half.modes[0].q.coriolis);
+    Ok(claim(
         "beat-proportional-to-gamma0",
         "§4",
         "The beat amplitude is proportional to the yaw amplitude γ0.",
@@ -429,11 +539,15 @@ pub fn reproduce() -> Result<Report> {
             "Peak Coriolis response of mode 1 at γ0 = 0.2 over γ0 = 0.1: {ratio:.12} (exactly 2 expected: the Coriolis force is linear in γ̇). Threshold: |ratio − 2| < 1e-9."
         ),
         yes((ratio - 2.0).abs() < 1e-9),
-    );
+    ))
+}
 
-    // ---- §4.1, Fig. 6 ----
+// ---- §4.1, Fig. 6 ----
+
+fn fig6_coriolis_vs_gamma0(c: &Context) -> Result<Claim> {
+    let c1 = c.sim.modes[0].contribution_percent;
     let sw = sweep(
-        &cfg,
+        &c.cfg,
         &SweepOptions {
             param: SweepParam::Gamma0,
             from: 0.0,
@@ -453,8 +567,7 @@ pub fn reproduce() -> Result<Report> {
     let spread = [c01.coriolis, c02.coriolis, c03.coriolis]
         .iter()
         .fold((f64::MAX, f64::MIN), |(lo, hi), &v| (lo.min(v), hi.max(v)));
-    claim(
-        &mut claims,
+    Ok(claim(
         "fig6-coriolis-vs-gamma0",
         "§4.1, Fig. 6",
         "At γ0 = 0.2 the Coriolis contribution is substantially larger than the other two; across the forward-flight range even large changes of γ0 change it only slightly.",
@@ -472,19 +585,21 @@ pub fn reproduce() -> Result<Report> {
             (false, false) => Verdict::Fails,
             _ => Verdict::Partly,
         },
-    );
+    ))
+}
 
-    // ---- §4.2, Fig. 7 ----
-    let icf = ic_map(&cfg, &IcMapOptions::default())?;
+// ---- §4.2, Fig. 7 ----
+
+fn fig7_ic_map(c: &Context) -> Result<Claim> {
+    let icf = ic_map(&c.cfg, &IcMapOptions::default())?;
     let icc = ic_map(
-        &cfg,
+        &c.cfg,
         &IcMapOptions {
             attribution: IcAttribution::Carried,
             ..Default::default()
         },
     )?;
-    claim(
-        &mut claims,
+    Ok(claim(
         "fig7-ic-map",
         "§4.2, Fig. 7",
         "Over initial conditions bounded by the zero-start response's extremes, the Coriolis contribution exceeds 60 % for most initial conditions and stays at about 33 % or more even at the extremes.",
@@ -498,36 +613,39 @@ pub fn reproduce() -> Result<Report> {
             icc.max_percent
         ),
         {
-            let ok = |m: &crate::analysis::ic_map::IcMap| m.fraction_above_60 >= 0.5 && m.min_percent >= 30.0;
+            let ok = |m: &IcMap| m.fraction_above_60 >= 0.5 && m.min_percent >= 30.0;
             match (ok(&icf), ok(&icc)) {
                 (true, true) => Verdict::Holds,
                 (false, false) => Verdict::Fails,
                 _ => Verdict::Partly,
             }
         },
-    );
+    ))
+}
 
-    // ---- §4.3, Fig. 8 ----
+// ---- §4.3, Fig. 8 ----
+
+fn fig8_damping(c: &Context) -> Result<Claim> {
+    let (fd, fs) = (c.fd, c.fs);
     let damped = SimConfig {
         duration_s: 10.0,
-        ..crate::analysis::sweep::apply(&cfg, SweepParam::Zeta, 0.01)?
+        ..crate::analysis::sweep::apply(&c.cfg, SweepParam::Zeta, 0.01)?
     };
     let sd = simulate(&damped)?;
     let early = measure(&sd.modes[0].q.coriolis, fs, fd, 0.0, 0.1);
     let late = measure(&sd.modes[0].q.coriolis, fs, fd, 0.8, 1.0);
     let tail = &sd.modes[0].q.coriolis[(0.8 * sd.t.len() as f64) as usize..];
-    let spec = crate::analysis::psd::welch(
+    let spec = welch(
         tail,
         fs,
-        &crate::analysis::psd::WelchOptions {
-            detrend: crate::analysis::psd::Detrend::Mean,
+        &WelchOptions {
+            detrend: Detrend::Mean,
             ..Default::default()
         },
         Some(fd),
     )?;
     let top = spec.peaks.first().map_or(f64::NAN, |p| p.freq_hz);
-    claim(
-        &mut claims,
+    Ok(claim(
         "fig8-damping",
         "§4.3, Fig. 8",
         "With 1 % damping the beat in mode 1's Coriolis response fades; after several seconds only the forced vibration at 2ω_d remains.",
@@ -535,21 +653,23 @@ pub fn reproduce() -> Result<Report> {
             "ζ = 0.01, 10 s: envelope modulation index {:.3} in the first second, {:.4} in the last two (free vibration decays as e^(−ζωt), time constant {:.3} s). Strongest oscillation in the last two seconds: {top:.2} Hz (2ω_d = {:.1} Hz). Thresholds: late index < 0.2 × early and peak within 1 Hz of 2f_d.",
             early.modulation_index,
             late.modulation_index,
-            1.0 / (0.01 * cfg.modes[0].omega()),
+            1.0 / (0.01 * c.cfg.modes[0].omega()),
             2.0 * fd
         ),
         yes(late.modulation_index < 0.2 * early.modulation_index && (top - 2.0 * fd).abs() < 1.0),
-    );
+    ))
+}
 
-    // ---- §4.4, Fig. 9 ----
-    let st = sim.strain.as_ref().expect("paper preset carries strains");
+// ---- §4.4, Fig. 9 ----
+
+fn fig9_shear_largest(c: &Context) -> Result<Claim> {
+    let st = c.sim.strain.as_ref().expect("paper preset carries strains");
     let (ex, ey, gxy) = (
         peak_abs(&st.eps_x),
         peak_abs(&st.eps_y),
         peak_abs(&st.gamma_xy),
     );
-    claim(
-        &mut claims,
+    Ok(claim(
         "fig9-shear-largest",
         "§4.4, Fig. 9; §5",
         "The shear strain γ_xy at P has by far the largest magnitude; ε_x and ε_y are comparatively negligible.",
@@ -557,8 +677,13 @@ pub fn reproduce() -> Result<Report> {
             "Peak |strain| at P over 2 s (Table 6 × Table 4 units): ε_x {ex:.4e}, ε_y {ey:.4e}, γ_xy {gxy:.4e}. Mode 1 dominates q, and its Table 6 ε_y (−1577) exceeds its γ_xy (691)."
         ),
         yes(gxy > ex && gxy > ey),
-    );
-    let sl = sim_long
+    ))
+}
+
+fn fig9_strain_beat(c: &Context) -> Result<Claim> {
+    let (fd, fs) = (c.fd, c.fs);
+    let sl = c
+        .sim_long
         .strain
         .as_ref()
         .expect("paper preset carries strains");
@@ -567,27 +692,11 @@ pub fn reproduce() -> Result<Report> {
         measure(&sl.eps_y, fs, fd, 0.0, 1.0).modulation_index,
         measure(&sl.gamma_xy, fs, fd, 0.0, 1.0).modulation_index,
     ];
-    claim(
-        &mut claims,
+    Ok(claim(
         "fig9-strain-beat",
         "§4.4",
         "All three strain components show the beat.",
         format!("Envelope modulation index over 10 s: ε_x {:.2}, ε_y {:.2}, γ_xy {:.2}. Threshold: > 0.1 each.", mods[0], mods[1], mods[2]),
         yes(mods.iter().all(|m| *m > 0.1)),
-    );
-
-    let mut summary = Summary::default();
-    for c in &claims {
-        match c.verdict {
-            Verdict::Holds => summary.holds += 1,
-            Verdict::Partly => summary.partly += 1,
-            Verdict::Fails => summary.fails += 1,
-            Verdict::Input => summary.input += 1,
-        }
-    }
-    Ok(Report {
-        case: "paper preset: forward flight α0 = 0.8, β0 = 0.5, γ0 = 0.2 rad, f_d = 25 Hz; modes 62.5 / 86.9 Hz with Table 4 vectors as printed; ζ = 0; q(0) = q̇(0) = 0; 2 s at 10 kHz (10 s where a beat is measured)".into(),
-        claims,
-        summary,
-    })
+    ))
 }

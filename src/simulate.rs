@@ -62,18 +62,7 @@ pub struct ModeResult {
     pub accuracy: Accuracy,
 }
 
-/// Strain time series at one point (Eqs. 16–18): Σ_k ε_k q_k(t).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct StrainSeries {
-    /// Point label.
-    pub point: String,
-    /// ε_x(t).
-    pub eps_x: Vec<f64>,
-    /// ε_y(t).
-    pub eps_y: Vec<f64>,
-    /// γ_xy(t).
-    pub gamma_xy: Vec<f64>,
-}
+pub use crate::analysis::strain::StrainSeries;
 
 /// A simulation's output.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -176,7 +165,8 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
             accuracy,
         });
     }
-    let strain_points = crate::analysis::strain::strain_series(&cfg.modes, &modes);
+    let totals: Vec<&[f64]> = modes.iter().map(|m| m.q.total.as_slice()).collect();
+    let strain_points = crate::analysis::strain::strain_series(&cfg.modes, &totals);
     Ok(SimResult {
         t,
         flap_freq_hz: cfg.kinematics.flap_freq_hz,

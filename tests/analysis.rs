@@ -160,7 +160,7 @@ fn ic_map_cells_equal_direct_simulations() {
         &cfg,
         &IcMapOptions {
             attribution: IcAttribution::Carried,
-            ..opts.clone()
+            ..opts
         },
     )
     .unwrap();

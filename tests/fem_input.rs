@@ -14,8 +14,9 @@ fn small(planform: Vec<[f64; 2]>) -> FemInput {
 
 fn field_of(e: &WingbeatError) -> String {
     match e {
-        WingbeatError::InvalidInput { field, .. } => field.clone(),
-        WingbeatError::ResourceCap { field, .. } => field.clone(),
+        WingbeatError::InvalidInput { field, .. } | WingbeatError::ResourceCap { field, .. } => {
+            field.clone()
+        }
         other => format!("{other}"),
     }
 }

@@ -1,4 +1,6 @@
 //! Property tests: identities that must hold for any admissible input.
+// proptest is a native-only dev-dependency.
+#![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
 use wingbeat::config::SimConfig;

@@ -167,7 +167,7 @@ fn validation_names_the_field() {
     let mut m = good.clone();
     m.strains[1][7][2] = f32::NAN;
     assert_eq!(field_of(m.validate().unwrap_err()), "strains[1][7][2]");
-    let mut m = good.clone();
+    let mut m = good;
     m.triangles.clear();
     assert_eq!(field_of(m.validate().unwrap_err()), "triangles");
     let m = WingMesh::default();
@@ -264,7 +264,7 @@ fn flat_arrays_round_trip_and_errors() {
     let mut s2 = shapes.clone();
     s2[3] = f64::NAN;
     assert_eq!(bad(&nodes, &tris, &s2, &strains), "shapes[0][3]");
-    let mut e2 = strains.clone();
+    let mut e2 = strains;
     e2[4] = f64::INFINITY;
     assert_eq!(bad(&nodes, &tris, &shapes, &e2), "strain_nodes[0][1][1]");
 }

@@ -4,9 +4,8 @@
 //! numbers, hard-coded here as `STIFFNESS_FORCE_REFERENCE`, are what the wasm API's `spectra`
 //! returns (tests/wasm_common/mod.rs, `stiffness_spectra_match_reference`). If the core
 //! changes them on purpose, update both constants together (this test prints them).
+#![cfg(not(target_arch = "wasm32"))]
 
-use serde_json::Value;
-use std::process::Command;
 use wingbeat::analysis::psd::{welch, WelchOptions};
 use wingbeat::analysis::spectra::mode_spectra;
 use wingbeat::config::SimConfig;
@@ -45,7 +44,8 @@ fn close_all(name: &str, got: &[f64], want: &[f64]) {
     }
 }
 
-fn floats(v: &Value) -> Vec<f64> {
+#[cfg(feature = "cli")]
+fn floats(v: &serde_json::Value) -> Vec<f64> {
     v.as_array()
         .expect("an array")
         .iter()
@@ -90,6 +90,8 @@ fn core_stiffness_force_spectrum_is_the_psd_of_s_times_q() {
 #[cfg(feature = "cli")]
 #[test]
 fn cli_psd_prints_the_core_stiffness_spectra() {
+    use serde_json::Value;
+    use std::process::Command;
     let (cfg, opts) = case();
     let out = Command::new(env!("CARGO_BIN_EXE_wingbeat"))
         .args(["psd", "--duration", "0.4", "--segment-len", "1024"])

@@ -72,6 +72,11 @@ fn stiffness_spectra_match_reference() {
     wasm_common::stiffness_spectra_match_reference();
 }
 
+#[wasm_bindgen_test]
+fn ts_declarations_match_results() {
+    wasm_common::ts_declarations_match_results();
+}
+
 // ---- The lab-facing additions: parameters, applyOverrides, resonanceMap, analyze's angles ----
 
 use std::cell::RefCell;

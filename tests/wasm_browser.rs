@@ -73,3 +73,8 @@ fn angles_match_core() {
 fn stiffness_spectra_match_reference() {
     wasm_common::stiffness_spectra_match_reference();
 }
+
+#[wasm_bindgen_test]
+fn ts_declarations_match_results() {
+    wasm_common::ts_declarations_match_results();
+}

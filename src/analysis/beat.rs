@@ -10,7 +10,7 @@ use realfft::num_complex::Complex;
 use rustfft::FftPlanner;
 use serde::{Deserialize, Serialize};
 
-/// Envelope |x + i H[x]| of a real series.
+/// Envelope `|x + i H(x)|` of a real series (H the Hilbert transform).
 pub fn envelope(x: &[f64]) -> Vec<f64> {
     let n = x.len();
     if n == 0 {

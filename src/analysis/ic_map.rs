@@ -72,7 +72,7 @@ pub struct IcMap {
     pub q0: Vec<f64>,
     /// q̇(0) grid values (rows).
     pub qdot0: Vec<f64>,
-    /// Coriolis contribution, percent, row-major: `coriolis_percent[r * n_q + c]` at (q0[c], qdot0[r]).
+    /// Coriolis contribution, percent, row-major: `coriolis_percent[r * n_q + c]` at `(q0[c], qdot0[r])`.
     pub coriolis_percent: Vec<f64>,
     /// Smallest value on the map, percent.
     pub min_percent: f64,

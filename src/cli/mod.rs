@@ -30,6 +30,25 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Solve Eq. 13: partial and total responses, contributions, Floquet summary, strain.
+    ///
+    /// Per mode, `q` holds the response to each force term alone from rest (`euler`,
+    /// `centrifugal`, `coriolis`), the free vibration started by the initial conditions alone
+    /// (`free`) and the `total` (the sum of all four, to rounding).
+    ///
+    /// Contributions (`contribution_percent`, paper §4.1): the share of a term is
+    /// 100 · Σ_i q_term(t_i)² / Σ_i q_total(t_i)² over the output samples. The denominator is
+    /// the total response, so it includes the free vibration from nonzero initial conditions
+    /// (--q0/--qdot0), which belongs to no force term: it lowers all three shares. The shares
+    /// need not add to 100 % (Σ q_total² has cross terms of either sign); all three are 0 when
+    /// the total is identically zero.
+    ///
+    /// When a summary is null (JSON has no NaN, so NaN is written as null):
+    /// `floquet.beat_period_s` is null when the effective frequency coincides with the
+    /// nearest flap harmonic n_b·f_d (|f_eff − n_b f_d| ≤ 1e-9 · max(f_eff, 1 Hz): no beat);
+    /// `floquet.beat_period_vs_2fd_s` likewise against 2 f_d; `floquet.averaged_freq_hz` is
+    /// null when ω² minus the mean stiffness coefficient is not positive (no real naive
+    /// estimate). `strain` is absent when no mode carries modal strains, and `strain_points`
+    /// unless more than one point is named.
     Simulate(SimulateArgs),
     /// Welch PSD, per mode, of each force term, the stiffness coefficient, the stiffness force
     /// and the total response.
@@ -40,6 +59,12 @@ enum Command {
     /// Eq. 13 written as a force, same units as the force terms); `response_total`, q_k(t).
     Psd(PsdArgs),
     /// Parameter sweeps: `gamma0` (Fig. 6) or any of alpha0, beta0, flap_hz, zeta; `ic` (Fig. 7).
+    ///
+    /// Each point reports, per mode, the contributions (as in `simulate`: the denominator is
+    /// the total response, including free vibration from nonzero initial conditions), the
+    /// Floquet effective frequency, the beat period and the peak |q_total|. `beat_period_s` is
+    /// null (empty in CSV) when the effective frequency coincides with the nearest flap
+    /// harmonic (see `simulate --help`).
     Sweep(SweepArgs),
     /// Every claim of the paper's §3–4: what it says, what wingbeat computes, whether it holds.
     Reproduce(ReproduceArgs),
@@ -102,6 +127,18 @@ struct SimInput {
     preset: String,
     /// JSON config file (SimConfig: kinematics, modes, duration_s, sample_rate_hz,
     /// initial_conditions); missing fields take the paper's values. Flags below override it.
+    ///
+    /// Each angle of `kinematics` (alpha, beta, gamma, rad) is either
+    /// `{"kind": "fourier", "mean": m, "harmonics": [{"n": 1, "amplitude": A, "phase": φ}]}`,
+    /// meaning m + Σ A sin(n ω_d t + φ), or measured samples
+    /// `{"kind": "sampled", "values": [v_0, …, v_(N−1)], "max_harmonic": H}`: N equally spaced
+    /// samples over exactly one flap period, v_j at t_j = j T / N (do not repeat the first
+    /// sample at the end). The sampled angle is the trigonometric polynomial
+    /// mean(v) + Σ_(h=1..K) [a_h cos(h ω_d t) + b_h sin(h ω_d t)] with a_h, b_h = (2/N) Σ_j v_j
+    /// cos(2π h j/N), sin(2π h j/N), and K = ⌊N/2⌋ (or H when smaller). For even N the
+    /// Nyquist term h = N/2 gets weight 1/N instead of 2/N (it is shared by ±N/2), so with
+    /// K = ⌊N/2⌋ the polynomial passes through every sample; a smaller H low-passes noisy
+    /// data.
     #[arg(long, value_name = "FILE")]
     config: Option<std::path::PathBuf>,
     /// Replace the modes by those in a JSON file: the output of `wingbeat modes` (FE) or
@@ -164,6 +201,13 @@ struct PsdArgs {
     #[arg(long, default_value_t = 8192)]
     segment_len: usize,
     /// Segment overlap fraction, [0, 0.95].
+    ///
+    /// With L = min(segment_len, series length), segments start every
+    /// step = max(1, round(L · (1 − overlap))) samples, at 0, step, 2·step, …; only whole
+    /// segments are used (samples after the last whole segment are dropped). Each segment is
+    /// detrended (--detrend), multiplied by the periodic Hann window
+    /// w_j = 0.5 − 0.5 cos(2π j / L) and transformed; the one-sided density is
+    /// |X_k|² / (f_s Σ w_j²), doubled except at DC and Nyquist, averaged over segments.
     #[arg(long, default_value_t = 0.5)]
     overlap: f64,
     /// Detrending per segment. Default none: the Coriolis force's large mean stays visible.
@@ -195,7 +239,13 @@ struct SweepArgs {
     /// IC map: grid points per axis.
     #[arg(long, default_value_t = 101)]
     n: usize,
-    /// IC map: who carries the free vibration (see docs): forced (default) or carried.
+    /// IC map: who carries the free vibration: forced (default) or carried.
+    ///
+    /// forced: the Coriolis partial is the response to the Coriolis force from rest, and the
+    /// free vibration from the initial conditions is only in the total (the share's
+    /// denominator). carried: the Coriolis partial also carries the free vibration. The two
+    /// agree at q0 = q̇0 = 0. The grid spans [min, max] of the zero-start total response and
+    /// velocity (the paper's bounds).
     #[arg(long, default_value = "forced")]
     attribution: String,
     /// Output format: json or csv.
@@ -317,7 +367,7 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
         "paper" => None,
         "fe-wing" => {
             eprintln!("simulate: computing the fe-wing preset's shell FE modes…");
-            Some(wingbeat::presets::fe_wing_config()?)
+            Some(wingbeat::presets::fe_wing_modes()?)
         }
         other => {
             return Err(WingbeatError::invalid(
@@ -337,8 +387,8 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
         })?,
         None => SimConfig::paper(),
     };
-    if let Some(fe) = preset {
-        cfg.modes = fe.modes;
+    if let Some(fe_modes) = preset {
+        cfg.modes = fe_modes;
     }
     if let Some(p) = &inp.modes {
         cfg.modes = modes_from_json(&read_file(p)?, &p.display().to_string())?;

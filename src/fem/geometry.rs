@@ -41,7 +41,7 @@ pub fn parse_planform_csv(text: &str) -> Result<Vec<[f64; 2]>> {
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        let fields: Vec<&str> = line.split(',').map(|s| s.trim()).collect();
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
         if cols.is_none() && fields.iter().any(|f| f.parse::<f64>().is_err()) {
             // header line
             let lower: Vec<String> = fields.iter().map(|f| f.to_ascii_lowercase()).collect();
@@ -225,8 +225,7 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
             let (c, d) = (p[j], p[(j + 1) % n]);
             if segments_intersect(a, b, c, d) {
                 return Err(WingbeatError::Geometry(format!(
-                    "planform outline is self-intersecting: edge {i} ({:?}–{:?}) crosses edge {j} ({:?}–{:?})",
-                    a, b, c, d
+                    "planform outline is self-intersecting: edge {i} ({a:?}–{b:?}) crosses edge {j} ({c:?}–{d:?})"
                 )));
             }
         }

@@ -220,12 +220,12 @@ pub struct FemModes {
 
 /// Runs the whole FE step for `input`: validate, mesh, assemble, solve, post-process.
 pub fn compute_modes(input: &FemInput) -> Result<FemModes> {
-    compute_modes_with(input, eigen::EigenOptions::default())
+    compute_modes_with(input, EigenOptions::default())
 }
 
 /// [`compute_modes`] with explicit eigen-solver options (e.g. the factorisation
 /// [`Backend`]).
-pub fn compute_modes_with(input: &FemInput, opt: eigen::EigenOptions) -> Result<FemModes> {
+pub fn compute_modes_with(input: &FemInput, opt: EigenOptions) -> Result<FemModes> {
     input.material.validate()?;
     crate::error::check_range("camber", input.camber, 0.0, 0.5, "(rise / chord)")?;
     if input.n_modes == 0 || input.n_modes > crate::model::MAX_MODES {
@@ -336,7 +336,7 @@ pub fn solve_mesh(
         material,
         n_modes,
         planform_note,
-        eigen::EigenOptions::default(),
+        EigenOptions::default(),
     )
 }
 
@@ -347,7 +347,7 @@ pub fn solve_mesh_with(
     material: &ShellMaterial,
     n_modes: usize,
     planform_note: &str,
-    opt: eigen::EigenOptions,
+    opt: EigenOptions,
 ) -> Result<FemModes> {
     material.validate()?;
     let asm = assembly::assemble(mesh, material, clamped)?;
@@ -527,7 +527,7 @@ pub fn classify(mesh: &Mesh, node_mass: &[f64], w: &[f64]) -> &'static str {
     let xn: Vec<f64> = xs.iter().map(|x| x / xmax).collect();
     let one = vec![1.0; xs.len()];
     let bend = vec![
-        one.clone(),
+        one,
         xn.clone(),
         xn.iter().map(|x| x * x).collect(),
         xn.iter().map(|x| x * x * x).collect(),

@@ -72,7 +72,7 @@ impl WingMesh {
                     return Err(bad(
                         format!("triangles[{i}][{c}]"),
                         v,
-                        &format!("a node index in [0, {})", n),
+                        &format!("a node index in [0, {n})"),
                     ));
                 }
             }

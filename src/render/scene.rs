@@ -339,6 +339,8 @@ impl ColourMode {
 
 /// The diverging colour map (Moreland's cool–warm, sRGB), as `(t, rgb)` stops for t ∈ [0, 1].
 /// Signed components map −M…0…+M onto 0…0.5…1; the magnitude maps 0…M onto 0.5…1.
+/// The one definition of the map: the shaders get these stops as constants written by
+/// [`super::gpu::colour_map_wgsl`] (they assume the stops at t = 0, ¼, ½, ¾, 1).
 pub const DIVERGING_STOPS: [(f32, [f32; 3]); 5] = [
     (0.0, [0.230, 0.299, 0.754]),
     (0.25, [0.552, 0.690, 0.996]),
@@ -347,7 +349,8 @@ pub const DIVERGING_STOPS: [(f32, [f32; 3]); 5] = [
     (1.0, [0.706, 0.016, 0.150]),
 ];
 
-/// The colour map at `t` (clamped to [0, 1]), sRGB; the shader evaluates the same stops.
+/// The colour map at `t` (clamped to [0, 1]), sRGB; the shader's `diverging` evaluates the
+/// same stops.
 pub fn diverging(t: f32) -> [f32; 3] {
     let t = if t.is_finite() {
         t.clamp(0.0, 1.0)

@@ -14,7 +14,7 @@
 use super::gauss::{step_map, Tableau};
 use super::{LinearOde, MAX_FORCES};
 use crate::error::{Result, WingbeatError};
-use nalgebra::{Matrix2, Vector2};
+use nalgebra::{Complex, Matrix2, Vector2};
 
 /// Fewest Gauss–Legendre steps per period, whatever the frequencies.
 pub const MIN_STEPS_PER_PERIOD: usize = 32;
@@ -247,7 +247,7 @@ pub fn propagate<O: LinearOde + ?Sized>(ode: &O, dt: f64, n: usize) -> Result<Pr
         .chain(h_q.iter())
         .all(|v| v.iter().all(|x| x.is_finite()));
     if !finite {
-        let ev = crate::floquet::multipliers(&map.monodromy);
+        let ev = multipliers(&map.monodromy);
         let m = ev.iter().map(|z| z.norm()).fold(0.0, f64::max);
         return Err(WingbeatError::NonFinite {
             what: "modal response".into(),
@@ -265,6 +265,31 @@ pub fn propagate<O: LinearOde + ?Sized>(ode: &O, dt: f64, n: usize) -> Result<Pr
         period_error: map.error_estimate,
         periods,
     })
+}
+
+/// Eigenvalues of a real 2×2 matrix: for a monodromy matrix, the Floquet multipliers (also
+/// `crate::floquet::multipliers`).
+pub fn multipliers(m: &Matrix2<f64>) -> [Complex<f64>; 2] {
+    let tr = m[(0, 0)] + m[(1, 1)];
+    let det = m[(0, 0)] * m[(1, 1)] - m[(0, 1)] * m[(1, 0)];
+    let disc = tr * tr - 4.0 * det;
+    if disc >= 0.0 {
+        let s = disc.sqrt();
+        // Numerically stable pair: larger root first, the other from det / larger.
+        let l1 = if tr >= 0.0 {
+            0.5 * (tr + s)
+        } else {
+            0.5 * (tr - s)
+        };
+        let l2 = if l1 != 0.0 { det / l1 } else { 0.0 };
+        [Complex::new(l1, 0.0), Complex::new(l2, 0.0)]
+    } else {
+        let s = (-disc).sqrt();
+        [
+            Complex::new(0.5 * tr, 0.5 * s),
+            Complex::new(0.5 * tr, -0.5 * s),
+        ]
+    }
 }
 
 #[cfg(test)]

@@ -1,9 +1,11 @@
 //! The TypeScript declarations of the wasm API's inputs and results, emitted into the
 //! generated `.d.ts` by wasm-bindgen. They describe the serde types of the core (field for
-//! field) and the objects built in [`super::marshal`]; `tests/ts_types.rs` fails when they drift.
+//! field) and the objects built in [`super::marshal`]; `tests/ts_types.rs` (and the wasm suites)
+//! read the string below from this file and fail when it drifts from the types.
 
 use wasm_bindgen::prelude::*;
 
+/// The declarations, as wasm-bindgen writes them into `wingbeat.d.ts`.
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TYPES: &'static str = r#"
 /** One harmonic `amplitude · sin(n ω_d t + phase)`; rad. */

@@ -141,7 +141,7 @@ impl WingView {
             .formats
             .iter()
             .copied()
-            .find(|f| f.is_srgb())
+            .find(wgpu::TextureFormat::is_srgb)
             .or_else(|| caps.formats.first().copied())
             .ok_or_else(|| {
                 js_err(RenderError::Surface(

@@ -16,6 +16,9 @@ use wingbeat::config::SimConfig;
 use wingbeat::simulate::{force_series, simulate};
 use wingbeat::wasm;
 
+#[path = "../ts_common/mod.rs"]
+mod ts_common;
+
 /// Native reference numbers of the paper case (provenance: tests/lab_constants.rs, which
 /// asserts the same values natively on x86_64 and prints them).
 pub const PAPER_REFERENCE: [(&str, f64); 8] = [
@@ -293,8 +296,7 @@ pub fn coriolis_force_peaks_at_twice_the_flap_frequency() {
     assert!((f[i] - 50.0).abs() < 2.6, "Coriolis peak at {} Hz", f[i]);
     assert!(p[0] > 0.1 * p[i], "DC part visible with detrend none");
     // γ0 = 0: no Coriolis force at all.
-    let mut c0 = cfg.clone();
-    c0 = wingbeat::analysis::sweep::apply(&c0, SweepParam::Gamma0, 0.0).unwrap();
+    let c0 = wingbeat::analysis::sweep::apply(&cfg, SweepParam::Gamma0, 0.0).unwrap();
     let js0 = wasm::spectra(to_js(&c0), to_js(&opts), Some(0)).unwrap();
     assert!(f64s(&js0, "0.coriolis.psd").iter().all(|v| *v == 0.0));
 }
@@ -657,4 +659,80 @@ pub fn stiffness_spectra_match_reference() {
         get(&js, "0.stiffness").is_undefined(),
         "the old key is gone"
     );
+}
+
+fn js_keys(o: &JsValue) -> Vec<String> {
+    js_sys::Object::keys(o.unchecked_ref::<js_sys::Object>())
+        .iter()
+        .map(|k| k.as_string().unwrap())
+        .collect()
+}
+
+/// The TypeScript declarations (src/wasm/types.rs) against the objects the API really
+/// returns: every key present is declared, every required key is present.
+pub fn ts_declarations_match_results() {
+    let i = ts_common::interfaces(ts_common::declarations());
+    let cfg = short_paper();
+    let check = |name: &str, o: &JsValue| ts_common::check(&i, name, &js_keys(o));
+    let sim = wasm::simulate(to_js(&cfg)).unwrap();
+    check("SimResult", &sim);
+    check("ModeResult", &get(&sim, "modes.0"));
+    check("Responses", &get(&sim, "modes.0.q"));
+    check("StrainSeries", &get(&sim, "strain"));
+    let opts = WelchOptions {
+        segment_len: 512,
+        ..WelchOptions::default()
+    };
+    let a = wasm::analyze(to_js(&cfg), to_js(&opts), None).unwrap();
+    check("Analysis", &a);
+    check("AngleSeries", &get(&a, "angles"));
+    check("ModeForces", &get(&a, "forces.0"));
+    check("ModeSpectra", &get(&a, "spectra.0"));
+    check("Spectrum", &get(&a, "spectra.0.coriolis"));
+    check("Peak", &get(&a, "spectra.0.coriolis.peaks.0"));
+    let f = wasm::force_series(to_js(&cfg)).unwrap();
+    check("ForceSeries", &get(&f, "0"));
+    let sweep = wasm::sweep(
+        to_js(&cfg),
+        to_js(&SweepOptions {
+            param: SweepParam::Gamma0,
+            from: 0.0,
+            to: 0.3,
+            points: 2,
+        }),
+        None,
+    )
+    .unwrap();
+    check("SweepResult", &sweep);
+    check("SweepModeColumns", &get(&sweep, "modes.0"));
+    let ic = wasm::ic_map(
+        to_js(&cfg),
+        to_js(&IcMapOptions {
+            n_q: 3,
+            n_qdot: 3,
+            ..IcMapOptions::default()
+        }),
+    )
+    .unwrap();
+    check("IcMapResult", &ic);
+    check("Limits", &wasm::limits().unwrap());
+    let fe = wasm::fe_modes(
+        js_sys::JSON::parse(r#"{"n_modes": 2, "mesh_size_mm": 3}"#).unwrap(),
+        None,
+    )
+    .unwrap();
+    check("FeModesResult", &fe);
+    check("Mode", &get(&fe, "modes.0"));
+    check("Param", &get(&wasm::parameters().unwrap(), "0"));
+    let rm = wasm::resonance_map(
+        to_js(&cfg),
+        js_sys::JSON::parse(
+            r#"{"from_hz": 20, "to_hz": 30, "points": 3, "alpha0_values": [0.5, 0.8]}"#,
+        )
+        .unwrap(),
+        None,
+    )
+    .unwrap();
+    check("ResonanceMapResult", &rm);
+    check("ResonanceModeColumns", &get(&rm, "modes.0"));
 }

@@ -1,0 +1,103 @@
+//! The TypeScript declarations of the wasm API (`TS_TYPES` in src/wasm/types.rs) against the
+//! serde types they describe: a sample of each type is serialised to JSON and its keys must
+//! be exactly the interface's (optional keys may be absent). The objects the wasm API builds
+//! by hand (`Analysis`, `SweepResult`, ...) are checked in the wasm suites
+//! (tests/wasm_common, `ts_declarations_match_results`).
+#![cfg(not(target_arch = "wasm32"))]
+
+mod ts_common;
+
+use serde::Serialize;
+use serde_json::Value;
+use wingbeat::analysis::ic_map::IcMapOptions;
+use wingbeat::analysis::psd::WelchOptions;
+use wingbeat::analysis::spectra::mode_spectra;
+use wingbeat::analysis::sweep::{SweepOptions, SweepParam};
+use wingbeat::config::SimConfig;
+use wingbeat::fem::FemInput;
+use wingbeat::kinematics::Harmonic;
+use wingbeat::simulate::{force_series, simulate};
+
+fn keys<T: Serialize>(v: &T) -> Vec<String> {
+    match serde_json::to_value(v).unwrap() {
+        Value::Object(m) => m.keys().cloned().collect(),
+        other => panic!("not an object: {other}"),
+    }
+}
+
+#[test]
+fn declarations_parse() {
+    let ifaces = ts_common::interfaces(ts_common::declarations());
+    assert!(ifaces.len() >= 25, "{:?}", ifaces.keys());
+    let fe = &ifaces["FemInput"];
+    // Nested object types do not leak their keys.
+    assert!(fe.iter().any(|k| k.name == "clamp" && k.optional));
+    assert!(!fe.iter().any(|k| k.name == "strip" || k.name == "x_mm"));
+}
+
+#[test]
+fn input_types_match_serde() {
+    let i = ts_common::interfaces(ts_common::declarations());
+    let cfg = SimConfig::paper();
+    ts_common::check(&i, "SimConfig", &keys(&cfg));
+    ts_common::check(&i, "Kinematics", &keys(&cfg.kinematics));
+    ts_common::check(&i, "Mode", &keys(&cfg.modes[0]));
+    ts_common::check(&i, "ModalStrain", &keys(&cfg.modes[0].strains[0]));
+    let h = Harmonic {
+        n: 1,
+        amplitude: 0.8,
+        phase: 0.0,
+    };
+    ts_common::check(&i, "Harmonic", &keys(&h));
+    ts_common::check(&i, "WelchOptions", &keys(&WelchOptions::default()));
+    let sweep = SweepOptions {
+        param: SweepParam::Gamma0,
+        from: 0.0,
+        to: 0.3,
+        points: 3,
+    };
+    ts_common::check(&i, "SweepOptions", &keys(&sweep));
+    ts_common::check(&i, "IcMapOptions", &keys(&IcMapOptions::default()));
+    ts_common::check(&i, "FemInput", &keys(&FemInput::default()));
+    let res = wingbeat::analysis::resonance::ResonanceOptions {
+        from_hz: 10.0,
+        to_hz: 40.0,
+        points: 4,
+        alpha0_values: Some(vec![0.5, 0.8]),
+    };
+    ts_common::check(&i, "ResonanceOptions", &keys(&res));
+    ts_common::check(&i, "Param", &keys(&wingbeat::params::PARAMS[0]));
+}
+
+#[test]
+fn result_types_match_serde() {
+    let i = ts_common::interfaces(ts_common::declarations());
+    let cfg = SimConfig {
+        duration_s: 0.2,
+        ..SimConfig::paper()
+    };
+    let r = simulate(&cfg).unwrap();
+    let m = &r.modes[0];
+    ts_common::check(&i, "ModeResult", &keys(m));
+    ts_common::check(&i, "Responses", &keys(&m.q));
+    ts_common::check(&i, "Contributions", &keys(&m.contribution_percent));
+    ts_common::check(&i, "FloquetResult", &keys(&m.floquet));
+    ts_common::check(&i, "Accuracy", &keys(&m.accuracy));
+    ts_common::check(&i, "StrainSeries", &keys(r.strain.as_ref().unwrap()));
+    // The wasm `simulate` adds the sample count and rate, and always sets `strain_points`.
+    let mut sim = keys(&r);
+    sim.extend(["n", "sample_rate_hz", "strain_points"].map(String::from));
+    sim.sort();
+    sim.dedup();
+    ts_common::check(&i, "SimResult", &sim);
+    let f = force_series(&cfg).unwrap();
+    ts_common::check(&i, "ForceSeries", &keys(&f[0]));
+    let opts = WelchOptions {
+        segment_len: 256,
+        ..WelchOptions::default()
+    };
+    let s = mode_spectra(&f[0], &m.q.total, cfg.sample_rate_hz, &opts, Some(25.0)).unwrap();
+    ts_common::check(&i, "ModeSpectra", &keys(&s));
+    ts_common::check(&i, "Spectrum", &keys(&s.coriolis));
+    ts_common::check(&i, "Peak", &keys(&s.coriolis.peaks[0]));
+}
