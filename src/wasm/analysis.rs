@@ -4,7 +4,8 @@
 
 use super::helpers::{self, check_series, opt_or_nan};
 use super::marshal::{
-    config_from, err, f64a, from_js, obj_with, parse_js, set, sim_js, spectrum_js, to_js,
+    config_from, err, f64a, from_js, obj_with, progress_fn, required_js, set, sim_js, spectrum_js,
+    to_js,
 };
 use crate::analysis::angles::angles_on;
 use crate::analysis::beat;
@@ -190,22 +191,8 @@ pub fn sweep(
     progress: Option<Function>,
 ) -> Result<JsValue, JsError> {
     let cfg = config_from(cfg)?;
-    if opts.is_undefined() || opts.is_null() {
-        return Err(JsError::new(
-            "invalid value for `sweep`: missing (allowed: { param, from, to, points })",
-        ));
-    }
-    let opts: SweepOptions = parse_js(opts, "sweep")?;
-    let s = core_sweep(&cfg, &opts, |i, n| {
-        if let Some(f) = &progress {
-            let _ = f.call2(
-                &JsValue::NULL,
-                &JsValue::from_f64(i as f64),
-                &JsValue::from_f64(n as f64),
-            );
-        }
-    })
-    .map_err(err)?;
+    let opts: SweepOptions = required_js(opts, "sweep", "{ param, from, to, points }")?;
+    let s = core_sweep(&cfg, &opts, progress_fn(progress)).map_err(err)?;
     let o = Object::new();
     set(&o, "param", &to_js(&s.param)?)?;
     let values: Vec<f64> = s.points.iter().map(|p| p.value).collect();
@@ -274,22 +261,12 @@ pub fn resonance_map(
     progress: Option<Function>,
 ) -> Result<JsValue, JsError> {
     let cfg = config_from(cfg)?;
-    if opts.is_undefined() || opts.is_null() {
-        return Err(JsError::new(
-            "invalid value for `resonance`: missing (allowed: { from_hz, to_hz, points, alpha0_values? })",
-        ));
-    }
-    let opts: ResonanceOptions = parse_js(opts, "resonance")?;
-    let m = core_resonance_map(&cfg, &opts, |i, n| {
-        if let Some(f) = &progress {
-            let _ = f.call2(
-                &JsValue::NULL,
-                &JsValue::from_f64(i as f64),
-                &JsValue::from_f64(n as f64),
-            );
-        }
-    })
-    .map_err(err)?;
+    let opts: ResonanceOptions = required_js(
+        opts,
+        "resonance",
+        "{ from_hz, to_hz, points, alpha0_values? }",
+    )?;
+    let m = core_resonance_map(&cfg, &opts, progress_fn(progress)).map_err(err)?;
     let o = Object::new();
     set(&o, "flap_hz", &f64a(&m.flap_hz))?;
     if let Some(a) = &m.alpha0 {

@@ -55,6 +55,35 @@ pub(crate) fn parse_js<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T,
     })
 }
 
+/// Deserialises options that have no defaults: `undefined`/`null` is an error that lists the
+/// allowed shape (`allowed`, e.g. `"{ param, from, to, points }"`).
+pub(crate) fn required_js<T: DeserializeOwned>(
+    v: JsValue,
+    what: &str,
+    allowed: &str,
+) -> Result<T, JsError> {
+    if v.is_undefined() || v.is_null() {
+        return Err(JsError::new(&format!(
+            "invalid value for `{what}`: missing (allowed: {allowed})"
+        )));
+    }
+    parse_js(v, what)
+}
+
+/// A `progress(done, total)` callback for the core's long loops: calls the JS function when
+/// given and ignores an exception it throws (progress must never abort the computation).
+pub(crate) fn progress_fn(progress: Option<js_sys::Function>) -> impl FnMut(usize, usize) {
+    move |i, n| {
+        if let Some(f) = &progress {
+            let _ = f.call2(
+                &JsValue::NULL,
+                &JsValue::from_f64(i as f64),
+                &JsValue::from_f64(n as f64),
+            );
+        }
+    }
+}
+
 pub(crate) fn config_from(v: JsValue) -> Result<SimConfig, JsError> {
     let cfg: SimConfig = from_js(v, "config")?;
     cfg.validate().map_err(err)?;
