@@ -371,3 +371,130 @@ fn background_is_encoded_for_unorm_targets() {
     }
     assert_eq!(unorm.a, 1.0);
 }
+
+/// Normalised device coordinates of `p` through the camera's own view–projection matrix.
+fn ndc(cam: &OrbitCamera, aspect: f32, p: [f32; 3]) -> (f32, f32, f32) {
+    let c = wingbeat::render::scene::transform(&cam.view_proj(aspect), p);
+    (c[0] / c[3], c[1] / c[3], c[3])
+}
+
+/// A wing-sized cloud of points (a flapping stroke's worth), deterministic.
+fn stroke_cloud() -> Vec<[f32; 3]> {
+    let mut pts = Vec::new();
+    for i in 0..32 {
+        let a = 0.8 * (std::f32::consts::TAU * i as f32 / 32.0).sin();
+        for &(x, y) in &[
+            (0.0, 0.0),
+            (0.05, -0.005),
+            (0.045, -0.02),
+            (0.01, -0.025),
+            (0.03, 0.004),
+        ] {
+            // roll about I by a: (x, y, z) -> (x, y cos a, y sin a), then lift along K by x·a/4
+            pts.push([x, y * a.cos(), y * a.sin() + 0.25 * x * a]);
+        }
+    }
+    pts
+}
+
+#[test]
+fn fit_points_keeps_every_point_inside_with_margin_and_centres_them() {
+    let pts = stroke_cloud();
+    for &(yaw, pitch) in &[(-1.95f32, 0.8f32), (-1.05, 0.7), (0.4, -0.3), (2.6, 1.3)] {
+        for &aspect in &[1280.0f32 / 560.0, 1.0, 370.0 / 420.0, 0.46] {
+            for &margin in &[0.0f32, 0.04, 0.1] {
+                let mut cam = OrbitCamera::for_span(0.05);
+                cam.yaw = yaw;
+                cam.pitch = pitch;
+                assert!(cam.fit_points(&pts, aspect, margin));
+                assert_eq!(
+                    (cam.yaw, cam.pitch),
+                    (yaw, pitch),
+                    "the direction is the caller's"
+                );
+                let lim = 1.0 - margin;
+                let (mut x0, mut x1, mut y0, mut y1) = (f32::MAX, f32::MIN, f32::MAX, f32::MIN);
+                for &p in &pts {
+                    let (nx, ny, w) = ndc(&cam, aspect, p);
+                    assert!(w > 0.0, "in front of the eye");
+                    assert!(
+                        nx.abs() <= lim + 1e-4 && ny.abs() <= lim + 1e-4,
+                        "({nx}, {ny}) outside ±{lim} at yaw {yaw}, pitch {pitch}, aspect {aspect}"
+                    );
+                    x0 = x0.min(nx);
+                    x1 = x1.max(nx);
+                    y0 = y0.min(ny);
+                    y1 = y1.max(ny);
+                }
+                // Tight: the box touches the margin on one axis (no wasted zoom) ...
+                let reach = (x1 - x0).max(y1 - y0) * 0.5;
+                let touch = ((x1 - x0) * 0.5 - lim)
+                    .abs()
+                    .min(((y1 - y0) * 0.5 - lim).abs());
+                assert!(
+                    touch < 2e-3,
+                    "tight fit: half-extents {} × {} vs {lim}",
+                    (x1 - x0) * 0.5,
+                    (y1 - y0) * 0.5
+                );
+                assert!(reach <= lim + 1e-4);
+                // ... and centred on both.
+                assert!(
+                    (0.5 * (x0 + x1)).abs() < 2e-3 && (0.5 * (y0 + y1)).abs() < 2e-3,
+                    "centred: x {x0}..{x1}, y {y0}..{y1}"
+                );
+                // The pixel projection agrees (the page's canvas): inside with the margin.
+                let (w, h) = ((aspect * 400.0).round() as u32, 400u32);
+                for &p in &pts {
+                    let px = cam.project(p, w, h).expect("in front");
+                    let (mx, my) = (0.5 * margin * w as f32, 0.5 * margin * h as f32);
+                    assert!(
+                        px[0] >= mx - 0.6
+                            && px[0] <= w as f32 - mx + 0.6
+                            && px[1] >= my - 0.6
+                            && px[1] <= h as f32 - my + 0.6
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn fit_points_is_independent_of_the_starting_target_and_distance() {
+    let pts = stroke_cloud();
+    let mut a = OrbitCamera::for_span(0.05);
+    let mut b = OrbitCamera::for_span(0.05);
+    b.target = [1.0, -2.0, 3.0];
+    b.distance = 40.0;
+    assert!(a.fit_points(&pts, 1.5, 0.05));
+    assert!(b.fit_points(&pts, 1.5, 0.05));
+    let eye_a = a.eye();
+    let eye_b = b.eye();
+    for k in 0..3 {
+        assert!(
+            (eye_a[k] - eye_b[k]).abs() < 1e-5,
+            "same framing from any start: {eye_a:?} vs {eye_b:?}"
+        );
+    }
+}
+
+#[test]
+fn fit_points_leaves_the_camera_alone_when_there_is_nothing_to_fit() {
+    let cam0 = OrbitCamera::for_span(0.05);
+    let mut cam = cam0;
+    assert!(!cam.fit_points(&[], 1.0, 0.05));
+    assert!(!cam.fit_points(
+        &[[f32::NAN, 0.0, 0.0], [0.0, f32::INFINITY, 0.0]],
+        1.0,
+        0.05
+    ));
+    assert!(!cam.fit_points(&stroke_cloud(), 0.0, 0.05));
+    assert!(!cam.fit_points(&stroke_cloud(), f32::NAN, 0.05));
+    assert_eq!(cam, cam0);
+    // Non-finite points among finite ones are skipped; a single point is framed at its centre.
+    assert!(cam.fit_points(&[[0.01, 0.02, 0.03], [f32::NAN, 0.0, 0.0]], 1.0, 0.05));
+    let (nx, ny, _) = ndc(&cam, 1.0, [0.01, 0.02, 0.03]);
+    assert!(nx.abs() < 1e-4 && ny.abs() < 1e-4);
+    assert!(cam.distance.is_finite() && cam.distance > 0.0);
+}

@@ -220,11 +220,22 @@ export function projectedArea(cam, nodes, triangles, pose, width, height) {
 
 /**
  * The default view of a run: from the renderer's camera direction varied over a small grid of
- * yaw/pitch, the one whose stroke-fitting distance leaves the wing largest on screen (mean
+ * yaw/pitch, the one whose stroke-fitting framing leaves the wing largest on screen (mean
  * projected area over the stroke) while keeping the stroke seen from above its plane. Returns
  * { camera, coverage } (coverage: mean wing area / image area).
+ *
+ * `fit(camera)` frames the stroke from that camera's direction; the lab passes the renderer's
+ * own fit (WingView.fitPoints: target centred on the stroke, smallest distance). Without it the
+ * target stays and only the distance is fitted here (fitDistance, `margin` of each side).
+ * @param {number} span
+ * @param {ArrayLike<number>} nodes
+ * @param {ArrayLike<number>} triangles
+ * @param {number[][]} poses [α, β, γ] each
+ * @param {number} width
+ * @param {number} height
+ * @param {{ lift?: number, margin?: number, fit?: ((cam: Camera) => Camera) | null }} [o]
  */
-export function bestView(span, nodes, triangles, poses, width, height, { lift = 0, margin = 0.03 } = {}) {
+export function bestView(span, nodes, triangles, poses, width, height, { lift = 0, margin = 0.03, fit = null } = {}) {
   const base = defaultCamera(span);
   const ol = outline(nodes);
   const pts = posePoints(ol.nodes, poses, { lift: lift + ol.zmax });
@@ -234,8 +245,7 @@ export function bestView(span, nodes, triangles, poses, width, height, { lift = 
   for (const dyaw of [-0.9, -0.6, -0.3, 0, 0.3, 0.6, 0.9]) {
     for (const pitch of [0.7, 0.9, 1.1]) {
       const cam0 = { ...base, yaw: base.yaw + dyaw, pitch };
-      const d = fitDistance(cam0, pts, width, height, margin);
-      const cam = { ...cam0, distance: d };
+      const cam = fit ? fit(cam0) : { ...cam0, distance: fitDistance(cam0, pts, width, height, margin) };
       let area = 0;
       for (const p of few) area += projectedArea(cam, nodes, triangles, p, width, height);
       const coverage = area / few.length / (width * height);

@@ -242,7 +242,16 @@ fn pack_vertices(mesh: &WingMesh) -> Vec<f32> {
     v
 }
 
-/// Scene decorations scaled to the span `l`: (line list, stroke-plane triangles).
+/// Line-list vertices of the fixed frame and the I″–J″–K″ triad (drawn with `show_axes`).
+const AXES_VERTICES: std::ops::Range<u32> = 0..12;
+/// Line-list vertices of the body axis (drawn with `show_body_axis`).
+const BODY_AXIS_VERTICES: std::ops::Range<u32> = 12..14;
+/// Line-list vertices of the stroke plane's outline (drawn with `show_stroke_plane`).
+const PLANE_EDGE_VERTICES: std::ops::Range<u32> = 14..22;
+
+/// Scene decorations scaled to the span `l`: (line list, stroke-plane triangles). The line
+/// list is the axes, then the body axis, then the plane's outline ([`AXES_VERTICES`],
+/// [`BODY_AXIS_VERTICES`], [`PLANE_EDGE_VERTICES`]), so each can be hidden on its own.
 fn scene_geometry(l: f32) -> (Vec<LineVertex>, Vec<LineVertex>) {
     let mut lines = Vec::new();
     let mut seg = |a: [f32; 3], b: [f32; 3], colour: [f32; 4], space: f32| {
@@ -699,10 +708,20 @@ impl Renderer {
             pass.set_vertex_buffer(0, self.wing_vb.slice(..));
             pass.set_index_buffer(self.wing_ib.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..self.n_indices, 0, 0..1);
-            if self.frame.show_axes {
+            let f = &self.frame;
+            if f.show_axes || f.show_body_axis || f.show_stroke_plane {
+                debug_assert_eq!(self.n_line_vertices, PLANE_EDGE_VERTICES.end);
                 pass.set_pipeline(&self.line_pipeline);
                 pass.set_vertex_buffer(0, self.line_vb.slice(..));
-                pass.draw(0..self.n_line_vertices, 0..1);
+                for (show, range) in [
+                    (f.show_axes, AXES_VERTICES),
+                    (f.show_body_axis, BODY_AXIS_VERTICES),
+                    (f.show_stroke_plane, PLANE_EDGE_VERTICES),
+                ] {
+                    if show {
+                        pass.draw(range, 0..1);
+                    }
+                }
             }
             if self.frame.show_stroke_plane {
                 pass.set_pipeline(&self.plane_pipeline);

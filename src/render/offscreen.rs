@@ -439,6 +439,7 @@ pub fn render_frames_report(
             strain_range: (max_strain > 0.0).then_some(max_strain as f64),
             show_axes: opts.show_axes,
             show_stroke_plane: opts.show_stroke_plane,
+            show_body_axis: opts.show_axes,
         };
         let (img, report) = off.render(&frame)?;
         for w in report.warnings {

@@ -231,6 +231,139 @@ impl OrbitCamera {
         }
     }
 
+    /// Sets target (m), yaw, pitch (rad; pitch kept within ±(π/2 − 0.01)) and distance (m).
+    /// Returns false, changing nothing, when a value is not finite or the distance is not
+    /// positive.
+    pub fn set(&mut self, target: [f32; 3], yaw: f32, pitch: f32, distance: f32) -> bool {
+        let finite = target.iter().all(|v| v.is_finite())
+            && yaw.is_finite()
+            && pitch.is_finite()
+            && distance.is_finite();
+        if !finite || distance <= 0.0 {
+            return false;
+        }
+        self.target = target;
+        self.yaw = yaw % std::f32::consts::TAU;
+        self.pitch = pitch.clamp(-PITCH_LIMIT, PITCH_LIMIT);
+        self.distance = distance;
+        true
+    }
+
+    /// The camera's unit basis: right `s`, up `u` and forward `f` (eye towards target), the
+    /// same as [`look_at`]'s with K up.
+    fn basis(&self) -> ([f64; 3], [f64; 3], [f64; 3]) {
+        let (sy, cy) = (self.yaw as f64).sin_cos();
+        let (sp, cp) = (self.pitch as f64).sin_cos();
+        let f = [-cp * cy, -cp * sy, -sp];
+        // s = normalize(f × K); |f × K| = cos(pitch) > 0 within the pitch limit.
+        let n = (f[1] * f[1] + f[0] * f[0]).sqrt().max(1e-12);
+        let s = [f[1] / n, -f[0] / n, 0.0];
+        let u = [
+            s[1] * f[2] - s[2] * f[1],
+            s[2] * f[0] - s[0] * f[2],
+            s[0] * f[1] - s[1] * f[0],
+        ];
+        (s, u, f)
+    }
+
+    /// Aims the camera at `points` (fixed-frame metres) and sets its distance so that every
+    /// point projects inside the normalised device square shrunk by `margin` on each side
+    /// (|x|, |y| ≤ 1 − `margin`) of a viewport of `aspect` = width / height, with their
+    /// projected bounding box centred. Yaw, pitch and field of view are kept: the view
+    /// direction is the caller's, the framing is computed. Non-finite points are skipped;
+    /// `margin` is clamped to [0, 0.45]. Returns false (camera unchanged) when no point is
+    /// finite or `aspect` is not a positive number.
+    ///
+    /// The distance is exact for the target: a point at offset (x, y, z) along (right, up,
+    /// forward) from the target projects to x·F/aspect/(d + z) with F = 1/tan(fov/2), so the
+    /// smallest d that keeps it inside is max(F·|x|/(aspect·L), F·|y|/L) − z with L = 1 − margin.
+    /// The target is then moved sideways by the box's off-centre amount and the distance
+    /// refitted, a few times (perspective makes the centring converge, not jump, to the middle).
+    pub fn fit_points(&mut self, points: &[[f32; 3]], aspect: f32, margin: f32) -> bool {
+        if !(aspect.is_finite() && aspect > 0.0) {
+            return false;
+        }
+        let pts: Vec<[f64; 3]> = points
+            .iter()
+            .filter(|p| p.iter().all(|v| v.is_finite()))
+            .map(|p| [p[0] as f64, p[1] as f64, p[2] as f64])
+            .collect();
+        if pts.is_empty() {
+            return false;
+        }
+        let margin = f64::from(if margin.is_finite() {
+            margin.clamp(0.0, 0.45)
+        } else {
+            0.0
+        });
+        let lim = 1.0 - margin;
+        let big_f = 1.0 / (0.5 * self.fov_y as f64).tan();
+        let (kx, ky) = (big_f / aspect as f64, big_f);
+        let (s, u, f) = self.basis();
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        // Start from the centre of the points' bounding box.
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for p in &pts {
+            for ((l, h), v) in lo.iter_mut().zip(hi.iter_mut()).zip(p) {
+                *l = l.min(*v);
+                *h = h.max(*v);
+            }
+        }
+        let mut t = [
+            0.5 * (lo[0] + hi[0]),
+            0.5 * (lo[1] + hi[1]),
+            0.5 * (lo[2] + hi[2]),
+        ];
+        // Smallest distance for target t (points also kept in front of the near plane,
+        // which sits at 0.02·d).
+        let fit = |t: [f64; 3]| -> f64 {
+            let mut d: f64 = 1e-3;
+            for p in &pts {
+                let v = [p[0] - t[0], p[1] - t[1], p[2] - t[2]];
+                let (x, y, z) = (dot(v, s), dot(v, u), dot(v, f));
+                d = d
+                    .max(kx * x.abs() / lim - z)
+                    .max(ky * y.abs() / lim - z)
+                    .max(-z / 0.9);
+            }
+            d
+        };
+        let mut d = fit(t);
+        for _ in 0..12 {
+            // Projected box (normalised device coordinates) at this target and distance.
+            let (mut x0, mut x1, mut y0, mut y1) = (
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+            );
+            for p in &pts {
+                let v = [p[0] - t[0], p[1] - t[1], p[2] - t[2]];
+                let depth = d + dot(v, f);
+                let (nx, ny) = (kx * dot(v, s) / depth, ky * dot(v, u) / depth);
+                x0 = x0.min(nx);
+                x1 = x1.max(nx);
+                y0 = y0.min(ny);
+                y1 = y1.max(ny);
+            }
+            let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            if cx.abs() < 1e-4 && cy.abs() < 1e-4 {
+                break;
+            }
+            // A sideways shift δ of the target moves a point at depth ≈ d by −k·δ/d on screen.
+            let (dx, dy) = (cx * d / kx, cy * d / ky);
+            for ((tk, sk), uk) in t.iter_mut().zip(s).zip(u) {
+                *tk += dx * sk + dy * uk;
+            }
+            d = fit(t);
+        }
+        self.target = [t[0] as f32, t[1] as f32, t[2] as f32];
+        // A hair more than exact, so f32 rounding never puts a point outside.
+        self.distance = (d * (1.0 + 1e-5)) as f32;
+        true
+    }
+
     /// Projection × view for a viewport of the given aspect ratio (width / height).
     pub fn view_proj(&self, aspect: f32) -> Mat4 {
         let aspect = if aspect.is_finite() && aspect > 0.0 {
@@ -424,10 +557,12 @@ pub struct FrameParams {
     /// Fixed legend limit M (colours span ±M, or 0…M for the magnitude); `None`: this frame's
     /// largest |value|.
     pub strain_range: Option<f64>,
-    /// Draw the fixed frame, the I″–J″–K″ triad and the body axis.
+    /// Draw the fixed frame and the I″–J″–K″ triad.
     pub show_axes: bool,
-    /// Draw the stroke plane.
+    /// Draw the stroke plane (fill and outline).
     pub show_stroke_plane: bool,
+    /// Draw the body axis.
+    pub show_body_axis: bool,
 }
 
 impl Default for FrameParams {
@@ -442,6 +577,7 @@ impl Default for FrameParams {
             strain_range: None,
             show_axes: true,
             show_stroke_plane: true,
+            show_body_axis: true,
         }
     }
 }
@@ -467,6 +603,8 @@ pub struct CleanFrame {
     pub show_axes: bool,
     /// See [`FrameParams::show_stroke_plane`].
     pub show_stroke_plane: bool,
+    /// See [`FrameParams::show_body_axis`].
+    pub show_body_axis: bool,
 }
 
 /// Largest |angle| (rad) and |q·exaggeration| passed on; beyond this f32 maths loses meaning.
@@ -533,6 +671,7 @@ impl FrameParams {
             strain_range,
             show_axes: self.show_axes,
             show_stroke_plane: self.show_stroke_plane,
+            show_body_axis: self.show_body_axis,
         };
         (clean_frame, w)
     }

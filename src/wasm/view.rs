@@ -8,6 +8,9 @@
 //! const legend = view.set_frame(alpha, beta, gamma, new Float64Array(q), exaggeration, 4);
 //! view.render();
 //! view.orbit(dx, dy); view.zoom(1.1); view.resize(w, h);
+//! view.setCamera(tx, ty, tz, yaw, pitch, distance);   // or, from the current direction:
+//! const cam = view.fitPoints(new Float32Array(xyz), 0.04); // [tx, ty, tz, yaw, pitch, distance]
+//! view.set_scene(showAxes, showStrokePlane, showBodyAxis);
 //! ```
 //! Every failure reaches JS as a `JsError` with a readable message.
 
@@ -222,11 +225,81 @@ impl WingView {
         self.update()
     }
 
-    /// Shows or hides the axes (fixed frame, I″–J″–K″, body axis) and the stroke plane.
-    pub fn set_scene(&mut self, show_axes: bool, show_stroke_plane: bool) {
+    /// Shows or hides the frames (fixed I, J, K and flapping I″, J″, K″), the stroke plane
+    /// (fill and outline) and the body axis (`show_body_axis`; omitted: as `show_axes`).
+    pub fn set_scene(
+        &mut self,
+        show_axes: bool,
+        show_stroke_plane: bool,
+        show_body_axis: Option<bool>,
+    ) {
         self.frame.show_axes = show_axes;
         self.frame.show_stroke_plane = show_stroke_plane;
+        self.frame.show_body_axis = show_body_axis.unwrap_or(show_axes);
         self.update();
+    }
+
+    /// Sets the orbit camera: the target it looks at (m, fixed frame), yaw and pitch (rad; the
+    /// pitch is kept within ±(π/2 − 0.01)) and the eye–target distance (m). Rejects, changing
+    /// nothing, a value that is not finite or a distance that is not positive.
+    #[wasm_bindgen(js_name = setCamera)]
+    pub fn set_camera(
+        &mut self,
+        tx: f64,
+        ty: f64,
+        tz: f64,
+        yaw: f64,
+        pitch: f64,
+        distance: f64,
+    ) -> Result<(), JsError> {
+        let target = [tx as f32, ty as f32, tz as f32];
+        if !self
+            .renderer
+            .camera
+            .set(target, yaw as f32, pitch as f32, distance as f32)
+        {
+            return Err(JsError::new(&format!(
+                "invalid camera: target ({tx}, {ty}, {tz}) m, yaw {yaw}, pitch {pitch} rad, distance {distance} m (allowed: finite numbers, distance > 0)"
+            )));
+        }
+        self.update();
+        Ok(())
+    }
+
+    /// The camera as `[tx, ty, tz, yaw, pitch, distance]` (m, rad, m).
+    pub fn camera(&self) -> Vec<f64> {
+        let c = &self.renderer.camera;
+        vec![
+            c.target[0] as f64,
+            c.target[1] as f64,
+            c.target[2] as f64,
+            c.yaw as f64,
+            c.pitch as f64,
+            c.distance as f64,
+        ]
+    }
+
+    /// Frames the points `xyz` (flat x, y, z triples, m, fixed frame; e.g. the wing's outline
+    /// at every pose of a flap) from the camera's current direction: the target centres their
+    /// projection and the distance is the smallest that keeps all of them inside the canvas
+    /// with `margin` (fraction of the half-width and half-height, 0…0.45) to spare
+    /// (`OrbitCamera::fit_points`). Returns the new camera as `camera()` does. Rejects a
+    /// length that is not a multiple of 3 or points that are all non-finite.
+    #[wasm_bindgen(js_name = fitPoints)]
+    pub fn fit_points(&mut self, xyz: &[f32], margin: f32) -> Result<Vec<f64>, JsError> {
+        if xyz.len() % 3 != 0 {
+            return Err(JsError::new(&format!(
+                "fitPoints: {} values is not a list of x, y, z triples",
+                xyz.len()
+            )));
+        }
+        let pts: Vec<[f32; 3]> = xyz.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
+        let aspect = self.config.width as f32 / self.config.height.max(1) as f32;
+        if !self.renderer.camera.fit_points(&pts, aspect, margin) {
+            return Err(JsError::new("fitPoints: no finite point to frame"));
+        }
+        self.update();
+        Ok(self.camera())
     }
 
     fn update(&mut self) -> JsValue {

@@ -22,6 +22,9 @@ import { context2d } from '../export.js';
 
 export const title = '3-D wing';
 
+/** Margin of the camera fit, as a fraction of the half-width and half-height (2 % of each side). */
+const FIT_MARGIN = 0.04;
+
 const COLOURS = [
   ['0', 'none (shading only)'],
   ['1', 'ε_x, spanwise strain'],
@@ -121,9 +124,11 @@ export function mount(ctx) {
   const legend = el('canvas', { class: 'wl-w3-legend', width: 240, height: 14, 'aria-hidden': 'true' });
   const legendText = el('span', { class: 'wl-w3-legend-text' });
   const showAxes = el('input', { type: 'checkbox', id: `${uid}-w3-axes`, checked: true });
+  const showBody = el('input', { type: 'checkbox', id: `${uid}-w3-body`, checked: true });
   const showPlane = el('input', { type: 'checkbox', id: `${uid}-w3-plane`, checked: true });
-  const onScene = () => { if (view) { view.set_scene(showAxes.checked, showPlane.checked); draw(); } };
+  const onScene = () => { if (view) { view.set_scene(showAxes.checked, showPlane.checked, showBody.checked); draw(); } };
   showAxes.addEventListener('change', onScene);
+  showBody.addEventListener('change', onScene);
   showPlane.addEventListener('change', onScene);
   const resetBtn = el('button', { type: 'button', class: 'wl-small', text: 'Fit view', title: 'Camera back to the view that fits the whole stroke', onclick: () => { userCamera = false; fitKey = ''; fit(true); draw(); } });
 
@@ -143,7 +148,8 @@ export function mount(ctx) {
       el('div', { class: 'wl-w3-row wl-w3-legendrow' }, legend, legendText)),
     el('div', { class: 'wl-w3-row' },
       el('label', { class: 'wl-check' }, showPlane, ' stroke plane'),
-      el('label', { class: 'wl-check' }, showAxes, ' axes (frames and body axis)'),
+      el('label', { class: 'wl-check' }, showBody, ' body axis'),
+      el('label', { class: 'wl-check' }, showAxes, ' frames I, J, K and I″, J″, K″'),
       resetBtn),
     sceneLegend);
   const controls = el('div', { class: 'wl-w3-controls' },
@@ -234,13 +240,16 @@ export function mount(ctx) {
     return true;
   }
 
-  /** Applies camera `to` through orbit/zoom (the only camera API the renderer has). */
+  /** Sets the renderer's camera to `to` (and the mirror used for the labels). */
   function moveCamera(to) {
-    if (!view || !cam) return;
-    const m = S.moveTo(cam, to);
-    view.orbit(m.dx, m.dy);
-    view.zoom(m.zoom);
-    cam = S.zoom(S.orbit(cam, m.dx, m.dy), m.zoom);
+    if (!view) return;
+    view.setCamera(to.target[0], to.target[1], to.target[2], to.yaw, to.pitch, to.distance);
+    cam = to;
+  }
+
+  /** The mirror of a camera returned by the renderer ([tx, ty, tz, yaw, pitch, distance]). */
+  function cameraOf(/** @type {Float64Array} */ c) {
+    return { target: [c[0], c[1], c[2]], yaw: c[3], pitch: c[4], distance: c[5], fov: cam ? cam.fov : S.defaultCamera(0.05).fov };
   }
 
   function poses() {
@@ -251,21 +260,28 @@ export function mount(ctx) {
     return S.flapSamples(alpha.length, a.sim.sample_rate_hz, a.sim.flap_freq_hz, 32).map((i) => [alpha[i], beta[i], gamma[i]]);
   }
 
-  /** Fits the camera to the whole stroke: a full search of directions when `search`, else the distance only. */
+  /**
+   * Fits the camera to the whole stroke with the renderer's own fit (WingView.fitPoints: the
+   * target centres the stroke, the distance is the smallest that keeps every pose inside):
+   * from each of a few view directions when `search`, keeping the most wing on screen; else
+   * from the current direction.
+   */
   function fit(search) {
-    if (!view || !fe || userCamera) return;
+    const v = view;
+    if (!v || !fe || userCamera) return;
     const ps = poses();
     if (!ps) return;
     const lift = (runDeflection || 0) * exaggeration();
+    const ol = S.outline(fe.nodes);
+    const pts = Float32Array.from(S.posePoints(ol.nodes, ps, { lift: lift + ol.zmax }));
     if (search || !fitKey) {
-      const best = S.bestView(S.spanOf(fe.nodes), fe.nodes, fe.triangles, ps, canvas.width, canvas.height, { lift });
+      const fitFrom = (/** @type {S.Camera} */ c) => { moveCamera(c); return cameraOf(v.fitPoints(pts, FIT_MARGIN)); };
+      const best = S.bestView(S.spanOf(fe.nodes), fe.nodes, fe.triangles, ps, canvas.width, canvas.height, { lift, fit: fitFrom });
       if (!best) return;
       moveCamera(best.camera);
       box.dataset.coverage = best.coverage.toFixed(3);
     } else {
-      const ol = S.outline(fe.nodes);
-      const d = S.fitDistance(cam, S.posePoints(ol.nodes, ps, { lift: lift + ol.zmax }), canvas.width, canvas.height, 0.03);
-      moveCamera({ ...cam, distance: d });
+      cam = cameraOf(v.fitPoints(pts, FIT_MARGIN));
     }
     fitKey = 'fitted';
   }
@@ -410,7 +426,7 @@ export function mount(ctx) {
       fr([0.7 * l, 0, 0]), fr([0, 0.45 * l, 0]), fr([0, 0, 0.45 * l]),
       [0, 0.6 * l, 0], [1.1 * l, 0, 0.9 * l],
     ];
-    const show = { fixed: showAxes.checked, wing: showAxes.checked, body: showAxes.checked, plane: showPlane.checked };
+    const show = { fixed: showAxes.checked, wing: showAxes.checked, body: showBody.checked, plane: showPlane.checked };
     // the plane's label goes to the first of its corners / edge midpoints that is on screen
     /**
      * @param {number[] | null} p
