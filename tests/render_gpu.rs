@@ -162,6 +162,7 @@ fn rendered_tip_matches_projection() {
             beta: b as f64,
             gamma: g as f64,
             show_axes: false,
+            show_body_axis: false,
             show_stroke_plane: false,
             ..FrameParams::default()
         };
@@ -430,6 +431,7 @@ fn fe_modes_json_renders() {
         exaggeration: 2.0,
         colour: ColourMode::StrainY,
         show_axes: false,
+        show_body_axis: false,
         show_stroke_plane: false,
         ..FrameParams::default()
     };
