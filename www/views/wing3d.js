@@ -271,12 +271,16 @@ export function mount(ctx) {
     if (!v || !fe || userCamera) return;
     const ps = poses();
     if (!ps) return;
-    const lift = (runDeflection || 0) * exaggeration();
+    // The drawn deflection can be astronomically large (in a parametric instability the
+    // response grows every flap: ~1e42 m after 2 s at f_d = 54.5 Hz); frame at most two spans of it.
+    const span = S.spanOf(fe.nodes);
+    const drawn = (runDeflection || 0) * exaggeration();
+    const lift = Number.isFinite(drawn) ? Math.min(drawn, 2 * span) : 2 * span;
     const ol = S.outline(fe.nodes);
     const pts = Float32Array.from(S.posePoints(ol.nodes, ps, { lift: lift + ol.zmax }));
     if (search || !fitKey) {
       const fitFrom = (/** @type {S.Camera} */ c) => { moveCamera(c); return cameraOf(v.fitPoints(pts, FIT_MARGIN)); };
-      const best = S.bestView(S.spanOf(fe.nodes), fe.nodes, fe.triangles, ps, canvas.width, canvas.height, { lift, fit: fitFrom });
+      const best = S.bestView(span, fe.nodes, fe.triangles, ps, canvas.width, canvas.height, { lift, fit: fitFrom });
       if (!best) return;
       moveCamera(best.camera);
       box.dataset.coverage = best.coverage.toFixed(3);
