@@ -173,7 +173,7 @@ fn overrides_equal_the_config_the_lab_built_by_hand() {
     }
     // A subset leaves the other fields of the base alone.
     let got = apply_overrides(&base, [("gamma0", 0.1)]).unwrap();
-    let mut want = base.clone();
+    let mut want = base;
     want.kinematics.gamma = Angle::sine(0.1);
     assert_eq!(got, want);
 }
@@ -193,7 +193,7 @@ fn the_sweep_and_the_overrides_mean_the_same_thing() {
         assert_eq!(by_sweep, by_override, "{key}");
     }
     // γ0 on a base with a phase and a second harmonic: only the first amplitude changes.
-    let mut b2 = base.clone();
+    let mut b2 = base;
     b2.kinematics.gamma = Angle::Fourier {
         mean: 0.01,
         harmonics: vec![
@@ -282,7 +282,7 @@ fn bad_keys_are_named() {
         .to_string();
     assert!(msg.contains("kinematics.alpha"), "{msg}");
     // An invalid base is still reported by validate.
-    let mut bad = base.clone();
+    let mut bad = base;
     bad.sample_rate_hz = -1.0;
     let msg = apply_overrides(&bad, [("zeta", 0.01)])
         .unwrap_err()

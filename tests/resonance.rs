@@ -108,7 +108,7 @@ fn rk4_monodromy(f_k: f64, zeta: f64, f_d: f64, alpha0: f64, beta0: f64, steps: 
     let period = 1.0 / f_d;
     let h = period / steps as f64;
     let mut cols = [[1.0, 0.0], [0.0, 1.0]];
-    for x in cols.iter_mut() {
+    for x in &mut cols {
         for i in 0..steps {
             let t = i as f64 * h;
             let k1 = rhs(t, *x);
@@ -304,7 +304,7 @@ fn caps_and_bad_options_are_named_before_any_work() {
     assert!(e.to_string().contains("resonance"), "{e}");
     assert!(t0.elapsed().as_secs_f64() < 2.0);
     // A bad base config is the config's error.
-    let mut bad = cfg.clone();
+    let mut bad = cfg;
     bad.modes[0].zeta = -1.0;
     assert_eq!(
         field(resonance_map(&bad, &opts(5.0, 60.0, 10, None), never).unwrap_err()),

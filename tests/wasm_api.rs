@@ -224,7 +224,7 @@ fn resonance_map_matches_core_and_reports_progress() {
     // Without alpha0_values: one row, no `alpha0` key.
     let one = ResonanceOptions {
         alpha0_values: None,
-        ..opts.clone()
+        ..opts
     };
     let js = wasm::resonance_map(to_js(&cfg), to_js(&one), None).unwrap();
     assert!(get(&js, "alpha0").is_undefined());
@@ -270,7 +270,7 @@ fn resonance_map_names_bad_options() {
         let m = message(wasm::resonance_map(cfg.clone(), json(bad), None));
         assert!(m.contains(field), "{bad}: `{m}` lacks {field}");
     }
-    let m = message(wasm::resonance_map(cfg.clone(), JsValue::UNDEFINED, None));
+    let m = message(wasm::resonance_map(cfg, JsValue::UNDEFINED, None));
     assert!(m.contains("resonance"), "{m}");
 }
 

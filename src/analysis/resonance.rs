@@ -166,7 +166,7 @@ fn plan(cfg: &SimConfig, opts: &ResonanceOptions) -> Result<(Vec<f64>, Option<Ve
         sweep::apply(cfg, SweepParam::Alpha0, a[0])?;
     }
     let flap = grid(opts.from_hz, opts.to_hz, opts.points);
-    let rows = opts.alpha0_values.as_ref().map_or(1, |a| a.len()) as f64;
+    let rows = opts.alpha0_values.as_ref().map_or(1, Vec::len) as f64;
     // The step size does not depend on α0 (only on the harmonics present and f_d), so one row's
     // estimate times the number of rows is the total.
     let mut work = 0.0;
