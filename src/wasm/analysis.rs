@@ -103,6 +103,20 @@ fn spectra_js(c: &Computed, fs: f64, opts: &WelchOptions) -> Result<Array, JsErr
     Ok(out)
 }
 
+/// The validated inputs of `spectra` and `analyze`: the config, the Welch options (`psd`) and
+/// the optional mode index (in range).
+fn live_inputs(
+    cfg: JsValue,
+    opts: JsValue,
+    mode: Option<usize>,
+) -> Result<(SimConfig, WelchOptions), JsError> {
+    let cfg = config_from(cfg)?;
+    let opts: WelchOptions = from_js(opts, "psd")?;
+    opts.validate().map_err(err)?;
+    check_mode(&cfg, mode)?;
+    Ok((cfg, opts))
+}
+
 /// PSDs, per mode, of the Euler, centrifugal and Coriolis forces, of the stiffness force
 /// S(t)·q_k (S = α̇²cos²β + β̇², the stiffness coefficient) and of the total response (see
 /// `ModeSpectra`; the core's `analysis::spectra::mode_spectra`, as the CLI's `psd`). With `mode`
@@ -113,10 +127,7 @@ pub fn spectra(
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
     mode: Option<usize>,
 ) -> Result<JsValue, JsError> {
-    let cfg = config_from(cfg)?;
-    let opts: WelchOptions = from_js(opts, "psd")?;
-    opts.validate().map_err(err)?;
-    check_mode(&cfg, mode)?;
+    let (cfg, opts) = live_inputs(cfg, opts, mode)?;
     Ok(spectra_js(&compute(&cfg, mode)?, cfg.sample_rate_hz, &opts)?.into())
 }
 
@@ -136,10 +147,7 @@ pub fn analyze(
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
     mode: Option<usize>,
 ) -> Result<JsValue, JsError> {
-    let cfg = config_from(cfg)?;
-    let opts: WelchOptions = from_js(opts, "psd")?;
-    opts.validate().map_err(err)?;
-    check_mode(&cfg, mode)?;
+    let (cfg, opts) = live_inputs(cfg, opts, mode)?;
     let c = compute(&cfg, mode)?;
     let o = Object::new();
     set(&o, "sim", &sim_js(&c.sim, cfg.sample_rate_hz)?)?;
