@@ -54,6 +54,9 @@ import * as wing3d from './views/wing3d.js';
 import * as report from './views/report.js';
 import * as experiments from './views/experiments.js';
 import * as resonance from './views/resonance.js';
+import * as wing from './views/wing.js';
+import * as kinematics from './views/kinematics.js';
+import * as modeshape from './views/modeshape.js';
 
 export { loadWasm } from './engine.js';
 
@@ -66,7 +69,24 @@ export { loadWasm } from './engine.js';
  *   playing: boolean,
  *   timing: { compute: number, draw: number, end: number } | null,
  *   status: string | null,
+ *   wing: WingState | null,
+ *   kin: KinState | null,
+ *   strain_point: [number, number] | null,
+ *   strain_map: { component: 'eps_x' | 'eps_y' | 'gamma_xy' | 'von_mises', stat: 'rms' | 'peak' } | null,
  * }} LabState
+ */
+/**
+ * The wing in use when it is not the lab's default FE wing: the FemInput it was computed from
+ * (null for imported modes), where it came from, and its outline (mm) for the editor and the
+ * share fragment. `null` = the default wing (the paper table or the default FE wing).
+ * @typedef {{ input: import('./pkg/wingbeat.js').FemInput | null, source: 'builtin' | 'file' | 'edited' | 'url' | 'import' | 'share', label: string, outline: string, points: [number, number][] | null }} WingState
+ */
+/**
+ * Custom kinematics (null = the sliders' Fourier kinematics): the core's Kinematics, where they
+ * came from, and for a measured table its samples (rad, one period) and the CSV text.
+ * @typedef {{ kinematics: import('./pkg/wingbeat.js').Kinematics, source: 'csv' | 'edited' | 'share', label: string,
+ *   samples?: { t: Float64Array | number[], alpha: Float64Array | number[], beta: Float64Array | number[], gamma: Float64Array | number[] } | null,
+ *   csv?: { text: string, units: 'deg' | 'rad', flap_hz: number } | null }} KinState
  */
 /** @typedef {ReturnType<typeof import('./plot.js').linePlot>} Plot */
 /**
@@ -93,9 +113,9 @@ export { loadWasm } from './engine.js';
 /** A mounted view: destroy() always; some views add hooks (startWhenVisible, setLayout, studies …). */
 /** @typedef {{ destroy(): void, [hook: string]: any }} View */
 
-const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance };
+const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance, wing, kinematics, modeshape };
 /** DOM (= tab) order of the panels; style.css places them so that it is also the visual order. */
-export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'spectrum', 'numbers', 'strain', 'studies', 'resonance', 'report'];
+export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'studies', 'resonance', 'report'];
 const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key)];
 const FIG_W = 900, FIG_H = 560;
 let instances = 0;
@@ -164,7 +184,7 @@ export class WingLab extends HTMLElement {
       rejected.push(...q.rejected.filter((r) => r.key !== 'embed'));
     }
     if (this.hasAttribute('embed')) this.classList.add('wl-embed');
-    this.store = createStore({ ...params, result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…' });
+    this.store = createStore({ ...params, result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
     this.engine = createEngine();
     this.build();
     if (rejected.length) {

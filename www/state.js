@@ -39,7 +39,7 @@ export const ENUMS = [
 ];
 
 /** Panels that can be shown; `panels=` picks a subset (comma-separated). */
-export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance'];
+export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance', 'wing', 'kinematics', 'modeshape'];
 
 /** Guided experiments (www/experiments.js); `exp=<id>` opens one. */
 export const EXPERIMENT_IDS = ['beat', 'no-yaw', 'damping', 'yaw', 'ic', 'resonance', 'instability'];
