@@ -8,18 +8,29 @@
 //   const wb = await engine.load();
 //   const r = engine.analyze(params, fe);       // live: simulate + forces + spectra + envelope + angles
 //   const job = engine.run('sweep', { cfg, opts }, (done, total) => …); await job.promise; engine.cancel(job.id);
-//   const fe = await engine.ensureFe();         // the shell-FE wing, once, in the worker
+//   const fe = await engine.ensureFe();         // the wing in use (default: the lab's FE wing), in the worker
+//   engine.setWing(input); const job = engine.computeWing(input, onProgress);  // your own wing
+//   engine.setKinematics(kin); engine.setStrainPoint([x_mm, y_mm]);            // see config()
+//
+// Your own wing: `wingInput(params, points)` builds the FemInput (wasm `wingInput` when the
+// build has it, which validates each key), `computeWing` solves it in the worker (progress,
+// cancel) while the previous wing stays in use, and the FE results are kept per input (the
+// last few), so switching back is instant. `config(params)` uses every mode of the wing in
+// use, custom kinematics when set (the sliders' α, β, γ, phases and f_d then do not apply),
+// and, when a strain point is set, the modes' modal strains there (wasm `modalStrainAt`).
 //
 // Results carry the kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`),
 // from wasm `analyze` when it provides them and otherwise from ONE `anglesAt` call per
 // recompute (made lazily, on first read), so the 3-D view never crosses into wasm per frame.
-import { overridesOf, FE_LAB_INPUT, SAMPLE_RATE_HZ } from './state.js';
+import { overridesOf, FE_LAB_INPUT, SAMPLE_RATE_HZ, WING, customWing } from './state.js';
 
 /** @typedef {typeof import('./pkg/wingbeat.js')} Wasm the wasm module's exports (www/pkg/wingbeat.d.ts) */
 /** @typedef {import('./pkg/wingbeat.js').SimConfig} SimConfig */
 /** @typedef {import('./pkg/wingbeat.js').Analysis} Analysis */
 /** @typedef {import('./pkg/wingbeat.js').AngleSeries} AngleSeries */
-/** @typedef {import('./pkg/wingbeat.js').FeModesResult} FeModesResult */
+/** @typedef {import('./pkg/wingbeat.js').FeModesResult & { modes_json?: string, max_nodes?: number, imported?: boolean }} FeModesResult */
+/** @typedef {import('./pkg/wingbeat.js').FemInput} FemInput */
+/** @typedef {import('./pkg/wingbeat.js').Kinematics} Kinematics */
 /**
  * One live analysis: the config, the selected mode index k, the URL parameters it came from,
  * the wasm result, the angles on `analysis.sim.t` and the wasm time.
@@ -64,6 +75,35 @@ export function splitAngles(flat) {
   return { alpha, beta, gamma };
 }
 
+/** The key under which an FE result is kept: its input (and strain point request). */
+export const wingKey = (input) => JSON.stringify(input || null);
+
+/**
+ * The FemInput of a wing from the lab's wing parameters (www/state.js WING) and an outline
+ * (mm; null = the core's default outline), in plain JS: the same mapping as the core's
+ * `wingInput` (src/params.rs), used when the wasm build does not have it. The default wing is
+ * exactly FE_LAB_INPUT (so its results are shared with the FE mode set of the paper sliders).
+ * @param {import('./state.js').Params} params
+ * @param {[number, number][] | null} points
+ * @returns {FemInput}
+ */
+export function plainWingInput(params, points) {
+  if (!points && !customWing(params)) return { ...FE_LAB_INPUT };
+  /** @type {FemInput} */
+  const input = {
+    camber: params.camber,
+    clamp: params.clamp > 0 ? { strip: { x_mm: params.clamp } } : 'root',
+    material: { thickness_m: params.thickness_um * 1e-6, e_pa: params.e_pa, rho_kg_m3: params.rho, nu: params.nu },
+    n_modes: params.n_modes,
+  };
+  if (params.mesh_mm > 0) input.mesh_size_mm = params.mesh_mm;
+  if (points) input.planform_mm = points.map((p) => [p[0], p[1]]);
+  return input;
+}
+
+/** How many FE results are kept (each is a few MB of typed arrays at most). */
+const FE_CACHE = 4;
+
 /**
  * @param {{ load?: () => Promise<Wasm>, createWorker?: () => Worker, feInput?: import('./pkg/wingbeat.js').FemInput }} [deps]
  *   `load` resolves to the wasm module's exports (default: loadWasm); `createWorker` makes the
@@ -82,10 +122,45 @@ export function createEngine(deps = {}) {
   /** @type {Map<number, Job>} */
   const jobs = new Map();
   let jobId = 0;
-  /** @type {Promise<FeModesResult> | null} */
-  let fePromise = null;
+  /** The wing wanted now (its FemInput), and the FE results by wingKey (last FE_CACHE). */
+  /** @type {FemInput} */
+  let wanted = feInput;
+  /** @type {Map<string, FeModesResult>} */
+  const feCache = new Map();
+  /** @type {Map<string, { id: number, promise: Promise<FeModesResult> }>} */
+  const fePending = new Map();
+  /** The wing in use (the last one ready that was wanted); stays until a new one is ready. */
   /** @type {FeModesResult | null} */
   let fe = null;
+  /** @type {Kinematics | null} */
+  let kin = null;
+  /** @type {[number, number] | null} */
+  let strainPoint = null;
+  /** @type {{ fe: FeModesResult, key: string, strains: { eps_x: number, eps_y: number, gamma_xy: number }[] } | null} */
+  let strainCache = null;
+
+  function remember(key, r) {
+    feCache.delete(key);
+    feCache.set(key, r);
+    while (feCache.size > FE_CACHE) feCache.delete(/** @type {string} */ (feCache.keys().next().value));
+  }
+
+  /** The modes of the wing in use, with modal strains at the chosen point when one is set. */
+  function feModesNow() {
+    const f = /** @type {FeModesResult} */ (fe);
+    if (!strainPoint) return f.modes;
+    const w = /** @type {Wasm} */ (wb);
+    const key = `${strainPoint[0]},${strainPoint[1]}`;
+    if (!strainCache || strainCache.fe !== f || strainCache.key !== key) {
+      const fn = /** @type {any} */ (w).modalStrainAt;
+      if (typeof fn !== 'function') throw new Error('this wasm build has no modalStrainAt: rebuild www/pkg (scripts/build-web.sh www)');
+      const n = f.modes.length;
+      strainCache = { fe: f, key, strains: fn(f.nodes, f.triangles, f.strain_nodes, n, [strainPoint[0], strainPoint[1]]) };
+    }
+    const st = strainCache.strains;
+    const name = 'S';
+    return f.modes.map((m, k) => ({ ...m, strains: [{ point: name, eps_x: st[k].eps_x, eps_y: st[k].eps_y, gamma_xy: st[k].gamma_xy }] }));
+  }
 
   function failAll(why) {
     for (const j of jobs.values()) j.reject(new Error(why));
@@ -164,8 +239,148 @@ export function createEngine(deps = {}) {
     config(params) {
       if (!wb) throw new Error('engine: wasm not loaded');
       const b = { ...base, sample_rate_hz: SAMPLE_RATE_HZ };
-      if (params.modes === 'fe' && fe) b.modes = fe.modes;
-      return wb.applyOverrides(b, overridesOf(params));
+      if (params.modes === 'fe' && fe) b.modes = feModesNow();
+      const o = overridesOf(params);
+      if (kin) {
+        // Custom kinematics: the table (or hand-edited series) is the whole stroke, so the
+        // sliders' amplitudes, phases and flap frequency do not apply; ζ and duration do.
+        b.kinematics = kin;
+        for (const k of ['alpha0', 'beta0', 'gamma0', 'alpha_phase', 'beta_phase', 'gamma_phase', 'flap_hz']) delete o[k];
+      }
+      return wb.applyOverrides(b, o);
+    },
+    /** Custom kinematics (the core's Kinematics) or null for the sliders' Fourier kinematics. */
+    setKinematics(/** @type {Kinematics | null} */ k) {
+      kin = k;
+    },
+    get kinematics() {
+      return kin;
+    },
+    /** The strain point (mm) for the modes' modal strains, or null for the FE result's own point. */
+    setStrainPoint(/** @type {[number, number] | null} */ p) {
+      strainPoint = p ? [Number(p[0]), Number(p[1])] : null;
+    },
+    get strainPoint() {
+      return strainPoint;
+    },
+    /**
+     * The modal strains of the wing in use at a point (mm): per mode { eps_x, eps_y, gamma_xy }
+     * per unit q (wasm modalStrainAt). Throws, naming the point, when it is outside the mesh.
+     * @param {[number, number]} p
+     */
+    modalStrainAt(p) {
+      if (!wb || !fe) throw new Error('engine: no FE wing yet');
+      return /** @type {any} */ (wb).modalStrainAt(fe.nodes, fe.triangles, fe.strain_nodes, fe.modes.length, [p[0], p[1]]);
+    },
+    /** The whole-wing strain field per node (wasm strainField), for the strain map. */
+    strainField(qs, opts) {
+      if (!wb || !fe) throw new Error('engine: no FE wing yet');
+      return /** @type {any} */ (wb).strainField(fe.strain_nodes, fe.modes.length, qs, opts);
+    },
+    /** Whether this wasm build has `name` (new exports are detected, not assumed). */
+    has(name) {
+      return !!wb && typeof /** @type {any} */ (wb)[name] === 'function';
+    },
+    /** Built-in outlines (wasm `planforms()`), or [] when the build lacks it. */
+    planforms() {
+      return engine.has('planforms') ? /** @type {any} */ (wb).planforms() : [];
+    },
+    /** The core's wing parameter table (wasm `wingParameters()`) or null. */
+    wingParameters() {
+      return engine.has('wingParameters') ? /** @type {any} */ (wb).wingParameters() : null;
+    },
+    /** The paper's material presets (wasm `materialPresets()`) or []. */
+    materialPresets() {
+      return engine.has('materialPresets') ? /** @type {any} */ (wb).materialPresets() : [];
+    },
+    /** Outline points (mm) from CSV or JSON text (wasm `parsePlanform`); throws the parse error. */
+    parsePlanform(/** @type {string} */ text, /** @type {'csv' | 'json'} */ format) {
+      if (!engine.has('parsePlanform')) throw new Error('this wasm build cannot parse outlines: rebuild www/pkg');
+      return /** @type {any} */ (wb).parsePlanform(text, format);
+    },
+    /** Live outline check (wasm `checkPlanform`): { ok, area_mm2, span_mm, chord_mm, default_mesh_size_mm } | { ok: false, error }. */
+    checkPlanform(/** @type {[number, number][]} */ points) {
+      if (!engine.has('checkPlanform')) return { ok: true };
+      return /** @type {any} */ (wb).checkPlanform(points);
+    },
+    /** Measured kinematics from CSV text (wasm `kinematicsFromCsv`). */
+    kinematicsFromCsv(/** @type {string} */ text, /** @type {{ units: 'deg' | 'rad', flap_hz: number, max_harmonic?: number }} */ opts) {
+      if (!engine.has('kinematicsFromCsv')) throw new Error('this wasm build cannot read kinematics CSV: rebuild www/pkg');
+      return /** @type {any} */ (wb).kinematicsFromCsv(text, opts);
+    },
+    /** A `wingbeat modes` JSON document → { modes, fe? } (wasm `modesFromJson`). */
+    modesFromJson(/** @type {string} */ text) {
+      if (!engine.has('modesFromJson')) throw new Error('this wasm build cannot read modes JSON: rebuild www/pkg');
+      return /** @type {any} */ (wb).modesFromJson(text);
+    },
+    /** The kinematic angles (rad) at times t for a config: { alpha, beta, gamma } (wasm anglesAt). */
+    anglesAt(/** @type {SimConfig} */ cfg, /** @type {Float64Array} */ t) {
+      if (!wb) throw new Error('engine: wasm not loaded');
+      return splitAngles(wb.anglesAt(cfg, t));
+    },
+    /**
+     * The FemInput of a wing (see plainWingInput); through wasm `wingInput` when the build has
+     * it, so the core validates every key (its error names the key and the range).
+     * @param {import('./state.js').Params} params
+     * @param {[number, number][] | null} points
+     * @returns {FemInput}
+     */
+    wingInput(params, points) {
+      if (!points && !customWing(params)) return { ...FE_LAB_INPUT };
+      if (engine.has('wingInput')) {
+        /** @type {Record<string, number>} */
+        const o = {};
+        for (const w of WING) o[w.core] = Number(params[w.key]);
+        return /** @type {any} */ (wb).wingInput(o, points || undefined);
+      }
+      return plainWingInput(params, points);
+    },
+    /** Makes `input` the wing wanted (ensureFe() computes it; config() keeps the old one until then). */
+    setWing(/** @type {FemInput} */ input) {
+      wanted = input;
+      const r = feCache.get(wingKey(input));
+      if (r) fe = r;
+    },
+    /** Whether the wing in use is the one wanted. */
+    get wingCurrent() {
+      return !!fe && feCache.get(wingKey(wanted)) === fe;
+    },
+    /**
+     * Solves a wing in the worker (wasm feModes with the modes JSON document), with progress;
+     * on success it becomes the wing in use. Returns { id, promise } (cancel with cancel(id)).
+     * @param {FemInput} input
+     * @param {(done: number, total: number) => void} [onProgress]
+     * @returns {{ id: number, promise: Promise<FeModesResult> }}
+     */
+    computeWing(input, onProgress) {
+      const key = wingKey(input);
+      const have = feCache.get(key);
+      if (have) {
+        wanted = input;
+        fe = have;
+        return { id: 0, promise: Promise.resolve(have) };
+      }
+      const pend = fePending.get(key);
+      if (pend) return pend;
+      const job = engine.run('fe', { input, opts: { json: true } }, onProgress);
+      const promise = job.promise.then(({ result }) => {
+        const r = /** @type {FeModesResult} */ (result);
+        remember(key, r);
+        if (wingKey(wanted) === key || !fe) fe = r;
+        return r;
+      });
+      const entry = { id: job.id, promise };
+      fePending.set(key, entry);
+      const done = () => { if (fePending.get(key) === entry) fePending.delete(key); };
+      promise.then(done, done);
+      return entry;
+    },
+    /** Uses an already computed or imported FE result as the wing in use (modes JSON import). */
+    useFe(/** @type {FeModesResult} */ r, /** @type {string} */ key) {
+      remember(key, r);
+      wanted = /** @type {any} */ ({ imported: key });
+      feCache.set(wingKey(wanted), r);
+      fe = r;
     },
     /**
      * The live analysis of the selected mode: { cfg, k, analysis, angles, compute_ms }.
@@ -248,23 +463,23 @@ export function createEngine(deps = {}) {
       worker.terminate();
       worker = null;
       failAll('cancelled');
-      if (!fe) fePromise = null;
       return true;
     },
-    /** The lab's shell-FE wing, computed once in the worker. */
-    ensureFe() {
-      if (fe) return Promise.resolve(fe);
-      if (!fePromise) {
-        /** @type {Promise<FeModesResult>} */
-        const p = engine.run('fe', { input: feInput }).promise.then(({ result }) => {
-          fe = /** @type {FeModesResult} */ (result);
-          return fe;
-        });
-        fePromise = p;
-        p.catch(() => { fePromise = null; });
-        return p;
+    /**
+     * The wing wanted (default: the lab's FE wing), computed once in the worker; resolves at
+     * once when it is ready. A rejected computation is retried on the next call.
+     * @param {FemInput} [input] the wing (default: the one set by setWing)
+     * @returns {Promise<FeModesResult>}
+     */
+    ensureFe(input) {
+      if (input) engine.setWing(input);
+      const r = feCache.get(wingKey(wanted));
+      if (r) {
+        fe = r;
+        return Promise.resolve(r);
       }
-      return fePromise;
+      const job = engine.computeWing(wanted);
+      return job.promise;
     },
     /** Stops the worker (element removed from the page). */
     dispose() {

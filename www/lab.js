@@ -38,7 +38,8 @@
 // share the (stateless) wasm module. Assets resolve relative to this file.
 // Test hooks: data-renders, data-layout, events wl-ready / wl-rendered / wl-study, and the
 // properties state, analysis, plots, studies, wing3d, timeCursor, fe, config(), modeIndex().
-import { NUMERIC, ENUMS, parsePairs, parseQuery, toQuery, defaults, paramsOf, describe } from './state.js';
+import { NUMERIC, ENUMS, WING, parsePairs, parseQuery, toQuery, defaults, paramsOf, describe } from './state.js';
+import { encodeShare, decodeShare, fragmentValue, checkPoints } from './share.js';
 import { createStore } from './store.js';
 import { createEngine } from './engine.js';
 import { el, ensureStyles } from './dom.js';
@@ -116,7 +117,9 @@ export { loadWasm } from './engine.js';
 const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance, wing, kinematics, modeshape };
 /** DOM (= tab) order of the panels; style.css places them so that it is also the visual order. */
 export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'studies', 'resonance', 'report'];
-const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key)];
+const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'planform'];
+/** The keys that decide which wing is wanted. */
+const WING_KEYS = [...WING.map((w) => w.key), 'outline', 'planform', 'wing'];
 const FIG_W = 900, FIG_H = 560;
 let instances = 0;
 
@@ -152,6 +155,13 @@ export class WingLab extends HTMLElement {
     this.ro = null;
     /** @type {{ compute: number, draw: number, end: number } | null} */
     this.lastTiming = null;
+    /** Work that must finish before the first computation (planform= file, #s= fragment). */
+    this.pending = 0;
+    /** Why the wanted wing cannot be built ('' = it can). */
+    this.wingError = '';
+    this.feRunning = false;
+    /** @type {ReturnType<typeof setTimeout> | undefined} */
+    this.fragTimer = undefined;
   }
 
   // ---------- test and embedding hooks ----------
@@ -183,6 +193,9 @@ export class WingLab extends HTMLElement {
       }
       rejected.push(...q.rejected.filter((r) => r.key !== 'embed'));
     }
+    // A wing parameter, outline or planform file given without a mode set means the FE wing.
+    const given = new Set([...attrs.map((a) => a[0]), ...(this.hasAttribute('sync-url') ? [...new URLSearchParams(location.search).keys()] : [])]);
+    if (!given.has('modes') && WING_KEYS.some((k) => given.has(k) && !rejected.some((r) => r.key === k))) params.modes = 'fe';
     if (this.hasAttribute('embed')) this.classList.add('wl-embed');
     this.store = createStore({ ...params, result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
     this.engine = createEngine();
@@ -197,11 +210,17 @@ export class WingLab extends HTMLElement {
       }),
       this.store.subscribe(['panels'], () => this.applyPanels()),
       this.store.subscribe(['exp'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
+      this.store.subscribe(WING_KEYS, () => { this.wantWing(); this.schedule(); }),
+      this.store.subscribe(['kin'], (st) => { this.engine.setKinematics(st.kin ? st.kin.kinematics : null); this.schedule(); }),
+      this.store.subscribe(['strain_point'], (st) => { this.engine.setStrainPoint(st.strain_point); this.schedule(); }),
+      this.store.subscribe(['wing', 'kin', 'strain_point'], () => { if (this.hasAttribute('sync-url')) this.scheduleFragment(); }),
     );
     this.engine
       .load()
+      .then(() => this.restoreShared())
       .then(() => {
         this.root.classList.remove('wl-loading');
+        this.wantWing();
         this.render();
         if (this.store.get().panels.includes('wing3d')) this.views.wing3d.startWhenVisible();
         this.dispatchEvent(new CustomEvent('wl-ready', { bubbles: true }));
@@ -318,16 +337,54 @@ export class WingLab extends HTMLElement {
     });
   }
 
-  render() {
-    if (!this.engine.ready) return;
+  /**
+   * The outline of the wing wanted (mm), or null for the core's default: an own outline
+   * (file, editor, planform= URL, share fragment) first, then a built-in one by id.
+   * @param {Readonly<LabState>} s
+   * @returns {[number, number][] | null}
+   */
+  wingPoints(s) {
+    if (s.wing && s.wing.points) return s.wing.points;
+    if (s.outline && s.outline !== 'manduca') {
+      const b = this.engine.planforms().find((p) => p.id === s.outline);
+      if (!b) throw new Error(`outline: no built-in outline "${s.outline}" in this wasm build`);
+      return b.points_mm;
+    }
+    return null;
+  }
+
+  /** Tells the engine which wing is wanted (from the wing parameters and outline). */
+  wantWing() {
+    if (!this.engine.ready || this.pending) return;
     const s = this.store.get();
-    if (s.modes === 'fe' && !this.engine.fe) {
-      this.store.set({ status: 'computing the FE wing’s modes in a worker…' });
-      this.engine.ensureFe().then(
-        (fe) => { this.store.set({ fe }); this.schedule(); },
-        (e) => this.error(`The FE wing could not be computed: ${errorText(e)}`),
-      );
-      return;
+    if (s.wing && s.wing.source === 'import') return;
+    try {
+      this.engine.setWing(this.engine.wingInput(paramsOf(s), this.wingPoints(s)));
+      this.wingError = '';
+    } catch (e) {
+      this.wingError = `The wing is not valid: ${errorText(e)}`;
+      this.error(this.wingError);
+    }
+  }
+
+  render() {
+    if (!this.engine.ready || this.pending) return;
+    const s = this.store.get();
+    if (s.modes === 'fe' && !this.engine.wingCurrent && !this.wingError) {
+      const first = !this.engine.fe;
+      if (first) this.store.set({ status: 'computing the FE wing’s modes in a worker…' });
+      if (!this.feRunning) {
+        this.feRunning = true;
+        this.engine.ensureFe().then(
+          (fe) => { this.feRunning = false; this.feReady(fe); },
+          (e) => {
+            this.feRunning = false;
+            this.error(`The FE wing could not be computed: ${errorText(e)}`);
+            if (!this.engine.fe) this.store.set({ status: null });
+          },
+        );
+      }
+      if (first) return;
     }
     let r;
     try {
@@ -336,7 +393,7 @@ export class WingLab extends HTMLElement {
       this.error(`Computation rejected: ${errorText(e)}`);
       return;
     }
-    this.error('');
+    this.error(this.wingError);
     const t1 = performance.now();
     this.store.set({ result: r, status: null });
     // uPlot commits its redraw in a microtask queued by setData; ours runs after it.
@@ -348,6 +405,118 @@ export class WingLab extends HTMLElement {
       this.dataset.renders = String(this.renders);
       this.dispatchEvent(new CustomEvent('wl-rendered', { detail: this.lastTiming }));
     });
+  }
+
+  /** A wing became ready: publish it, keep the selected mode within 1..N, recompute. */
+  feReady(fe) {
+    const s = this.store.get();
+    /** @type {Partial<LabState>} */
+    const patch = { fe };
+    if (Number(s.mode) > fe.modes.length) patch.mode = '1';
+    this.store.set(patch);
+    this.schedule();
+  }
+
+  /**
+   * Restores what the URL carries beyond the query: a `planform=` file (same origin, relative)
+   * and the `#s=` fragment (outline, kinematics, strain point). Each failure is a notice; the
+   * lab then goes on with the defaults for that part.
+   */
+  async restoreShared() {
+    if (!this.hasAttribute('sync-url')) return;
+    this.pending++;
+    const notes = [];
+    try {
+      const s = this.store.get();
+      if (s.planform) {
+        try {
+          const points = await this.fetchPlanform(s.planform);
+          this.store.set({ wing: { input: null, source: 'url', label: s.planform, outline: 'file', points } });
+        } catch (e) {
+          notes.push(`The planform file “${s.planform}” could not be used (${errorText(e)}); using the built-in outline.`);
+          this.store.set({ planform: '' });
+        }
+      }
+      const frag = fragmentValue(location.hash);
+      if (frag) {
+        try {
+          const st = await decodeShare(frag);
+          /** @type {Partial<LabState>} */
+          const patch = {};
+          if (st.outline) {
+            const points = checkPoints(st.outline);
+            patch.wing = { input: null, source: 'share', label: typeof st.outline_label === 'string' ? st.outline_label.slice(0, 80) : 'shared outline', outline: 'shared', points };
+            patch.planform = '';
+          }
+          if (st.kin) patch.kin = this.kinFromShare(st.kin);
+          if (st.strain_point) patch.strain_point = checkPoints([st.strain_point, st.strain_point, st.strain_point], 'strain_point')[0];
+          this.store.set(patch);
+        } catch (e) {
+          notes.push(`The shared wing/kinematics in the link (#s=…) could not be restored: ${errorText(e)}. The lab uses its defaults for them.`);
+        }
+      }
+    } finally {
+      this.pending--;
+    }
+    if (notes.length) this.notice(notes.join(' '));
+  }
+
+  /** A `planform=` file: relative same-origin URL only (state.js checked the text), CSV or JSON. */
+  async fetchPlanform(path) {
+    const url = new URL(path, location.href);
+    if (url.origin !== location.origin) throw new Error('only same-origin files can be loaded');
+    const res = await fetch(url, { credentials: 'same-origin' });
+    if (!res.ok) throw new Error(`HTTP ${res.status}`);
+    const text = await res.text();
+    if (text.length > 1e6) throw new Error('the file is larger than 1 MB');
+    return this.engine.parsePlanform(text, /\.json$/i.test(path) ? 'json' : 'csv');
+  }
+
+  /**
+   * Kinematics from a share fragment: the CSV again (same core function) or the config itself.
+   * @returns {import('./lab.js').KinState}
+   */
+  kinFromShare(k) {
+    if (!k || typeof k !== 'object') throw new Error('kin: expected an object');
+    if (k.csv && typeof k.csv.text === 'string') {
+      const r = this.engine.kinematicsFromCsv(k.csv.text, { units: k.csv.units, flap_hz: k.csv.flap_hz, max_harmonic: k.csv.max_harmonic });
+      return { kinematics: k.kinematics || r.kinematics, source: /** @type {const} */ ('share'), label: String(k.label || 'shared kinematics').slice(0, 80), samples: r.samples, csv: k.csv };
+    }
+    if (!k.kinematics || typeof k.kinematics !== 'object') throw new Error('kin.kinematics: expected the core’s Kinematics object');
+    // Checked by the core on the first computation (applyOverrides validates the config).
+    return { kinematics: k.kinematics, source: /** @type {const} */ ('share'), label: String(k.label || 'shared kinematics').slice(0, 80), samples: null, csv: null };
+  }
+
+  /** Writes the `#s=` fragment (own outline, kinematics, strain point) after the state settles. */
+  scheduleFragment() {
+    clearTimeout(this.fragTimer);
+    this.fragTimer = setTimeout(() => this.writeFragment(), 300);
+  }
+
+  async writeFragment() {
+    const s = this.store.get();
+    /** @type {Record<string, unknown>} */
+    const st = {};
+    if (s.wing && s.wing.points && s.wing.source !== 'url' && s.wing.source !== 'import') {
+      st.outline = s.wing.points;
+      st.outline_label = s.wing.label;
+    }
+    if (s.kin) {
+      const csv = s.kin.csv && s.kin.csv.text.length <= 20000 ? s.kin.csv : null;
+      st.kin = { label: s.kin.label, kinematics: s.kin.kinematics, csv };
+    }
+    if (s.strain_point) st.strain_point = s.strain_point;
+    let hash = '';
+    if (Object.keys(st).length) {
+      try {
+        hash = `#s=${await encodeShare(st)}`;
+      } catch {
+        hash = '';
+      }
+    }
+    if (hash !== location.hash && !(hash === '' && !location.hash)) {
+      history.replaceState(null, '', `${location.pathname}${location.search}${hash}`);
+    }
   }
 
   /** Query-string writes: at most one per 250 ms while sliders move (Chromium throttles more). */

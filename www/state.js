@@ -10,6 +10,8 @@
  * @typedef {{ key: 'alpha0' | 'beta0' | 'gamma0' | 'flap_hz' | 'zeta' | 'alpha_phase' | 'beta_phase' | 'gamma_phase' | 'duration',
  *   label: string, sym: string, unit: string, min: number, max: number, step: number, def: number }} NumericParam
  * @typedef {{ key: 'modes' | 'mode' | 'detrend', label: string, choices: string[], def: string, disabled?: string[] }} EnumParam
+ * @typedef {{ key: 'camber' | 'clamp' | 'e_pa' | 'rho' | 'nu' | 'thickness_um' | 'mesh_mm' | 'n_modes', core: string,
+ *   label: string, unit: string, min: number, max: number, step: number, def: number }} WingParam
  */
 
 /**
@@ -34,7 +36,7 @@ export const NUMERIC = [
  */
 export const ENUMS = [
   { key: 'modes', label: 'Mode set', choices: ['paper', 'fe'], def: 'paper' },
-  { key: 'mode', label: 'Selected mode', choices: ['1', '2'], def: '1' },
+  { key: 'mode', label: 'Selected mode', choices: ['1', '2', '3', '4', '5', '6', '7', '8'], def: '1' },
   { key: 'detrend', label: 'PSD detrend', choices: ['none', 'mean', 'linear'], def: 'none' },
 ];
 
@@ -52,6 +54,29 @@ export const EXPERIMENT_IDS = ['beat', 'no-yaw', 'damping', 'yaw', 'ic', 'resona
  */
 export const FE_LAB_INPUT = Object.freeze({ n_modes: 2, mesh_size_mm: 1.0 });
 
+/**
+ * The wing's parameters (URL parameters too, written only when they differ from the default so
+ * that short links stay short). `core` is the key of the core's table (wasm `wingParameters()`,
+ * src/params.rs; tests/js/wing.test.mjs compares ranges with it when the wasm has it). The
+ * defaults are the lab's default FE wing (the CLI's `wingbeat modes` with 2 modes).
+ * `clamp` is the basal strip width in mm, 0 = the root edge (also written `clamp=root`);
+ * `mesh_mm` 0 = the core's automatic size from the planform.
+ * @type {WingParam[]}
+ */
+export const WING = [
+  { key: 'camber', core: 'camber', label: 'Camber (rise / chord)', unit: '', min: 0, max: 0.5, step: 0.01, def: 0.13 },
+  { key: 'clamp', core: 'clamp_mm', label: 'Clamp strip width (0 = root edge)', unit: 'mm', min: 0, max: 50, step: 0.1, def: 0 },
+  { key: 'e_pa', core: 'e_pa', label: 'Young’s modulus E', unit: 'Pa', min: 1e5, max: 1e12, step: 1e5, def: 1.311e10 },
+  { key: 'rho', core: 'rho', label: 'Density ρ', unit: 'kg/m³', min: 1, max: 20000, step: 1, def: 860 },
+  { key: 'nu', core: 'nu', label: 'Poisson’s ratio ν', unit: '', min: -0.9, max: 0.49, step: 0.01, def: 0.3 },
+  { key: 'thickness_um', core: 'thickness_um', label: 'Thickness', unit: 'µm', min: 1, max: 5000, step: 1, def: 81 },
+  { key: 'mesh_mm', core: 'mesh_mm', label: 'Element size (0 = automatic)', unit: 'mm', min: 0, max: 1000, step: 0.05, def: 1 },
+  { key: 'n_modes', core: 'n_modes', label: 'Number of modes', unit: '', min: 1, max: 8, step: 1, def: 2 },
+];
+
+/** Built-in outline ids (wasm `planforms()`); `outline=<id>` picks one. */
+export const OUTLINE_IDS = ['manduca', 'slender', 'broad', 'rect'];
+
 /** Output sample rate of the live simulation, Hz (fixed). */
 export const SAMPLE_RATE_HZ = 10000;
 
@@ -62,7 +87,9 @@ const NUMBER_RE = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
  * @typedef {{
  *   alpha0: number, beta0: number, gamma0: number, flap_hz: number, zeta: number,
  *   alpha_phase: number, beta_phase: number, gamma_phase: number, duration: number,
- *   modes: 'paper' | 'fe', mode: '1' | '2', detrend: 'none' | 'mean' | 'linear', panels: string[], exp: string, embed?: boolean,
+ *   modes: 'paper' | 'fe', mode: string, detrend: 'none' | 'mean' | 'linear', panels: string[], exp: string, embed?: boolean,
+ *   camber: number, clamp: number, e_pa: number, rho: number, nu: number, thickness_um: number, mesh_mm: number, n_modes: number,
+ *   outline: string, planform: string,
  * }} Params
  */
 
@@ -72,6 +99,9 @@ export function defaults() {
   const s = {};
   for (const p of NUMERIC) s[p.key] = p.def;
   for (const e of ENUMS) s[e.key] = e.def;
+  for (const w of WING) s[w.key] = w.def;
+  s.outline = 'manduca';
+  s.planform = '';
   s.panels = PANELS.slice();
   s.exp = '';
   return /** @type {Params} */ (s);
@@ -117,6 +147,10 @@ export function expectation(key) {
   if (key === 'panels') return `a comma-separated list of ${PANELS.join(', ')}`;
   if (key === 'embed') return '0 or 1';
   if (key === 'exp') return `one of ${EXPERIMENT_IDS.join(', ')}`;
+  const w = WING.find((q) => q.key === key);
+  if (w) return `${key === 'clamp' ? '"root" or ' : ''}a number in [${w.min}, ${w.max}]${w.unit ? ' ' + w.unit : ''}${key === 'n_modes' ? ' (a whole number)' : ''}`;
+  if (key === 'outline') return `one of ${OUTLINE_IDS.join(', ')}`;
+  if (key === 'planform') return 'a relative same-origin path to a .csv or .json outline (no scheme, no //, at most 200 characters)';
   return 'a known parameter';
 }
 
@@ -153,6 +187,9 @@ export function parsePairs(pairs, ignore = []) {
     else if (key === 'panels') v = parsePanels(raw);
     else if (key === 'embed') v = raw === '0' || raw === '1' ? raw === '1' : null;
     else if (key === 'exp') v = EXPERIMENT_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
+    else if (WING.some((q) => q.key === key)) v = parseWing(/** @type {WingParam} */ (WING.find((q) => q.key === key)), raw);
+    else if (key === 'outline') v = OUTLINE_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
+    else if (key === 'planform') v = safePlanformPath(raw);
     else {
       rejected.push({ key: short, why: 'unknown parameter' });
       continue;
@@ -161,6 +198,39 @@ export function parsePairs(pairs, ignore = []) {
     else into[key] = v;
   }
   return { state, rejected };
+}
+
+/**
+ * One wing parameter from text: a plain decimal in range (`clamp` also takes `root` = 0;
+ * `n_modes` must be whole). Returns null when invalid.
+ * @param {WingParam} w
+ * @param {unknown} raw
+ */
+export function parseWing(w, raw) {
+  if (w.key === 'clamp' && typeof raw === 'string' && raw.trim() === 'root') return 0;
+  const v = parseNumber(/** @type {any} */ (w), raw);
+  if (v === null) return null;
+  if (w.key === 'n_modes' && !Number.isInteger(v)) return null;
+  return v;
+}
+
+/**
+ * A `planform=` value if it is a safe relative same-origin path (letters, digits, `._-/`, no
+ * scheme, no leading `//` or `/`, no `..`, ending in .csv or .json); else null.
+ * @param {unknown} raw
+ */
+export function safePlanformPath(raw) {
+  if (typeof raw !== 'string') return null;
+  const v = raw.trim();
+  if (!v || v.length > 200) return null;
+  if (!/^[A-Za-z0-9._\-/]+$/.test(v) || v.startsWith('/') || v.split('/').includes('..')) return null;
+  if (!/\.(csv|json)$/i.test(v)) return null;
+  return v;
+}
+
+/** Whether the wing differs from the lab's default FE wing (any wing parameter, outline or file). */
+export function customWing(state) {
+  return WING.some((w) => state[w.key] !== w.def) || state.outline !== 'manduca' || !!state.planform;
 }
 
 /**
@@ -186,6 +256,12 @@ export function toQuery(state, extra = {}) {
   const q = new URLSearchParams();
   for (const p of NUMERIC) q.set(p.key, String(state[p.key]));
   for (const e of ENUMS) q.set(e.key, String(state[e.key]));
+  for (const w of WING) {
+    const v = state[w.key];
+    if (v !== undefined && v !== w.def) q.set(w.key, w.key === 'clamp' && v === 0 ? 'root' : String(v));
+  }
+  if (state.outline && state.outline !== 'manduca') q.set('outline', state.outline);
+  if (state.planform) q.set('planform', state.planform);
   if (state.panels && state.panels.length !== PANELS.length) q.set('panels', state.panels.join(','));
   if (state.exp) q.set('exp', state.exp);
   for (const [k, v] of Object.entries(extra)) q.set(k, v);
@@ -231,6 +307,9 @@ export function paramsOf(s) {
   const out = {};
   for (const p of NUMERIC) out[p.key] = s[p.key];
   for (const e of ENUMS) out[e.key] = s[e.key];
+  for (const w of WING) out[w.key] = s[w.key];
+  out.outline = s.outline;
+  out.planform = s.planform;
   out.panels = s.panels;
   out.exp = s.exp || '';
   return /** @type {Params} */ (out);

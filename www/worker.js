@@ -1,7 +1,7 @@
 // @ts-check
 // Web Worker for the lab's expensive studies, so sliders never freeze: parameter sweeps
 // (Fig. 6), the initial-condition map (Fig. 7), long damped runs (Fig. 8), the resonance map
-// (Floquet numbers over flap frequency and α0) and the paper report.
+// (Floquet numbers over flap frequency and α0), the paper report and the FE wing (`fe`).
 // Protocol: in { id, kind, cfg, opts }; out { id, progress: [done, total] } | { id, result, ms }
 // | { id, error }. Typed arrays are transferred, not copied.
 import init, * as wb from './pkg/wingbeat.js';
@@ -46,9 +46,14 @@ const jobs = {
   reproduce() {
     return wb.reproduce();
   },
-  fe({ input }) {
-    // Shell FE modes of the wing (mesh, assembly, shift-invert eigen-solve): about a second.
-    return wb.feModes(input);
+  fe({ input, opts }, progress) {
+    // Shell FE modes of the wing (mesh, assembly, shift-invert eigen-solve): about a second for
+    // the default wing. `opts` = { json?, strain_point_mm? } (the modes JSON document for
+    // export). One wasm call: progress says only that it started; Cancel ends the worker.
+    progress(0, 1);
+    const r = opts ? /** @type {any} */ (wb.feModes)(input, null, opts) : wb.feModes(input);
+    progress(1, 1);
+    return r;
   },
 };
 
