@@ -361,6 +361,8 @@ export class WingLab extends HTMLElement {
     try {
       this.engine.setWing(this.engine.wingInput(paramsOf(s), this.wingPoints(s)));
       this.wingError = '';
+      // Already computed (cached, or just computed by the wing panel): use it now.
+      if (this.engine.wingCurrent && s.fe !== this.engine.fe) this.feReady(this.engine.fe);
     } catch (e) {
       this.wingError = `The wing is not valid: ${errorText(e)}`;
       this.error(this.wingError);
