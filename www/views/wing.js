@@ -27,7 +27,7 @@ const SHOW = {
   e_pa: { unit: 'GPa', scale: 1e-9, step: 0.01 },
   rho: { unit: 'kg/m³', scale: 1, step: 1 },
   nu: { unit: '', scale: 1, step: 0.01 },
-  thickness_um: { unit: 'µm', scale: 1, step: 1 },
+  thickness_um: { unit: 'µm', scale: 1, step: 0.1 },
   mesh_mm: { unit: 'mm (0 = automatic)', scale: 1, step: 0.05 },
   n_modes: { unit: '', scale: 1, step: 1 },
 };
