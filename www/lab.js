@@ -211,6 +211,10 @@ export class WingLab extends HTMLElement {
       this.store.subscribe(['panels'], () => this.applyPanels()),
       this.store.subscribe(['exp'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
       this.store.subscribe(WING_KEYS, () => { this.wantWing(); this.schedule(); }),
+      this.store.subscribe(['modes', 'mode'], (st) => {
+        const n = st.modes === 'fe' ? (st.fe ? st.fe.modes.length : 8) : 2;
+        if (Number(st.mode) > n) this.store.set({ mode: '1' });
+      }),
       this.store.subscribe(['kin'], (st) => { this.engine.setKinematics(st.kin ? st.kin.kinematics : null); this.schedule(); }),
       this.store.subscribe(['strain_point'], (st) => { this.engine.setStrainPoint(st.strain_point); this.schedule(); }),
       this.store.subscribe(['wing', 'kin', 'strain_point'], () => { if (this.hasAttribute('sync-url')) this.scheduleFragment(); }),

@@ -10,7 +10,7 @@ export const title = 'Parameters';
 
 const ENUM_TEXT = {
   modes: { paper: 'Paper table (Tables 3–4)', fe: 'FE wing (shell FE, computed here)' },
-  mode: { 1: 'Mode 1: spanwise bending', 2: 'Mode 2: spanwise torsion' },
+  mode: { 1: 'Mode 1: spanwise bending', 2: 'Mode 2: spanwise torsion', 3: 'Mode 3', 4: 'Mode 4', 5: 'Mode 5', 6: 'Mode 6', 7: 'Mode 7', 8: 'Mode 8' },
   detrend: { none: 'none (DC visible)', mean: 'mean', linear: 'linear' },
 };
 
@@ -71,8 +71,10 @@ export function mount(ctx) {
       selBox,
       el('div', { class: 'wl-presets' }, preset),
       el('p', { class: 'wl-note', rich: `Sampling: 10 kHz. ${PAPER_UNITS_NOTE}` }),
-      el('p', { class: 'wl-note', rich: `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker.` }),
+      el('p', { class: 'wl-note', rich: `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker. Your own outline, material, clamp and up to 8 modes: the Wing panel.` }),
   );
+  const kinNote = el('p', { class: 'wl-note', 'data-note': 'kin', hidden: true, text: 'Custom kinematics in use (Kinematics panel): α_0, β_0, γ_0, the phases and f_d do not apply; ζ and the duration do.' });
+  section.append(kinNote);
   section.append(
     main,
     moreBtn,
@@ -97,17 +99,25 @@ export function mount(ctx) {
     }
     for (const [k, sel] of Object.entries(selects)) if (sel.value !== s[k]) sel.value = s[k];
   };
+  /** The selected-mode choices are 1..N, N = the modes of the config (2 for the paper table). */
   const labelModes = (s) => {
     const fe = s.fe;
+    const useFe = s.modes === 'fe' && fe;
+    const n = useFe ? fe.modes.length : 2;
     for (const o of selects.mode.options) {
       const k = Number(o.value) - 1;
-      o.textContent = s.modes === 'fe' && fe ? `Mode ${k + 1}: ${fe.kinds[k]} (FE, ${fmt(fe.freq_hz[k], 4)} Hz)` : ENUM_TEXT.mode[o.value];
+      const on = k < n;
+      o.hidden = !on;
+      o.disabled = !on;
+      if (!on) continue;
+      o.textContent = useFe ? `Mode ${k + 1}: ${fe.kinds && fe.kinds[k] ? fe.kinds[k] : 'FE'} (FE, ${fmt(fe.modes[k].freq_hz, 4)} Hz)` : ENUM_TEXT.mode[o.value];
     }
+    kinNote.hidden = !s.kin;
   };
   const keys = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key)];
   const unsub = [
     store.subscribe(keys, sync),
-    store.subscribe(['fe', 'modes'], labelModes),
+    store.subscribe(['fe', 'modes', 'kin'], labelModes),
     store.subscribe(['timing', 'result', 'status'], (s) => {
       if (s.status) timingEl.textContent = s.status;
       else if (s.timing && s.result) {
