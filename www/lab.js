@@ -196,6 +196,11 @@ export class WingLab extends HTMLElement {
     // A wing parameter, outline or planform file given without a mode set means the FE wing.
     const given = new Set([...attrs.map((a) => a[0]), ...(this.hasAttribute('sync-url') ? [...new URLSearchParams(location.search).keys()] : [])]);
     if (!given.has('modes') && WING_KEYS.some((k) => given.has(k) && !rejected.some((r) => r.key === k))) params.modes = 'fe';
+    const nModes = params.modes === 'fe' ? params.n_modes : 2;
+    if (Number(params.mode) > nModes) {
+      rejected.push({ key: 'mode', why: `expected 1 to ${nModes} (the modes of the ${params.modes === 'fe' ? 'FE wing' : 'paper table'})` });
+      params.mode = '1';
+    }
     if (this.hasAttribute('embed')) this.classList.add('wl-embed');
     this.store = createStore({ ...params, result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
     this.engine = createEngine();
