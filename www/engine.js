@@ -93,7 +93,7 @@ export function plainWingInput(params, points) {
   const input = {
     camber: params.camber,
     clamp: params.clamp > 0 ? { strip: { x_mm: params.clamp } } : 'root',
-    material: { thickness_m: params.thickness_um * 1e-6, e_pa: params.e_pa, rho_kg_m3: params.rho, nu: params.nu },
+    material: { thickness_m: params.thickness_um / 1e6, e_pa: params.e_pa, rho_kg_m3: params.rho, nu: params.nu },
     n_modes: params.n_modes,
   };
   if (params.mesh_mm > 0) input.mesh_size_mm = params.mesh_mm;

@@ -192,3 +192,70 @@ test('parameters(): the core table once loaded, else null', async () => {
   await e.load();
   assert.equal(e.parameters()[0].key, 'alpha0');
 });
+
+test('own wing: the old wing stays in use until the new one is ready; results are kept per input', async () => {
+  const { plainWingInput } = await import('../../www/engine.js');
+  const workers = [];
+  const e = createEngine({ load: async () => fakeWasm(), createWorker: () => { const w = fakeWorker(); workers.push(w); return w; } });
+  await e.load();
+  const first = e.ensureFe();
+  const w = workers[0];
+  const r1 = { modes: [{ name: 'a', freq_hz: 62.49, a: [1, 0], zeta: 0, strains: [] }] };
+  w.reply({ id: w.posted[0].id, result: r1, ms: 1 });
+  assert.equal(await first, r1);
+  const p = { ...defaults(), n_modes: 3, camber: 0.05 };
+  const input = plainWingInput(p, [[0, -2], [10, -2], [10, 0], [0, 0]]);
+  assert.deepEqual(input.clamp, 'root');
+  assert.equal(input.n_modes, 3);
+  assert.equal(input.material.thickness_m, 81e-6);
+  assert.equal(input.planform_mm.length, 4);
+  const job = e.computeWing(input, () => {});
+  assert.deepEqual(w.posted[1].opts, { json: true });
+  assert.equal(e.fe, r1, 'old wing in use while the new one computes');
+  const r2 = { modes: [1, 2, 3].map((k) => ({ name: `b${k}`, freq_hz: 10 * k, a: [1, 0], zeta: 0, strains: [] })) };
+  w.reply({ id: w.posted[1].id, result: r2, ms: 1 });
+  assert.equal(await job.promise, r2);
+  assert.equal(e.fe, r1, 'a computed wing is used only once it is wanted');
+  e.setWing(input);
+  assert.equal(e.fe, r2);
+  assert.equal(e.wingCurrent, true);
+  const pf = { ...defaults(), modes: 'fe' };
+  assert.equal(e.config(pf).modes.length, 3, 'every mode of the wing');
+  // Back to the default wing: cached, no new job.
+  const n = w.posted.length;
+  assert.equal(await e.ensureFe(plainWingInput(defaults(), null)), r1);
+  assert.equal(w.posted.length, n);
+  // Cancel: the job fails with "cancelled", the wing in use stays.
+  const job3 = e.computeWing({ ...input, n_modes: 4 });
+  assert.equal(e.cancel(job3.id), true);
+  await assert.rejects(job3.promise, /cancelled/);
+  assert.equal(e.fe, r1);
+});
+
+test('custom kinematics replace the sliders’ stroke; a strain point replaces the modes’ strains', async () => {
+  const wb = fakeWasm();
+  const calls = [];
+  wb.modalStrainAt = (nodes, tris, sn, n, pt) => { calls.push(pt); return Array.from({ length: n }, (_, k) => ({ eps_x: k + pt[0], eps_y: 0, gamma_xy: 0 })); };
+  let w;
+  const e = createEngine({ load: async () => wb, createWorker: () => (w = fakeWorker()) });
+  await e.load();
+  const pr = e.ensureFe();
+  w.reply({ id: w.posted[0].id, result: { nodes: new Float64Array(3), triangles: new Uint32Array(0), strain_nodes: new Float64Array(0), modes: [{ freq_hz: 1, a: [1, 0], strains: [{ point: 'P', eps_x: 9, eps_y: 9, gamma_xy: 9 }] }, { freq_hz: 2, a: [1, 0], strains: [] }] }, ms: 1 });
+  await pr;
+  const kin = { flap_freq_hz: 30, alpha: { kind: 'sampled', values: [0, 1, 0, -1] }, beta: { kind: 'fourier' }, gamma: { kind: 'fourier' } };
+  e.setKinematics(kin);
+  const p = { ...defaults(), modes: 'fe', zeta: 0.01 };
+  let cfg = e.config(p);
+  assert.equal(cfg.kinematics, kin);
+  assert.deepEqual(Object.keys(cfg.applied).sort(), ['duration', 'zeta'], 'only ζ and the duration apply to custom kinematics');
+  e.setStrainPoint([4, -2]);
+  cfg = e.config(p);
+  assert.deepEqual(cfg.modes.map((m) => m.strains[0].eps_x), [4, 5]);
+  e.config(p);
+  assert.equal(calls.length, 1, 'modal strains computed once per point and wing');
+  e.setStrainPoint(null);
+  e.setKinematics(null);
+  cfg = e.config(p);
+  assert.equal(cfg.modes[0].strains[0].eps_x, 9);
+  assert.equal(Object.keys(cfg.applied).length, 9);
+});

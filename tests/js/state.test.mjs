@@ -73,3 +73,36 @@ test('overridesOf names every numeric parameter by key (the core applies them)',
   // The SimConfig itself (γ0 as the first yaw harmonic, ζ on every mode, 10 kHz) is checked on
   // the real wasm in tests/js/wasm.test.mjs.
 });
+
+test('wing parameters: URL round trip, written only when not default, clamp=root, whole n_modes', async () => {
+  const { WING, customWing } = await import('../../www/state.js');
+  const d = defaults();
+  assert.equal(customWing(d), false);
+  assert.ok(!/camber|n_modes|planform|outline|clamp/.test(toQuery(d)), 'short links stay short');
+  const { state, rejected } = parseQuery('?camber=0.05&clamp=2.5&n_modes=6&mesh_mm=0&e_pa=2e9&outline=slender&planform=examples/w.csv&mode=6&modes=fe');
+  assert.deepEqual(rejected, []);
+  assert.equal(state.camber, 0.05);
+  assert.equal(state.clamp, 2.5);
+  assert.equal(state.n_modes, 6);
+  assert.equal(state.mesh_mm, 0);
+  assert.equal(state.e_pa, 2e9);
+  assert.equal(state.outline, 'slender');
+  assert.equal(state.planform, 'examples/w.csv');
+  assert.equal(customWing(state), true);
+  const back = parseQuery('?' + toQuery(state));
+  assert.deepEqual(back.state, state);
+  assert.equal(parseQuery('?clamp=root').state.clamp, 0);
+  for (const w of WING) assert.ok(w.min <= w.def && w.def <= w.max, w.key);
+  const bad = parseQuery('?n_modes=2.5&n_modes2=1&camber=0.9&clamp=strip');
+  assert.deepEqual(bad.rejected.map((r) => r.key).sort(), ['camber', 'clamp', 'n_modes', 'n_modes2']);
+  assert.match(bad.rejected.find((r) => r.key === 'n_modes').why, /whole number/);
+});
+
+test('planform= takes only a relative same-origin .csv/.json path', async () => {
+  const { safePlanformPath } = await import('../../www/state.js');
+  for (const ok of ['w.csv', 'examples/planform-tapered.csv', 'a/b_c-d.JSON']) assert.equal(safePlanformPath(ok), ok);
+  for (const bad of ['https://evil.example/w.csv', '//evil.example/w.csv', '/abs/w.csv', '../w.csv', 'a/../../w.csv', 'w.txt', 'javascript:alert(1)//.csv', 'w.csv?x=1', 'w .csv', 'x'.repeat(201) + '.csv']) {
+    assert.equal(safePlanformPath(bad), null, bad);
+  }
+  assert.match(parseQuery('?planform=https://evil.example/w.csv').rejected[0].why, /relative same-origin/);
+});
