@@ -51,7 +51,7 @@ const jobs = {
     // the default wing. `opts` = { json?, strain_point_mm? } (the modes JSON document for
     // export). One wasm call: progress says only that it started; Cancel ends the worker.
     progress(0, 1);
-    const r = opts ? /** @type {any} */ (wb.feModes)(input, null, opts) : wb.feModes(input);
+    const r = wb.feModes(input, null, opts || undefined);
     progress(1, 1);
     return r;
   },
