@@ -390,8 +390,11 @@ export class WingLab extends HTMLElement {
           (fe) => { this.feRunning = false; this.feReady(fe); },
           (e) => {
             this.feRunning = false;
-            this.error(`The FE wing could not be computed: ${errorText(e)}`);
-            if (!this.engine.fe) this.store.set({ status: null });
+            // The lab stays usable: the previous wing (or, with none yet, the paper table's
+            // modes) goes on, with the reason shown until the wing changes.
+            this.wingError = `The FE wing could not be computed: ${errorText(e).replace(/\.?$/, ".")}${this.engine.fe ? ' The previous wing stays in use.' : ' Showing the paper table’s modes meanwhile.'}`;
+            this.error(this.wingError);
+            this.schedule();
           },
         );
       }
