@@ -91,7 +91,7 @@ export function mount(ctx) {
   const desc = el('p', { class: 'wl-note', id: id('kin-desc'), 'data-kin': 'summary' });
   const legend = el('p', { class: 'wl-kin-legend', 'aria-hidden': 'true' },
     ...ANGLES.map((a) => el('span', { style: `color:${COL[a]}`, text: `— ${SYM[a]}  ` })),
-    el('span', { text: '● measured samples' }));
+    el('span', { class: 'wl-kin-dots', text: '● measured samples', hidden: true }));
   const preview = (s) => {
     svg.replaceChildren();
     if (!engine.ready) return;
@@ -112,6 +112,7 @@ export function mount(ctx) {
       return;
     }
     const samp = s.kin && s.kin.samples;
+    /** @type {HTMLElement} */ (legend.querySelector('.wl-kin-dots')).hidden = !samp;
     let lo = Infinity, hi = -Infinity;
     for (const a of ANGLES) for (const v of ang[a]) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     if (samp) for (const a of ANGLES) for (const v of samp[a]) { lo = Math.min(lo, v); hi = Math.max(hi, v); }

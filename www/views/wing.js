@@ -187,7 +187,21 @@ export function mount(ctx) {
       c.dataset.i = String(i);
       dots.append(c);
     });
-    svgDesc.textContent = `Outline of ${pts.length} points, span ${fmt(w, 4)} mm, chord ${fmt(h, 4)} mm; point ${selected + 1} selected. Drag a point to move it, or use the point fields below.`;
+    // The strain point of the wing in use (the chosen one, else the FE result's), when shown.
+    const st = store.get();
+    const sp = !dirty && st.modes === 'fe' && st.fe ? st.strain_point || st.fe.strain_point_mm : null;
+    let spText = '';
+    if (sp) {
+      const [x, y] = toSvg(sp);
+      const r = 0.025 * scale;
+      const cross = document.createElementNS(NS, 'path');
+      cross.setAttribute('d', `M${x - r},${y - r}L${x + r},${y + r}M${x - r},${y + r}L${x + r},${y - r}`);
+      cross.setAttribute('class', 'wl-outline-sp');
+      cross.setAttribute('stroke-width', String(0.008 * scale));
+      dots.append(cross);
+      spText = ` The cross is the strain point (${fmt(sp[0], 4)}, ${fmt(sp[1], 4)}) mm.`;
+    }
+    svgDesc.textContent = `Outline of ${pts.length} points, span ${fmt(w, 4)} mm, chord ${fmt(h, 4)} mm; point ${selected + 1} selected. Drag a point to move it, or use the point fields below.${spText}`;
     check();
     syncPointInputs();
   };
@@ -539,6 +553,7 @@ export function mount(ctx) {
       drawOutline();
     }),
     store.subscribe(['fe', 'modes', 'wing', 'outline'], (s) => { describeInUse(s); showAuto(); }),
+    store.subscribe(['fe', 'strain_point', 'modes'], () => { if (!dirty) drawOutline(); }),
   ];
   const init = () => {
     fromStore();
