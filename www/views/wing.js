@@ -23,12 +23,12 @@ const FALLBACK_PRESETS = [
 /** How each wing parameter is shown: a display unit and scale (E in GPa), the input step. */
 const SHOW = {
   camber: { unit: 'fraction of chord', scale: 1, step: 0.01 },
-  clamp: { unit: 'mm (0 = root edge)', scale: 1, step: 0.1 },
+  clamp: { unit: 'mm, 0 = root edge', scale: 1, step: 0.1 },
   e_pa: { unit: 'GPa', scale: 1e-9, step: 0.01 },
   rho: { unit: 'kg/m³', scale: 1, step: 1 },
   nu: { unit: '', scale: 1, step: 0.01 },
   thickness_um: { unit: 'µm', scale: 1, step: 0.1 },
-  mesh_mm: { unit: 'mm (0 = automatic)', scale: 1, step: 0.05 },
+  mesh_mm: { unit: 'mm, 0 = automatic', scale: 1, step: 0.05 },
   n_modes: { unit: '', scale: 1, step: 1 },
 };
 const LABEL = {
@@ -337,11 +337,11 @@ export function mount(ctx) {
   });
   /** @type {Record<string, HTMLInputElement>} */
   const inputs = {};
-  const autoEl = el('span', { class: 'wl-unit', 'data-wing': 'auto-mesh' });
+  const autoEl = el('span', { class: 'wl-unit wl-auto', 'data-wing': 'auto-mesh' });
   const showAuto = () => {
     const fe = store.get().fe;
     const a = Number.isFinite(autoMesh) ? autoMesh : null;
-    autoEl.textContent = draft.params.mesh_mm > 0 ? '' : a != null ? ` automatic: ${fmt(a, 3)} mm` : fe && store.get().modes === 'fe' ? ` in use: ${fmt(fe.mesh_size_mm, 3)} mm` : '';
+    autoEl.textContent = a != null ? `: ${fmt(a, 3)} mm` : fe && store.get().modes === 'fe' && draft.params.mesh_mm === 0 ? `: ${fmt(fe.mesh_size_mm, 3)} mm in use` : '';
   };
   const rows = WING.map((w) => {
     const sh = SHOW[w.key];
@@ -355,7 +355,7 @@ export function mount(ctx) {
       const ok = inp.value.trim() !== '' && Number.isFinite(v) && v >= w.min - 1e-12 && v <= w.max + 1e-12 && (w.key !== 'n_modes' || Number.isInteger(v));
       if (!ok) {
         inp.setAttribute('aria-invalid', 'true');
-        say(`${LABEL[w.key]}: expected ${w.key === 'n_modes' ? 'a whole number' : 'a number'} in [${clean(w.min * sh.scale)}, ${clean(w.max * sh.scale)}]${sh.unit ? ' ' + sh.unit.replace(/ \(.*\)$/, '') : ''}.`, true);
+        say(`${LABEL[w.key]}: expected ${w.key === 'n_modes' ? 'a whole number' : 'a number'} in [${clean(w.min * sh.scale)}, ${clean(w.max * sh.scale)}]${sh.unit ? ' ' + sh.unit.replace(/,.*$/, '') : ''}.`, true);
         return;
       }
       inp.removeAttribute('aria-invalid');
@@ -364,11 +364,9 @@ export function mount(ctx) {
       matchPreset();
       showAuto();
     });
-    return el('div', { class: 'wl-wing-row' },
-      el('label', { for: id(`wing-${w.key}`), text: LABEL[w.key] }),
-      inp,
-      el('span', { class: 'wl-unit', text: sh.unit }),
-      w.key === 'mesh_mm' ? autoEl : null);
+    return el('div', { class: 'wl-wing-field' },
+      el('label', { for: id(`wing-${w.key}`) }, LABEL[w.key], sh.unit ? el('span', { class: 'wl-unit' }, ` (${sh.unit}`, w.key === 'mesh_mm' ? autoEl : '', ')') : null),
+      inp);
   });
   const syncParams = () => {
     for (const w of WING) {
@@ -520,27 +518,27 @@ export function mount(ctx) {
     inUse.append(ol);
   };
 
-  const ownId = id('wing-own');
+  // One column in reading order (tab order = visual order): source, drawing, point editing,
+  // the parameters as a grid filled row by row, the actions, the wing in use.
   section.append(
-    el('div', { class: 'wl-wing-grid' },
-      el('div', { class: 'wl-wing-outline' },
-        el('div', { class: 'wl-wing-row' }, el('label', { for: id('wing-outline'), text: 'Outline' }), outlineSel),
-        el('div', { class: 'wl-wing-row' }, el('label', { for: id('wing-file'), text: 'Load a file' }), fileIn),
-        el('p', { class: 'wl-note', id: ownId, text: 'CSV with a header x_mm,y_mm (or i,x_mm,y_mm; # comments) or JSON [[x, y], …], in mm, x spanwise from the root, chord toward −y; or a `wingbeat modes` JSON document to import its modes.' }),
-        svg,
-        svgDesc,
-        el('div', { class: 'wl-wing-pts' },
-          el('label', { for: id('wing-pt'), text: 'Point' }), idxIn,
-          el('label', { for: id('wing-x'), text: 'x (mm)' }), xIn,
-          el('label', { for: id('wing-y'), text: 'y (mm)' }), yIn,
-          addBtn, delBtn),
-        checkEl),
-      el('div', { class: 'wl-wing-params' },
-        el('div', { class: 'wl-wing-row' }, el('label', { for: id('wing-preset'), text: 'Material preset' }), presetSel),
-        ...rows,
-        el('div', { class: 'wl-wing-actions' }, computeBtn, cancelBtn, progress, exportBtn, resetBtn),
-        statusEl,
-        inUse)),
+    el('div', { class: 'wl-wing-src' },
+      el('div', { class: 'wl-wing-field' }, el('label', { for: id('wing-outline'), text: 'Outline' }), outlineSel),
+      el('div', { class: 'wl-wing-field' }, el('label', { for: id('wing-file'), text: 'Load a file (outline or modes JSON)' }), fileIn)),
+    el('p', { class: 'wl-note', text: 'Outline files: CSV with a header x_mm,y_mm (or i,x_mm,y_mm; # comments) or JSON [[x, y], …], in mm, x spanwise from the root (root edge on x = 0), chord toward −y. A `wingbeat modes` JSON document imports its modes.' }),
+    svg,
+    svgDesc,
+    el('div', { class: 'wl-wing-pts' },
+      el('span', { class: 'wl-pair' }, el('label', { for: id('wing-pt'), text: 'Point' }), idxIn),
+      el('span', { class: 'wl-pair' }, el('label', { for: id('wing-x'), text: 'x (mm)' }), xIn),
+      el('span', { class: 'wl-pair' }, el('label', { for: id('wing-y'), text: 'y (mm)' }), yIn),
+      addBtn, delBtn),
+    checkEl,
+    el('div', { class: 'wl-wing-params' },
+      el('div', { class: 'wl-wing-field' }, el('label', { for: id('wing-preset'), text: 'Material preset' }), presetSel),
+      ...rows),
+    el('div', { class: 'wl-wing-actions' }, computeBtn, cancelBtn, progress, exportBtn, resetBtn),
+    statusEl,
+    inUse,
   );
 
   const unsub = [
