@@ -19,7 +19,7 @@ struct Uniforms {
     eye: vec4<f32>,
     // Direction toward the light (xyz), unit.
     light: vec4<f32>,
-    // x: exaggeration, y: colour mode (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude),
+    // x: exaggeration, y: colour mode (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude, 5 field),
     // z: 1 / legend limit, w: 1 when the target is sRGB (else the shader gamma-encodes).
     params: vec4<f32>,
 };

@@ -2,7 +2,8 @@
 // vertex attributes and per-frame values from one uniform block (vec4/mat4 members only).
 //
 // Per vertex (stride 140 bytes): undeformed position (x, y, camber z) in metres, then for up
-// to 8 modes the shape φ_k and the strains ε_x,k, ε_y,k, γ_xy,k, each packed 4 modes per vec4.
+// to 8 modes the shape φ_k and the strains ε_x,k, ε_y,k, γ_xy,k, each packed 4 modes per vec4;
+// from a second buffer (stride 4 bytes) one scalar per node, the page's node field.
 //
 // Compiled after shaders/prelude.wgsl (the uniform block `u`, `diverging`, `srgb_to_linear`).
 
@@ -16,6 +17,8 @@ struct VertexIn {
     @location(6) ey1: vec4<f32>,
     @location(7) gxy0: vec4<f32>,
     @location(8) gxy1: vec4<f32>,
+    // The page's node field (second vertex buffer; colour mode 5), e.g. a run's RMS strain.
+    @location(9) field: f32,
 };
 
 struct VertexOut {
@@ -42,8 +45,10 @@ fn vs_main(v: VertexIn) -> VertexOut {
         s = ey;
     } else if (mode > 2.5 && mode < 3.5) {
         s = gxy;
-    } else if (mode > 3.5) {
+    } else if (mode > 3.5 && mode < 4.5) {
         s = sqrt(ex * ex + ey * ey + 0.5 * gxy * gxy);
+    } else if (mode > 4.5) {
+        s = v.field;
     }
 
     var out: VertexOut;

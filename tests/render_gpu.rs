@@ -446,3 +446,64 @@ fn fe_modes_json_renders() {
         .count();
     assert!(wing_pixels > 500, "only {wing_pixels} wing pixels");
 }
+
+/// A node field (colour mode 5, e.g. a run's RMS strain) colours the wing: a field rising from
+/// root to tip draws the root in the map's middle grey and the tip in its warm end; the legend
+/// spans 0…limit; a wrong length is refused and non-finite values are reported.
+#[test]
+fn node_field_colours_the_wing() {
+    let mesh = WingMesh::synthetic(40, 16);
+    let Some(mut off) = offscreen(W, H, &mesh) else {
+        return;
+    };
+    let span = mesh.span();
+    let field: Vec<f64> = mesh.nodes.iter().map(|p| (p[0] / span) as f64).collect();
+    assert!(off.renderer().set_node_field(&field[1..]).is_err());
+    assert_eq!(off.renderer().set_node_field(&field).unwrap(), None);
+    let frame = FrameParams {
+        colour: ColourMode::Field,
+        strain_range: Some(1.0),
+        show_axes: false,
+        show_body_axis: false,
+        show_stroke_plane: false,
+        ..FrameParams::default()
+    };
+    let (img, report) = off.render(&frame).unwrap();
+    let legend = report.legend.unwrap();
+    assert_eq!(
+        (legend.component, legend.min, legend.max),
+        ("field", 0.0, 1.0)
+    );
+    assert!(legend.data_max > 0.99 && legend.data_min.abs() < 1e-6);
+    // Warm (red well above blue) and neutral wing pixels both occur; plain shading has no red.
+    let (mut warm, mut neutral) = (0, 0);
+    for y in 0..H {
+        for x in 0..W {
+            let p = img.pixel(x, y);
+            if is_background(p) {
+                continue;
+            }
+            if p[0] as i32 > p[2] as i32 + 60 && (p[1] as i32) < p[0] as i32 - 40 {
+                warm += 1;
+            } else if (p[0] as i32 - p[2] as i32).abs() < 20 {
+                neutral += 1;
+            }
+        }
+    }
+    assert!(
+        warm > 100 && neutral > 100,
+        "warm {warm}, neutral {neutral}"
+    );
+    let (plain, _) = off
+        .render(&FrameParams {
+            colour: ColourMode::Plain,
+            ..frame.clone()
+        })
+        .unwrap();
+    assert_ne!(plain.pixels, img.pixels);
+    let mut bad = field;
+    bad[3] = f64::NAN;
+    let note = off.renderer().set_node_field(&bad).unwrap().unwrap();
+    assert!(note.contains("1 non-finite"), "{note}");
+    assert_eq!(off.renderer().node_field()[3], 0.0);
+}

@@ -4,7 +4,7 @@
 
 use nalgebra::{Rotation3, Vector3};
 use wingbeat::render::scene::{
-    diverging, legend_for, wing_point_to_world, wing_rotation, DIVERGING_STOPS,
+    diverging, legend_for, legend_for_field, wing_point_to_world, wing_rotation, DIVERGING_STOPS,
 };
 use wingbeat::render::{ColourMode, FrameParams, OrbitCamera, OrbitKey, WingMesh, MAX_MODES};
 use wingbeat::WingbeatError;
@@ -329,6 +329,16 @@ fn colour_map_and_legend() {
         assert_eq!(ColourMode::from_index(m.index()), Some(m));
     }
     assert_eq!(ColourMode::from_name("gxy"), Some(ColourMode::ShearXY));
+    assert_eq!(ColourMode::from_name("field"), Some(ColourMode::Field));
+    assert_eq!(ColourMode::Field.index(), 5);
+    // The node field's legend: 0…M for a non-negative field, ±M when a value is negative.
+    let l = legend_for_field(&[0.0, 1e-3, 4e-3, f32::NAN], Some(2e-3));
+    assert_eq!((l.component, l.min, l.max), ("field", 0.0, 2e-3));
+    assert_eq!((l.data_min, l.data_max), (0.0, 4e-3));
+    assert!(close(l.stops().first().unwrap().1, DIVERGING_STOPS[2].1));
+    let l = legend_for_field(&[-3e-3, 1e-3], None);
+    assert_eq!((l.min, l.max), (-3e-3, 3e-3));
+    assert_eq!(legend_for_field(&[], None).max, 1e-12);
     assert_eq!(ColourMode::from_name("nope"), None);
 }
 

@@ -3,6 +3,8 @@
 //! GPU data layout (see `shaders/prelude.wgsl` and `shaders/wing.wgsl`):
 //! * wing vertex buffer, uploaded once, stride 140 bytes: `pos: vec3` (x, y, camber z) then
 //!   `phi0, phi1, ex0, ex1, ey0, ey1, gxy0, gxy1: vec4` — each packs modes 0–3 and 4–7;
+//! * a second vertex buffer, stride 4 bytes: `field: f32` per node (the page's node field,
+//!   [`Renderer::set_node_field`]; zeros until set), drawn with [`ColourMode::Field`];
 //! * `u32` index buffer of the triangles;
 //! * a line vertex buffer (fixed frame, I″–J″–K″ triad, body axis, stroke-plane outline) and a
 //!   stroke-plane quad, stride 32 bytes (`pos: vec3, colour: vec4, space: f32`);
@@ -10,7 +12,8 @@
 
 use super::mesh::WingMesh;
 use super::scene::{
-    self, legend_for, CleanFrame, ColourMode, FrameParams, Legend, Mat4, OrbitCamera,
+    self, legend_for, legend_for_field, CleanFrame, ColourMode, FrameParams, Legend, Mat4,
+    OrbitCamera,
 };
 use super::{RenderError, MAX_MODES};
 use bytemuck::{Pod, Zeroable};
@@ -176,6 +179,10 @@ pub struct Uniforms {
 /// Floats per wing vertex: position (3) + 4 quantities × [`MAX_MODES`].
 pub const WING_VERTEX_FLOATS: usize = 3 + 4 * MAX_MODES;
 
+/// Shader location of the per-node field (`shaders/wing.wgsl` `field`), after the position
+/// (0) and the eight packed modal attributes (1–8): 10 attributes in all, within WebGL2's 16.
+pub const FIELD_LOCATION: u32 = 1 + (4 * MAX_MODES / 4) as u32;
+
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Pod, Zeroable)]
 struct LineVertex {
@@ -208,6 +215,8 @@ pub struct Renderer {
     uniform_buf: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     wing_vb: wgpu::Buffer,
+    field_vb: wgpu::Buffer,
+    field: Vec<f32>,
     wing_ib: wgpu::Buffer,
     n_indices: u32,
     line_vb: wgpu::Buffer,
@@ -410,6 +419,12 @@ impl Renderer {
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &wing_attrs,
         };
+        let field_attrs = [attr(FIELD_LOCATION, 0, wgpu::VertexFormat::Float32)];
+        let field_layout = wgpu::VertexBufferLayout {
+            array_stride: 4,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &field_attrs,
+        };
         let line_attrs = [
             attr(0, 0, wgpu::VertexFormat::Float32x3),
             attr(1, 12, f4),
@@ -432,7 +447,7 @@ impl Renderer {
         };
         let pipeline = |label: &str,
                         shader: &wgpu::ShaderModule,
-                        vb: wgpu::VertexBufferLayout<'_>,
+                        vbs: &[Option<wgpu::VertexBufferLayout<'_>>],
                         topology: wgpu::PrimitiveTopology,
                         blend: Option<wgpu::BlendState>,
                         depth_write: bool| {
@@ -443,7 +458,7 @@ impl Renderer {
                     module: shader,
                     entry_point: Some("vs_main"),
                     compilation_options: Default::default(),
-                    buffers: &[Some(vb)],
+                    buffers: vbs,
                 },
                 primitive: wgpu::PrimitiveState {
                     topology,
@@ -469,7 +484,7 @@ impl Renderer {
         let wing_pipeline = pipeline(
             "wing",
             &wing_shader,
-            wing_layout,
+            &[Some(wing_layout), Some(field_layout)],
             wgpu::PrimitiveTopology::TriangleList,
             None,
             true,
@@ -477,7 +492,7 @@ impl Renderer {
         let line_pipeline = pipeline(
             "lines",
             &line_shader,
-            line_layout.clone(),
+            &[Some(line_layout.clone())],
             wgpu::PrimitiveTopology::LineList,
             None,
             true,
@@ -485,7 +500,7 @@ impl Renderer {
         let plane_pipeline = pipeline(
             "stroke plane",
             &line_shader,
-            line_layout,
+            &[Some(line_layout)],
             wgpu::PrimitiveTopology::TriangleList,
             Some(wgpu::BlendState::ALPHA_BLENDING),
             false,
@@ -495,6 +510,12 @@ impl Renderer {
             label: Some("wing vertices"),
             contents: bytemuck::cast_slice(&pack_vertices(&mesh)),
             usage: wgpu::BufferUsages::VERTEX,
+        });
+        let field = vec![0.0f32; mesh.nodes.len()];
+        let field_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("wing node field"),
+            contents: bytemuck::cast_slice(&field),
+            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
         });
         let indices: Vec<u32> = mesh.triangles.iter().flatten().copied().collect();
         let wing_ib = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -526,6 +547,8 @@ impl Renderer {
             uniform_buf,
             bind_group,
             wing_vb,
+            field_vb,
+            field,
             wing_ib,
             n_indices: indices.len() as u32,
             line_vb,
@@ -543,6 +566,43 @@ impl Renderer {
         };
         renderer.check()?;
         Ok(renderer)
+    }
+
+    /// Sets the node field drawn with [`ColourMode::Field`]: one value per node (e.g. the RMS
+    /// of a strain component over a run), uploaded once (4 bytes per node); the legend of the
+    /// next [`Renderer::update`] is computed from it. Non-finite values are stored as 0 and
+    /// counted in the returned notice. Rejects, changing nothing, a length other than the node
+    /// count.
+    pub fn set_node_field(&mut self, values: &[f64]) -> Result<Option<String>, RenderError> {
+        let n = self.mesh.nodes.len();
+        if values.len() != n {
+            return Err(RenderError::Input(crate::error::WingbeatError::invalid(
+                "field",
+                format!("{} values", values.len()),
+                format!("one value per node ({n})"),
+            )));
+        }
+        let mut bad = 0usize;
+        self.field = values
+            .iter()
+            .map(|&v| {
+                let x = v as f32;
+                if x.is_finite() {
+                    x
+                } else {
+                    bad += 1;
+                    0.0
+                }
+            })
+            .collect();
+        self.queue
+            .write_buffer(&self.field_vb, 0, bytemuck::cast_slice(&self.field));
+        Ok((bad > 0).then(|| format!("{bad} non-finite field value(s) drawn as 0")))
+    }
+
+    /// The node field as uploaded (zeros until [`Renderer::set_node_field`]).
+    pub fn node_field(&self) -> &[f32] {
+        &self.field
     }
 
     /// Notices from construction (e.g. modes dropped beyond [`MAX_MODES`]).
@@ -624,7 +684,11 @@ impl Renderer {
         } else {
             self.mesh.strain_field(q)
         };
-        let legend = legend_for(f.colour, &field, f.strain_range);
+        let legend = if f.colour == ColourMode::Field {
+            Some(legend_for_field(&self.field, f.strain_range))
+        } else {
+            legend_for(f.colour, &field, f.strain_range)
+        };
         let inv_range = legend.as_ref().map_or(0.0, |l| 1.0 / l.max);
         let (w, h) = self.size;
         let aspect = if h > 0 { w as f32 / h as f32 } else { 1.0 };
@@ -706,6 +770,7 @@ impl Renderer {
             pass.set_bind_group(0, &self.bind_group, &[]);
             pass.set_pipeline(&self.wing_pipeline);
             pass.set_vertex_buffer(0, self.wing_vb.slice(..));
+            pass.set_vertex_buffer(1, self.field_vb.slice(..));
             pass.set_index_buffer(self.wing_ib.slice(..), wgpu::IndexFormat::Uint32);
             pass.draw_indexed(0..self.n_indices, 0, 0..1);
             let f = &self.frame;

@@ -407,19 +407,24 @@ pub enum ColourMode {
     ShearXY,
     /// √(ε_x² + ε_y² + γ_xy²/2), the Frobenius norm of the strain tensor (≥ 0).
     Magnitude,
+    /// A scalar per node set by the page ([`super::Renderer::set_node_field`]), e.g. the RMS
+    /// or the peak of a strain component over a whole run; it does not change with q.
+    Field,
 }
 
 impl ColourMode {
     /// All modes, in index order.
-    pub const ALL: [ColourMode; 5] = [
+    pub const ALL: [ColourMode; 6] = [
         ColourMode::Plain,
         ColourMode::StrainX,
         ColourMode::StrainY,
         ColourMode::ShearXY,
         ColourMode::Magnitude,
+        ColourMode::Field,
     ];
 
-    /// The index used by the shader and the JS API (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude).
+    /// The index used by the shader and the JS API (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude,
+    /// 5 node field).
     pub fn index(self) -> u32 {
         match self {
             ColourMode::Plain => 0,
@@ -427,6 +432,7 @@ impl ColourMode {
             ColourMode::StrainY => 2,
             ColourMode::ShearXY => 3,
             ColourMode::Magnitude => 4,
+            ColourMode::Field => 5,
         }
     }
 
@@ -443,6 +449,7 @@ impl ColourMode {
             "ey" | "eps_y" | "strain_y" => Some(ColourMode::StrainY),
             "gxy" | "gamma_xy" | "shear" => Some(ColourMode::ShearXY),
             "mag" | "magnitude" => Some(ColourMode::Magnitude),
+            "field" => Some(ColourMode::Field),
             _ => None,
         }
     }
@@ -455,13 +462,15 @@ impl ColourMode {
             ColourMode::StrainY => "ε_y",
             ColourMode::ShearXY => "γ_xy",
             ColourMode::Magnitude => "|ε|",
+            ColourMode::Field => "field",
         }
     }
 
-    /// The coloured value at one node from its strain `[ε_x, ε_y, γ_xy]`.
+    /// The coloured value at one node from its strain `[ε_x, ε_y, γ_xy]` (0 for the plain
+    /// colouring and for the node field, which does not come from the strain).
     pub fn value(self, e: [f32; 3]) -> f32 {
         match self {
-            ColourMode::Plain => 0.0,
+            ColourMode::Plain | ColourMode::Field => 0.0,
             ColourMode::StrainX => e[0],
             ColourMode::StrainY => e[1],
             ColourMode::ShearXY => e[2],
@@ -689,6 +698,33 @@ pub fn robust_range(values: impl Iterator<Item = f32>) -> f32 {
     let k = ((a.len() - 1) as f64 * 0.98).round() as usize;
     let (_, v, _) = a.select_nth_unstable_by(k, f32::total_cmp);
     *v
+}
+
+/// The legend of a node field ([`ColourMode::Field`]): colours span 0…M when no value is
+/// negative (the upper half of the map, as for the magnitude), else −M…M; M is `fixed_range`
+/// or [`robust_range`] of the values (at least 1e-12). Non-finite values are ignored.
+pub fn legend_for_field(values: &[f32], fixed_range: Option<f32>) -> Legend {
+    let mut lo = f32::INFINITY;
+    let mut hi = f32::NEG_INFINITY;
+    for &v in values.iter().filter(|v| v.is_finite()) {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        lo = 0.0;
+        hi = 0.0;
+    }
+    let m = fixed_range
+        .unwrap_or_else(|| robust_range(values.iter().copied()))
+        .max(1e-12);
+    Legend {
+        component: ColourMode::Field.label(),
+        min: if lo < 0.0 { -m } else { 0.0 },
+        max: m,
+        units: "strain",
+        data_min: lo,
+        data_max: hi,
+    }
 }
 
 /// The legend for `mode` given the nodal strain field; `None` for [`ColourMode::Plain`].

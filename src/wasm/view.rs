@@ -11,6 +11,8 @@
 //! view.setCamera(tx, ty, tz, yaw, pitch, distance);   // or, from the current direction:
 //! const cam = view.fitPoints(new Float32Array(xyz), 0.04); // [tx, ty, tz, yaw, pitch, distance]
 //! view.set_scene(showAxes, showStrokePlane, showBodyAxis);
+//! view.setNodeField(new Float64Array(nNodes), limitOrNull);   // then set_frame(…, 5): a whole-wing map
+//! WingView.colourMap();                 // [t, r, g, b, …]: the colour map, for 2-D drawings
 //! ```
 //! Every failure reaches JS as a `JsError` with a readable message.
 
@@ -192,7 +194,8 @@ impl WingView {
     }
 
     /// Sets the pose (radians), the modal coordinates (true scale), the exaggeration and the
-    /// colouring (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude). Non-finite values are drawn as 0
+    /// colouring (0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude, 5 the node field of
+    /// `setNodeField`). Non-finite values are drawn as 0
     /// and listed in the returned object's `warnings`. Returns the legend:
     /// `{component, min, max, units, data_min, data_max, exaggeration, max_deflection_m,
     /// warnings}` (`component` is `"none"` for plain colouring).
@@ -207,7 +210,7 @@ impl WingView {
     ) -> Result<JsValue, JsError> {
         let colour = ColourMode::from_index(colour_mode).ok_or_else(|| {
             JsError::new(&format!(
-                "invalid value for `colour_mode`: {colour_mode} (allowed: 0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude)"
+                "invalid value for `colour_mode`: {colour_mode} (allowed: 0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude, 5 node field)"
             ))
         })?;
         self.frame.alpha = alpha;
@@ -223,6 +226,36 @@ impl WingView {
     pub fn set_strain_range(&mut self, limit: Option<f64>) -> JsValue {
         self.frame.strain_range = limit.filter(|l| l.is_finite() && *l > 0.0);
         self.update()
+    }
+
+    /// Sets the node field drawn with colour mode 5: one value per node of the mesh (e.g. the
+    /// RMS or peak of a strain component over a run, from `strainField`), and the legend limit
+    /// (colours span 0…limit, or ±limit when a value is negative; `null`/non-positive: the
+    /// 98th percentile of |value|). Non-finite values are drawn as 0 and reported in the
+    /// returned legend's `warnings`. Rejects a length other than the node count, changing nothing.
+    #[wasm_bindgen(js_name = setNodeField)]
+    pub fn set_node_field(
+        &mut self,
+        values: &[f64],
+        limit: Option<f64>,
+    ) -> Result<JsValue, JsError> {
+        let note = self.renderer.set_node_field(values).map_err(js_err)?;
+        self.warnings
+            .retain(|w| !w.contains("non-finite field value"));
+        self.warnings.extend(note);
+        self.frame.strain_range = limit.filter(|l| l.is_finite() && *l > 0.0);
+        Ok(self.update())
+    }
+
+    /// The colour map of every strain colouring as a flat array `[t, r, g, b, …]` (t from 0 to
+    /// 1, sRGB 0–1): signed values map −M…0…M onto t = 0…½…1, non-negative ones 0…M onto ½…1.
+    /// The page's 2-D drawings (mode shapes, planform strain map) use it, so there is one map.
+    #[wasm_bindgen(js_name = colourMap)]
+    pub fn colour_map() -> Vec<f64> {
+        crate::render::scene::DIVERGING_STOPS
+            .iter()
+            .flat_map(|(t, c)| [*t as f64, c[0] as f64, c[1] as f64, c[2] as f64])
+            .collect()
     }
 
     /// Shows or hides the frames (fixed I, J, K and flapping I″, J″, K″), the stroke plane
