@@ -427,6 +427,15 @@ export class WingLab extends HTMLElement {
     /** @type {Partial<LabState>} */
     const patch = { fe };
     if (Number(s.mode) > fe.modes.length) patch.mode = '1';
+    // A chosen strain point that is not on the new wing falls back to the wing's own point.
+    if (s.strain_point && this.engine.has('modalStrainAt')) {
+      try {
+        this.engine.modalStrainAt(s.strain_point);
+      } catch {
+        patch.strain_point = null;
+        this.notice(`The chosen strain point (${s.strain_point.join(', ')}) mm is not on this wing; using the wing's own strain point.`);
+      }
+    }
     this.store.set(patch);
     this.schedule();
   }
