@@ -400,3 +400,224 @@ export function maxDeflection(shapes, nNodes, qs) {
   }
   return best;
 }
+
+// ---------- colour map, picking and whole-wing strain maps (mode viewer, strain panel) ----------
+
+/**
+ * The colour at `t` ∈ [0, 1] of a flat stop list [t0, r, g, b, t1, r, g, b, …] (sRGB 0–1, t
+ * increasing), as [r, g, b] in 0–255. The stops come from the renderer (WingView.colourMap(),
+ * the one definition of the map), so the 2-D drawings use the 3-D view's colours.
+ * @param {ArrayLike<number>} stops
+ * @param {number} t
+ * @returns {number[]}
+ */
+export function colourAt(stops, t) {
+  const n = Math.floor(stops.length / 4);
+  if (!n) return [128, 128, 128];
+  const x = Number.isFinite(t) ? Math.min(1, Math.max(0, t)) : 0.5;
+  const rgb = (j) => [stops[4 * j + 1], stops[4 * j + 2], stops[4 * j + 3]];
+  let out = rgb(n - 1);
+  if (x <= stops[0]) out = rgb(0);
+  else {
+    for (let j = 0; j + 1 < n; j++) {
+      const t0 = stops[4 * j], t1 = stops[4 * j + 4];
+      if (x <= t1) {
+        const f = t1 > t0 ? (x - t0) / (t1 - t0) : 0;
+        const a = rgb(j), b = rgb(j + 1);
+        out = [0, 1, 2].map((c) => a[c] + f * (b[c] - a[c]));
+        break;
+      }
+    }
+  }
+  return out.map((v) => Math.round(255 * Math.min(1, Math.max(0, v))));
+}
+
+/**
+ * Screen positions of every node of the wing at one pose: the renderer's vertex transform
+ * (wing frame (x, y, z + ex·Σ φ_k q_k) rotated by R_x(α)·R_y(β)·R_z(γ)) then the camera
+ * mirror's projection. Returns { xy: Float64Array [px, py, …] (NaN behind the eye), depth }.
+ * @param {ArrayLike<number>} nodes flat x, y, z (m)
+ * @param {ArrayLike<number> | null} shapes mode-major φ_k per node
+ * @param {ArrayLike<number>} q modal coordinates (true scale)
+ * @param {number} exaggeration
+ * @param {number[]} ang [α, β, γ] rad
+ * @param {Camera} cam
+ * @param {number} width CSS pixels
+ * @param {number} height
+ */
+export function projectNodes(nodes, shapes, q, exaggeration, ang, cam, width, height) {
+  const n = Math.floor(nodes.length / 3);
+  const m = shapes ? Math.min(q.length, Math.floor(shapes.length / Math.max(1, n))) : 0;
+  const pr = projector(cam, width, height);
+  const e = eye(cam);
+  const xy = new Float64Array(2 * n), depth = new Float64Array(n);
+  for (let i = 0; i < n; i++) {
+    let w = 0;
+    for (let k = 0; k < m; k++) w += /** @type {ArrayLike<number>} */ (shapes)[k * n + i] * q[k];
+    const p = rotate(ang[0], ang[1], ang[2], [nodes[3 * i], nodes[3 * i + 1], nodes[3 * i + 2] + exaggeration * w]);
+    const s = pr(p[0], p[1], p[2]);
+    xy[2 * i] = s ? s[0] : NaN;
+    xy[2 * i + 1] = s ? s[1] : NaN;
+    depth[i] = Math.hypot(p[0] - e[0], p[1] - e[1], p[2] - e[2]);
+  }
+  return { xy, depth };
+}
+
+/**
+ * The wing point under a screen position: the front-most triangle (smallest mean depth) whose
+ * projection contains (px, py), and the undeformed planform coordinates there (barycentric
+ * interpolation of the nodes' x, y, m) with the barycentric weights `w` of the triangle's three
+ * nodes `ids`. Null when no triangle is hit.
+ * @param {ArrayLike<number>} nodes flat x, y, z (m)
+ * @param {ArrayLike<number>} triangles
+ * @param {{ xy: ArrayLike<number>, depth: ArrayLike<number> }} proj from projectNodes
+ * @param {number} px
+ * @param {number} py
+ * @returns {{ tri: number, x: number, y: number, ids: number[], w: number[] } | null}
+ */
+export function pick(nodes, triangles, proj, px, py) {
+  const { xy, depth } = proj;
+  let best = -1, bestDepth = Infinity, bw = [0, 0, 0];
+  for (let t = 0; t + 2 < triangles.length; t += 3) {
+    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+    const ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1], cx = xy[2 * c], cy = xy[2 * c + 1];
+    const det = (by - cy) * (ax - cx) + (cx - bx) * (ay - cy);
+    if (!Number.isFinite(det) || Math.abs(det) < 1e-12) continue;
+    const l0 = ((by - cy) * (px - cx) + (cx - bx) * (py - cy)) / det;
+    const l1 = ((cy - ay) * (px - cx) + (ax - cx) * (py - cy)) / det;
+    const l2 = 1 - l0 - l1;
+    if (l0 < -1e-9 || l1 < -1e-9 || l2 < -1e-9) continue;
+    const d = l0 * depth[a] + l1 * depth[b] + l2 * depth[c];
+    if (d < bestDepth) { bestDepth = d; best = t; bw = [l0, l1, l2]; }
+  }
+  if (best < 0) return null;
+  const ids = [triangles[best], triangles[best + 1], triangles[best + 2]];
+  let x = 0, y = 0;
+  ids.forEach((i, j) => { x += bw[j] * nodes[3 * i]; y += bw[j] * nodes[3 * i + 1]; });
+  return { tri: best / 3, x, y, ids, w: bw };
+}
+
+/** Strain components a whole-wing map can show, and the statistics over the run. */
+export const MAP_COMPONENTS = ['eps_x', 'eps_y', 'gamma_xy', 'von_mises'];
+export const MAP_STATS = ['rms', 'peak'];
+
+/**
+ * The equivalent (von Mises) strain at a surface point of a thin plate in plane stress:
+ * ε_eq = (2/3)·√(3/2 (e_x² + e_y² + e_z²) + 3/4 γ_xy²), with e = ε − tr(ε)/3 the deviatoric
+ * strains and ε_z = −ν/(1 − ν)·(ε_x + ε_y) the through-thickness strain (ν = 0.3 unless given).
+ * Used only by the JS fallback below; the core's strainField defines its own.
+ */
+export function vonMisesStrain(ex, ey, g, nu = 0.3) {
+  const ez = (-nu / (1 - nu)) * (ex + ey);
+  const m = (ex + ey + ez) / 3;
+  const dx = ex - m, dy = ey - m, dz = ez - m;
+  return (2 / 3) * Math.sqrt(1.5 * (dx * dx + dy * dy + dz * dz) + 0.75 * g * g);
+}
+
+/**
+ * A whole-wing strain map in JS (used only when the engine does not offer the core's
+ * strainField): per node, the RMS or the peak |value| over the run of a component of
+ * Σ_k ε_k(node) q_k(t). RMS of a linear component is exact from the modal second-moment matrix
+ * C_kl = mean_t q_k q_l (√(εᵀ C ε) per node); von Mises and peaks use at most `maxSamples`
+ * evenly spaced samples plus each mode's extremes (extremeStates).
+ * @param {ArrayLike<number>} strainNodes [(k·n + i)·3 + c]
+ * @param {number} nNodes
+ * @param {ArrayLike<number>[]} qs q_k(t) per mode
+ * @param {{ component: string, stat: string }} opts
+ * @returns {Float64Array}
+ */
+export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSamples = 2000) {
+  const m = Math.min(qs.length, Math.floor(strainNodes.length / (3 * Math.max(1, nNodes))));
+  const out = new Float64Array(nNodes);
+  const c = { eps_x: 0, eps_y: 1, gamma_xy: 2 }[component];
+  const nT = m ? qs[0].length : 0;
+  if (!m || !nT) return out;
+  if (stat === 'rms' && c != null) {
+    const C = new Float64Array(m * m);
+    for (let k = 0; k < m; k++) {
+      for (let l = k; l < m; l++) {
+        let s = 0;
+        const a = qs[k], b = qs[l];
+        for (let t = 0; t < nT; t++) s += a[t] * b[t];
+        C[k * m + l] = C[l * m + k] = s / nT;
+      }
+    }
+    for (let i = 0; i < nNodes; i++) {
+      let s = 0;
+      for (let k = 0; k < m; k++) {
+        const ek = strainNodes[(k * nNodes + i) * 3 + c];
+        for (let l = 0; l < m; l++) s += ek * C[k * m + l] * strainNodes[(l * nNodes + i) * 3 + c];
+      }
+      out[i] = Math.sqrt(Math.max(0, s));
+    }
+    return out;
+  }
+  const states = stat === 'peak' ? extremeStates(qs, maxSamples) : (() => {
+    const stride = Math.max(1, Math.ceil(nT / maxSamples));
+    const st = [];
+    for (let t = 0; t < nT; t += stride) st.push(qs.map((q) => q[t]));
+    return st;
+  })();
+  for (let i = 0; i < nNodes; i++) {
+    let acc = 0;
+    for (const q of states) {
+      let ex = 0, ey = 0, g = 0;
+      for (let k = 0; k < m; k++) {
+        const o = (k * nNodes + i) * 3;
+        ex += strainNodes[o] * q[k];
+        ey += strainNodes[o + 1] * q[k];
+        g += strainNodes[o + 2] * q[k];
+      }
+      const v = c === 0 ? ex : c === 1 ? ey : c === 2 ? g : vonMisesStrain(ex, ey, g);
+      if (stat === 'peak') acc = Math.max(acc, Math.abs(v));
+      else acc += v * v;
+    }
+    out[i] = stat === 'peak' ? acc : Math.sqrt(acc / states.length);
+  }
+  return out;
+}
+
+/** Labels of the strain-map choices (store `strain_map`), for selects and legends. */
+export const MAP_LABELS = {
+  eps_x: 'ε_x, spanwise strain',
+  eps_y: 'ε_y, chordwise strain',
+  gamma_xy: 'γ_xy, shear strain',
+  von_mises: 'von Mises equivalent strain',
+  rms: 'RMS over the run',
+  peak: 'peak |value| over the run',
+};
+/** The strain map shown when the store has no choice yet. */
+export const DEFAULT_MAP = Object.freeze({ component: 'gamma_xy', stat: 'rms' });
+
+/** @type {{ fe: any, result: any, key: string, field: Float64Array } | null} */
+let mapCache = null;
+
+/**
+ * The whole-wing strain map of a run: per node of the FE wing `fe`, the RMS or peak of a strain
+ * component of Σ_k ε_k q_k(t) over the run of `result`. Uses `strainField` (the core's, through
+ * the engine) when given, else strainMapJs; the last map is cached (two views draw it).
+ * Null when the wing and the run do not match (e.g. the paper mode set: its q are not the FE
+ * wing's, so no physical map exists).
+ * @param {any} fe FeModesResult (nodes, strain_nodes, n_modes)
+ * @param {any} result LiveResult
+ * @param {{ component: string, stat: string }} map
+ * @param {((strainNodes: Float64Array, nModes: number, qs: Float64Array[], opts: { component: string, stat: string }) => Float64Array) | null} [strainField]
+ * @returns {Float64Array | null}
+ */
+export function strainMap(fe, result, map, strainField = null) {
+  if (!fe || !result || !fe.strain_nodes || !fe.strain_nodes.length) return null;
+  const n = fe.nodes.length / 3;
+  const qs = result.analysis.sim.modes.map((m) => m.q.total);
+  const nModes = fe.strain_nodes.length / (3 * n);
+  if (qs.length !== nModes) return null;
+  const key = `${map.component}/${map.stat}`;
+  if (mapCache && mapCache.fe === fe && mapCache.result === result && mapCache.key === key) return mapCache.field;
+  /** @type {ArrayLike<number> | null} */
+  let field = null;
+  if (strainField) {
+    try { field = strainField(fe.strain_nodes, nModes, qs, { component: map.component, stat: map.stat }); } catch { field = null; }
+  }
+  if (!field || field.length !== n) field = strainMapJs(fe.strain_nodes, n, qs, map);
+  mapCache = { fe, result, key, field: Float64Array.from(field) };
+  return mapCache.field;
+}

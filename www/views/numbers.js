@@ -1,5 +1,5 @@
 // @ts-check
-// Floquet & contributions panel: both modes' natural and effective frequencies, beat periods,
+// Floquet & contributions panel: every mode's natural and effective frequencies, beat periods,
 // multipliers, stability and force-term shares, as a table (its own text alternative).
 import { el, rich } from '../dom.js';
 import { fmt, UNITS } from '../format.js';
@@ -27,27 +27,49 @@ export const ROWS = [
 export function mount(ctx) {
   const { store, section } = ctx;
   const table = el('table', { class: 'wl-numtable' });
-  table.append(el('caption', { class: 'wl-sr', text: 'Floquet analysis and force-term shares of both modes for the current parameters' }));
-  table.append(el('thead', {}, el('tr', {}, el('th', { scope: 'col', text: 'Quantity' }), el('th', { scope: 'col', text: 'Mode 1' }), el('th', { scope: 'col', text: 'Mode 2' }))));
+  const caption = el('caption', { class: 'wl-sr', text: 'Floquet analysis and force-term shares of every mode for the current parameters' });
+  const headRow = el('tr');
   const tbody = el('tbody');
+  table.append(caption, el('thead', {}, headRow), tbody);
+  // The table scrolls sideways on its own when there are more modes than fit (8 at most).
+  const scroller = el('div', { class: 'wl-numscroll', role: 'region', tabindex: '0', 'aria-label': 'Floquet and contributions table (scrolls sideways for many modes)' }, table);
+  section.append(scroller, el('p', { class: 'wl-note', rich: 'Shares are 100·Σq_{term}^2/Σq_{total}^2 (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms). One column per mode of the current mode set; the selected mode is highlighted.' }));
+  /** @type {Record<string, HTMLTableCellElement>} */
   const cells = {};
-  for (const [key, label] of ROWS) {
-    const tr = el('tr', {}, el('th', { scope: 'row' }, rich(label)));
-    for (const k of [0, 1]) {
-      const td = el('td', { 'data-field': `${key}-${k}`, text: '—' });
-      cells[`${key}-${k}`] = td;
-      tr.append(td);
-    }
-    tbody.append(tr);
-  }
-  table.append(tbody);
-  section.append(table, el('p', { class: 'wl-note', rich: 'Shares are 100·Σq_{term}^2/Σq_{total}^2 (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms).' }));
+  /** @type {HTMLTableCellElement[][]} cells by [row][mode], for the selection mark */
+  let cols = [];
+  let nModes = 0;
+
+  /** Rebuilds header and body for `n` modes (only when the count changes). */
+  const layout = (n) => {
+    if (n === nModes) return;
+    nModes = n;
+    for (const k of Object.keys(cells)) delete cells[k];
+    cols = Array.from({ length: n }, () => []);
+    headRow.replaceChildren(el('th', { scope: 'col', text: 'Quantity' }), ...Array.from({ length: n }, (_, k) => {
+      const th = el('th', { scope: 'col', text: `Mode ${k + 1}`, 'data-mode': String(k + 1) });
+      cols[k].push(th);
+      return th;
+    }));
+    tbody.replaceChildren(...ROWS.map(([key, label]) => {
+      const tr = el('tr', {}, el('th', { scope: 'row' }, rich(label)));
+      for (let k = 0; k < n; k++) {
+        const td = el('td', { 'data-field': `${key}-${k}`, text: '—' });
+        cells[`${key}-${k}`] = td;
+        cols[k].push(td);
+        tr.append(td);
+      }
+      return tr;
+    }));
+  };
+  layout(2);
 
   const draw = (s) => {
     if (!s.result) return;
     const a = s.result.analysis;
+    layout(a.sim.modes.length);
     const set = (key, k, text) => { if (cells[`${key}-${k}`]) cells[`${key}-${k}`].textContent = text; };
-    a.sim.modes.slice(0, 2).forEach((m, k) => {
+    a.sim.modes.forEach((m, k) => {
       const f = m.floquet;
       const c = m.contribution_percent;
       set('freq', k, fmt(m.freq_hz, 4));
@@ -66,18 +88,21 @@ export function mount(ctx) {
       for (const v of m.q.total) peak = Math.max(peak, Math.abs(v));
       set('peak', k, fmt(peak, 4));
     });
+    cols.forEach((col, k) => col.forEach((c) => c.classList.toggle('wl-selmode', k === s.result.k)));
     table.dataset.selected = String(s.result.k + 1);
+    table.dataset.modes = String(nModes);
   };
   const unsub = store.subscribe(['result'], draw);
-  const rows = () => ROWS.map(([key, label]) => [label, cells[`${key}-0`].textContent, cells[`${key}-1`].textContent]);
+  const header = () => ['Quantity', ...Array.from({ length: nModes }, (_, k) => `Mode ${k + 1}`)];
+  const rows = () => ROWS.map(([key, label]) => [label, ...Array.from({ length: nModes }, (_, k) => cells[`${key}-${k}`].textContent || '')]);
   ctx.registerExport('numbers', {
     csv: () => {
       const s = store.get();
       if (!s.result) return null;
       const case_ = `wingbeat lab; ${toQuery(s)}`;
-      return ['# ' + case_, 'quantity,mode 1,mode 2', ...rows().map((r) => r.map((c) => `"${c.replace(/"/g, '""')}"`).join(','))].join('\n') + '\n';
+      return ['# ' + case_, header().map((h) => h.toLowerCase()).join(','), ...rows().map((r) => r.map((c) => `"${c.replace(/"/g, '""')}"`).join(','))].join('\n') + '\n';
     },
-    table: () => (store.get().result ? [['Quantity', 'Mode 1', 'Mode 2'], ...rows()] : null),
+    table: () => (store.get().result ? [header(), ...rows()] : null),
   });
   return { cells, destroy: unsub };
 }

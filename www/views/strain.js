@@ -1,20 +1,41 @@
 // @ts-check
-// Strain panel (paper Fig. 9): ε_x, ε_y, γ_xy at the point P, Σ_k ε_k q_k(t).
-import { el, rich } from '../dom.js';
-import { fmt, PAPER_UNITS_NOTE } from '../format.js';
+// Strain panel (paper Fig. 9, and beyond it): ε_x, ε_y, γ_xy over time at the strain point,
+// Σ_k ε_k q_k(t) over every mode; for an FE wing also a planform map of the whole wing coloured
+// by the RMS or peak of a chosen strain component over the run (the store's `strain_map`), on
+// which a click (or the arrow keys) chooses the strain point (the store's `strain_point`, mm;
+// the engine then recomputes the modal strains there). The 3-D view can show the same map.
+import { el, rich, isTouch } from '../dom.js';
+import { fmt, PAPER_UNITS_NOTE, errorText } from '../format.js';
 import { decimate } from '../decimate.js';
 import { linePlot, color } from '../plot.js';
 import { toQuery, describe } from '../state.js';
+import * as S from '../scene3d.js';
+import { context2d } from '../export.js';
 
-export const title = 'Strain at the point P (paper Fig. 9)';
+export const title = 'Strain where you point (paper Fig. 9)';
+
+/** Arrow-key step of the strain point on the map, mm (Shift: ×4). */
+const KEY_STEP_MM = 0.5;
+
+/**
+ * The engine's strainField (the core's, wasm, for the engine's current wing) when it has one,
+ * as S.strainMap wants it; else null (the JS fallback is used). A map whose length is not the
+ * wing's node count (the engine moved on to another wing) is discarded by S.strainMap.
+ * @param {any} engine
+ */
+export function strainFieldOf(engine) {
+  if (!engine || typeof engine.strainField !== 'function') return null;
+  return (/** @type {Float64Array} */ _sn, /** @type {number} */ _n, /** @type {Float64Array[]} */ qs, /** @type {{ component: string, stat: string }} */ opts) => engine.strainField(qs, opts);
+}
 
 /** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
-  const { store, section } = ctx;
+  const { store, section, uid } = ctx;
+  const touch = isTouch();
   const plot = linePlot(section, {
     name: 'strain',
-    title: 'Strain at P',
-    ariaLabel: 'Strain plot: normal strains ε_x, ε_y and shear strain γ_xy at the point P over time',
+    title: 'Strain at the strain point',
+    ariaLabel: 'Strain plot: normal strains ε_x, ε_y and shear strain γ_xy at the strain point over time',
     xLabel: 't',
     xUnit: 's',
     yLabel: 'strain',
@@ -27,26 +48,236 @@ export function mount(ctx) {
   });
   const note = el('p', { class: 'wl-note' });
   section.append(note);
+
+  // ---- the planform map ----
+  const mapId = `${uid}-smap`;
+  const comp = el('select', { id: `${uid}-smap-comp` });
+  for (const c of S.MAP_COMPONENTS) comp.append(el('option', { value: c, text: S.MAP_LABELS[c] }));
+  const stat = el('select', { id: `${uid}-smap-stat` });
+  for (const c of S.MAP_STATS) stat.append(el('option', { value: c, text: S.MAP_LABELS[c] }));
+  const setMap = () => store.set({ strain_map: /** @type {any} */ ({ component: comp.value, stat: stat.value }) });
+  comp.addEventListener('change', setMap);
+  stat.addEventListener('change', setMap);
+  const canvas = el('canvas', {
+    class: 'wl-smap-canvas',
+    id: mapId,
+    tabindex: '0',
+    role: 'img',
+    width: 600,
+    height: 300,
+    'aria-label': `Planform map of the wing coloured by the whole-run strain; ${touch ? 'tap' : 'click'} a point, or use the arrow keys here, to choose where the strain is plotted.`,
+    'aria-describedby': `${mapId}-text`,
+  });
+  const legend = el('canvas', { class: 'wl-smap-legend', width: 240, height: 12, 'aria-hidden': 'true' });
+  const legendText = el('span', { class: 'wl-smap-legend-text' });
+  const pointText = el('p', { class: 'wl-smap-point', id: `${mapId}-text`, 'aria-live': 'polite' });
+  const mapNote = el('p', { class: 'wl-note' });
+  const row = (label, id, input) => el('span', { class: 'wl-smap-field' }, el('label', { for: id, text: label }), input);
+  const mapBox = el('div', { class: 'wl-smap', 'data-smap': '' },
+    el('h3', { class: 'wl-smap-title', text: 'Whole-wing strain map' }),
+    el('div', { class: 'wl-smap-controls' }, row('component', comp.id, comp), row('statistic', stat.id, stat)),
+    canvas,
+    el('div', { class: 'wl-smap-legendrow' }, legend, legendText),
+    pointText,
+    mapNote);
+  section.append(mapBox);
+
+  /** @type {{ x0: number, y1: number, k: number } | null} mm → CSS px of the last drawing */
+  let frame = null;
+  /** @type {Float64Array | null} */
+  let field = null;
+  let limit = 0;
+
   const unit = (s) => (s.modes === 'fe' ? 'strain (–)' : 'paper units');
+  const mapOf = (s) => s.strain_map || S.DEFAULT_MAP;
+  const feOf = (s) => (s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null);
+  /** The point in use, mm: the store's, else the FE wing's default (the one feModes used). */
+  const pointOf = (s) => s.strain_point || (s.fe && s.fe.strain_point_mm) || [3, -6];
+
+  /** The planform's nodes in mm as { xy, depth } for S.pick (a flat top view). */
+  const topView = (fe) => {
+    const n = fe.nodes.length / 3;
+    const xy = new Float64Array(2 * n);
+    for (let i = 0; i < n; i++) { xy[2 * i] = fe.nodes[3 * i] * 1e3; xy[2 * i + 1] = fe.nodes[3 * i + 1] * 1e3; }
+    return { xy, depth: new Float64Array(n) };
+  };
+  /** Whether (x, y) mm lies on the meshed wing. */
+  const inside = (fe, x, y) => !!S.pick(fe.nodes, fe.triangles, topView(fe), x, y);
+
+  function stops() {
+    const R = ctx.engine.renderer;
+    const m = R && typeof R.colourMap === 'function' ? R.colourMap() : null;
+    return m && m.length ? m : null;
+  }
+
+  function drawMap() {
+    const s = store.get();
+    const fe = feOf(s);
+    const c2 = context2d(canvas);
+    mapBox.dataset.state = fe ? 'ready' : 'none';
+    if (!fe) {
+      canvas.hidden = true;
+      legend.hidden = true;
+      legendText.textContent = '';
+      field = null;
+      mapNote.replaceChildren(rich(s.modes === 'fe'
+        ? 'The map appears once the FE wing’s modes are computed.'
+        : 'The paper’s mode set gives strains only at the paper’s point P (Table 6), so there is no whole-wing map and the point is fixed: choose the FE wing mode set (or your own wing) to map the strain and to choose the point.'));
+      pointText.textContent = s.modes === 'fe' ? '' : 'Strain point: the paper’s P (Table 6).';
+      return;
+    }
+    canvas.hidden = false;
+    legend.hidden = false;
+    const map = mapOf(s);
+    comp.value = map.component;
+    stat.value = map.stat;
+    let err = '';
+    try {
+      field = S.strainMap(fe, s.result, map, strainFieldOf(ctx.engine));
+    } catch (e) {
+      field = null;
+      err = errorText(e);
+    }
+    // Size: the planform's aspect, the panel's width (device pixels for sharpness).
+    const n = fe.nodes.length / 3;
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (let i = 0; i < n; i++) {
+      const x = fe.nodes[3 * i] * 1e3, y = fe.nodes[3 * i + 1] * 1e3;
+      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+    }
+    const pad = 10;
+    const cssW = Math.max(200, Math.min(720, canvas.parentElement ? canvas.parentElement.clientWidth : 600));
+    const k = (cssW - 2 * pad) / Math.max(1e-9, x1 - x0);
+    const cssH = Math.round(Math.min(360, (y1 - y0) * k + 2 * pad));
+    const kk = Math.min(k, (cssH - 2 * pad) / Math.max(1e-9, y1 - y0));
+    const dpr = Math.min(2, globalThis.devicePixelRatio || 1);
+    canvas.style.width = `${cssW}px`;
+    canvas.style.height = `${cssH}px`;
+    if (canvas.width !== Math.round(cssW * dpr) || canvas.height !== Math.round(cssH * dpr)) {
+      canvas.width = Math.round(cssW * dpr);
+      canvas.height = Math.round(cssH * dpr);
+    }
+    c2.setTransform(dpr, 0, 0, dpr, 0, 0);
+    c2.clearRect(0, 0, cssW, cssH);
+    frame = { x0: x0 - pad / kk, y1: y1 + pad / kk, k: kk };
+    const px = (x) => (x - /** @type {any} */ (frame).x0) * kk;
+    const py = (y) => (/** @type {any} */ (frame).y1 - y) * kk;
+    const st = stops();
+    limit = field ? S.robust(field, 0.98) : 0;
+    const signed = !!field && field.some((v) => v < 0);
+    const tOf = (v) => (limit > 0 ? 0.5 + 0.5 * Math.max(-1, Math.min(1, v / limit)) : 0.5);
+    const tri = fe.triangles;
+    for (let t = 0; t + 2 < tri.length; t += 3) {
+      const a = tri[t], b = tri[t + 1], c = tri[t + 2];
+      const v = field ? (field[a] + field[b] + field[c]) / 3 : 0;
+      const rgb = st ? S.colourAt(st, tOf(v)) : [200, 200, 200];
+      c2.fillStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
+      c2.strokeStyle = c2.fillStyle;
+      c2.lineWidth = 0.6;
+      c2.beginPath();
+      c2.moveTo(px(fe.nodes[3 * a] * 1e3), py(fe.nodes[3 * a + 1] * 1e3));
+      c2.lineTo(px(fe.nodes[3 * b] * 1e3), py(fe.nodes[3 * b + 1] * 1e3));
+      c2.lineTo(px(fe.nodes[3 * c] * 1e3), py(fe.nodes[3 * c + 1] * 1e3));
+      c2.closePath();
+      c2.fill();
+      c2.stroke();
+    }
+    // The strain point: a ring with a dark and a light edge (visible on every colour).
+    const [sx, sy] = pointOf(s);
+    const cx = px(sx), cy = py(sy);
+    c2.lineWidth = 3;
+    c2.strokeStyle = '#111';
+    c2.beginPath(); c2.arc(cx, cy, 6, 0, 2 * Math.PI); c2.stroke();
+    c2.lineWidth = 1.5;
+    c2.strokeStyle = '#fff';
+    c2.beginPath(); c2.arc(cx, cy, 6, 0, 2 * Math.PI); c2.stroke();
+    canvas.dataset.point = `${sx},${sy}`;
+    // Legend bar: the part of the map in use (0…M: the upper half; ±M: all of it).
+    const lc = context2d(legend);
+    lc.clearRect(0, 0, legend.width, legend.height);
+    if (st) {
+      for (let i = 0; i < legend.width; i++) {
+        const f = i / (legend.width - 1);
+        const rgb = S.colourAt(st, signed ? f : 0.5 + 0.5 * f);
+        lc.fillStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
+        lc.fillRect(i, 0, 1, legend.height);
+      }
+    }
+    const what = `${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}`;
+    legendText.textContent = field
+      ? `${signed ? fmt(-limit, 3) : '0'} … ${fmt(limit, 3)} strain (–): ${what}; the hottest 2 % of the wing saturate (largest ${fmt(Math.max(...field), 3)})`
+      : `no map: ${err || 'the wing and the run do not match'}`;
+    canvas.dataset.limit = String(limit);
+    mapNote.replaceChildren(rich(`Colours: ${what}, per node of the FE mesh (${n} nodes), from the modal strain fields and q_k(t) of all ${fe.n_modes} modes; the same colour map as the 3-D view (choose “whole-run strain map” there to see it on the flapping wing). Top view: span to the right, leading edge up.`));
+    pointText.textContent = `Strain point (x, y) = (${fmt(sx, 3)}, ${fmt(sy, 3)}) mm. ${touch ? 'Tap the map or the 3-D wing to move it.' : 'Click the map or the 3-D wing, or focus the map and use the arrow keys (Shift: bigger steps), to move it.'}`;
+  }
+
+  /** Sets the strain point if (x, y) mm lies on the wing; says so otherwise. */
+  function choose(x, y) {
+    const s = store.get();
+    const fe = feOf(s);
+    if (!fe) return false;
+    if (!inside(fe, x, y)) {
+      pointText.textContent = `(${fmt(x, 3)}, ${fmt(y, 3)}) mm is outside the wing: choose a point on the wing.`;
+      return false;
+    }
+    const r = (v) => Math.round(v * 1000) / 1000;
+    store.set({ strain_point: [r(x), r(y)] });
+    return true;
+  }
+
+  canvas.addEventListener('click', (e) => {
+    if (!frame) return;
+    const b = canvas.getBoundingClientRect();
+    const x = frame.x0 + (e.clientX - b.left) / frame.k;
+    const y = frame.y1 - (e.clientY - b.top) / frame.k;
+    choose(x, y);
+  });
+  canvas.addEventListener('keydown', (e) => {
+    const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[e.key];
+    if (!d) return;
+    e.preventDefault();
+    const [x, y] = pointOf(store.get());
+    const step = KEY_STEP_MM * (e.shiftKey ? 4 : 1);
+    choose(x + d[0] * step, y + d[1] * step);
+  });
+
   const draw = (s) => {
     const r = s.result;
     if (!r) return;
     const a = r.analysis;
+    const st = a.sim.strain;
+    const [px, py] = pointOf(s);
     note.replaceChildren(rich(s.modes === 'fe'
-      ? 'Σ_k ε_k q_k(t) at P = (3, −6) mm from the FE modal strain fields (top surface, dimensionless, SI).'
+      ? `Σ_k ε_k q_k(t) over all ${a.sim.modes.length} modes at the strain point (${fmt(px, 3)}, ${fmt(py, 3)}) mm, from the FE modal strain fields (top surface, dimensionless, SI).`
       : `Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). ${PAPER_UNITS_NOTE}`));
     plot.setYLabel(`strain (${unit(s)})`);
-    const st = a.sim.strain;
     if (!st) {
       plot.setData([[0], [null], [null], [null]]);
-      return;
+      plot.setSummary('No strain at this point for this mode set.');
+    } else {
+      const w = plot.u.bbox ? plot.u.bbox.width / (globalThis.devicePixelRatio || 1) : 600;
+      plot.setData(decimate(a.sim.t, [st.eps_x, st.eps_y, st.gamma_xy], Math.min(1500, Math.max(200, Math.round(w)))));
+      const pk = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
+      plot.setSummary(`Peak |strain| at the strain point over the run (${unit(s)}): ε_x ${fmt(pk(st.eps_x), 3)}, ε_y ${fmt(pk(st.eps_y), 3)}, γ_xy ${fmt(pk(st.gamma_xy), 3)}.`);
     }
-    const w = plot.u.bbox ? plot.u.bbox.width / (globalThis.devicePixelRatio || 1) : 600;
-    plot.setData(decimate(a.sim.t, [st.eps_x, st.eps_y, st.gamma_xy], Math.min(1500, Math.max(200, Math.round(w)))));
-    const pk = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
-    plot.setSummary(`Peak |strain| at P over the run (${unit(s)}): ε_x ${fmt(pk(st.eps_x), 3)}, ε_y ${fmt(pk(st.eps_y), 3)}, γ_xy ${fmt(pk(st.gamma_xy), 3)}.`);
+    drawMap();
   };
-  const unsub = store.subscribe(['result'], draw);
+  const unsubs = [
+    store.subscribe(['result'], draw),
+    store.subscribe(['fe', 'strain_map', 'strain_point', 'modes'], () => drawMap()),
+  ];
+  /** @type {ResizeObserver | null} */
+  let ro = null;
+  if (typeof ResizeObserver === 'function') {
+    let lastW = 0;
+    ro = new ResizeObserver(() => {
+      const w = mapBox.clientWidth;
+      if (w && Math.abs(w - lastW) > 4) { lastW = w; drawMap(); }
+    });
+    ro.observe(mapBox);
+  }
+  drawMap();
   ctx.registerPlot('strain', plot);
   ctx.registerExport('strain', {
     csv: () => {
@@ -69,7 +300,7 @@ export function mount(ctx) {
       const st = s.result && s.result.analysis.sim.strain;
       if (!st) return null;
       return {
-        title: 'Strain at the point P (paper Fig. 9)',
+        title: 'Strain at the strain point (paper Fig. 9)',
         params: describe(s),
         x: s.result.analysis.sim.t,
         xRange: plot.xWindow(),
@@ -84,5 +315,10 @@ export function mount(ctx) {
       };
     },
   });
-  return { plot, destroy: () => { unsub(); plot.destroy(); } };
+  return {
+    plot,
+    get field() { return field; },
+    choose,
+    destroy: () => { unsubs.forEach((f) => f()); if (ro) ro.disconnect(); plot.destroy(); },
+  };
 }

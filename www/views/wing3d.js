@@ -19,6 +19,7 @@ import { fmt, errorText } from '../format.js';
 import { beatInfo } from '../beat.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
+import { strainFieldOf } from './strain.js';
 
 export const title = '3-D wing';
 
@@ -31,6 +32,7 @@ const COLOURS = [
   ['2', 'ε_y, chordwise strain'],
   ['3', 'γ_xy, shear strain'],
   ['4', '|ε|, strain magnitude'],
+  ['5', 'whole-run strain map (strain panel’s choice)'],
 ];
 const SPEEDS = [
   ['beat4', 'one beat in 4 s'],
@@ -77,15 +79,16 @@ export function mount(ctx) {
   const box = el('div', { class: 'wl-wing3d-box', 'data-wing3d': '', 'data-state': 'loading' });
   if (!document.getElementById('wing3d')) box.id = 'wing3d';
   const summaryId = `${uid}-w3-sum`;
-  const canvas = el('canvas', {
+  const makeCanvas = () => el('canvas', {
     class: 'wl-w3-canvas',
     tabindex: '0',
     role: 'img',
-    'aria-label': `3-D view of the flexing wing. ${touch ? 'Drag to orbit, pinch or use the buttons to zoom.' : 'Drag, or use the arrow keys, to orbit; wheel or + and − to zoom; Space plays or pauses.'}`,
+    'aria-label': `3-D view of the flexing wing. ${touch ? 'Drag to orbit, pinch or use the buttons to zoom; tap the wing to choose the strain point.' : 'Drag, or use the arrow keys, to orbit; wheel or + and − to zoom; Space plays or pauses; click the wing to choose the strain point.'}`,
     'aria-describedby': summaryId,
     width: 640,
     height: 480,
   });
+  let canvas = makeCanvas();
   // Labels drawn over the canvas at the projected tips of the axes and a corner of the stroke
   // plane (positions from the camera mirror; the legend below says the same in words).
   const LABELS = [
@@ -94,6 +97,9 @@ export function mount(ctx) {
     ['body axis', 'body', 'rgb(220,220,220)'], ['stroke plane', 'plane', 'rgb(150,170,235)'],
   ];
   const overlay = el('div', { class: 'wl-w3-overlay', 'aria-hidden': 'true' });
+  // The strain point (FE wings): a ring at its projected position on the drawn wing.
+  const pointMark = el('span', { class: 'wl-w3-point', hidden: true });
+  overlay.append(pointMark);
   const labelEls = LABELS.map(([t, kind, c]) => {
     const e = el('span', { class: `wl-w3-label wl-w3-label-${kind}`, text: t });
     e.style.color = c;
@@ -120,7 +126,7 @@ export function mount(ctx) {
   const colour = el('select', { id: `${uid}-w3-colour`, 'aria-label': 'Colour the wing by' });
   for (const [v, t] of COLOURS) colour.append(el('option', { value: v, text: t }));
   colour.value = '3';
-  colour.addEventListener('change', () => { applyRange(); draw(); });
+  colour.addEventListener('change', () => { fieldKey = ''; applyRange(); draw(); });
   const legend = el('canvas', { class: 'wl-w3-legend', width: 240, height: 14, 'aria-hidden': 'true' });
   const legendText = el('span', { class: 'wl-w3-legend-text' });
   const showAxes = el('input', { type: 'checkbox', id: `${uid}-w3-axes`, checked: true });
@@ -189,23 +195,53 @@ export function mount(ctx) {
       unavailable(`the FE wing could not be computed: ${errorText(e)}`);
       return;
     }
-    fitCanvas();
-    const renderer = engine.renderer;
-    if (!renderer) return;
-    try {
-      view = await renderer.createFromArrays(canvas, fe.nodes, fe.triangles, fe.shapes, fe.strain_nodes);
-    } catch (e) {
-      unavailable(errorText(e));
-      return;
-    }
-    cam = S.defaultCamera(S.spanOf(fe.nodes));
-    box.dataset.state = 'ready';
-    box.dataset.backend = view.backend();
+    if (!(await makeView(fe))) return;
     if (typeof ResizeObserver === 'function') {
       ro = new ResizeObserver(() => { if (fitCanvas()) { fit(false); draw(); } });
       ro.observe(stage);
     }
     onResult();
+  }
+
+  /** (Re)creates the WingView for the FE wing `w` (a new wing gets a fresh canvas). */
+  async function makeView(w) {
+    const renderer = engine.renderer;
+    if (!renderer) return false;
+    if (view) {
+      view.free();
+      view = null;
+      const fresh = makeCanvas();
+      canvas.replaceWith(fresh);
+      canvas = fresh;
+      bindCamera();
+    }
+    fitCanvas();
+    try {
+      view = await renderer.createFromArrays(canvas, w.nodes, w.triangles, w.shapes, w.strain_nodes);
+    } catch (e) {
+      unavailable(errorText(e));
+      return false;
+    }
+    fe = w;
+    cam = S.defaultCamera(S.spanOf(w.nodes));
+    userCamera = false;
+    fitKey = '';
+    fieldKey = '';
+    dirty = true;
+    box.dataset.state = 'ready';
+    box.dataset.backend = view.backend();
+    box.dataset.nodes = String(w.nodes.length / 3);
+    onScene();
+    return true;
+  }
+
+  /** A new FE wing in the store (the user's own wing, or another mode count): redraw with it. */
+  /** @type {Promise<void> | null} */
+  let remaking = null;
+  function onFe() {
+    const w = store.get().fe;
+    if (!started || !w || w === fe || remaking) return;
+    remaking = makeView(w).then(() => { remaking = null; if (store.get().fe !== fe) onFe(); else onResult(); });
   }
 
   /** Starts now if the panel is on screen, else when it first scrolls into sight. */
@@ -297,8 +333,38 @@ export function mount(ctx) {
   function applyRange() {
     if (!view) return;
     const c = Number(colour.value);
-    view.set_strain_range(c > 0 && ranges && ranges[c] > 0 ? ranges[c] : null);
+    if (c === 5) applyField();
+    view.set_strain_range(c > 0 && c < 5 && ranges && ranges[c] > 0 ? ranges[c] : null);
   }
+
+  /**
+   * Colour 5: the whole-run strain map of the strain panel (store `strain_map`), uploaded to the
+   * renderer once per run and choice (WingView.setNodeField; the legend limit is the renderer's
+   * robust 98th percentile, as on the panel's planform map).
+   */
+  let fieldKey = '';
+  /** @type {string | null} */
+  let fieldProblem = null;
+  function applyField() {
+    const s = store.get();
+    if (!view || !fe || !s.result) return;
+    const map = s.strain_map || S.DEFAULT_MAP;
+    const key = `${map.component}/${map.stat}`;
+    if (fieldKey === key && fieldResult === s.result) return;
+    fieldKey = key;
+    fieldResult = s.result;
+    const field = s.modes === 'fe' ? S.strainMap(fe, s.result, map, strainFieldOf(engine)) : null;
+    fieldProblem = field ? null : s.modes === 'fe' ? 'the wing and the run do not match yet' : 'the paper mode set has no whole-wing strain (choose the FE wing)';
+    try {
+      view.setNodeField(field || new Float64Array(fe.nodes.length / 3), null);
+    } catch (e) {
+      fieldProblem = errorText(e);
+    }
+    fieldLabel = `${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}`;
+  }
+  /** @type {any} */
+  let fieldResult = null;
+  let fieldLabel = '';
 
   /** New analysis: time range now; colour ranges, run deflection and camera fit on the next frame. */
   function onResult() {
@@ -382,7 +448,16 @@ export function mount(ctx) {
   function bindCamera() {
     /** @type {number[] | null} */
     let last = null;
-    canvas.addEventListener('pointerdown', (e) => { last = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
+    /** @type {number[] | null} where the pointer went down (a click: up within 4 px of it) */
+    let down = null;
+    canvas.addEventListener('pointerdown', (e) => { last = [e.clientX, e.clientY]; down = last; canvas.setPointerCapture(e.pointerId); });
+    canvas.addEventListener('pointerup', (e) => {
+      if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4) {
+        const b = canvas.getBoundingClientRect();
+        pickAt(e.clientX - b.left, e.clientY - b.top);
+      }
+      down = null;
+    });
     canvas.addEventListener('pointermove', (e) => {
       if (!last || !view) return;
       const dx = e.clientX - last[0], dy = e.clientY - last[1];
@@ -416,6 +491,69 @@ export function mount(ctx) {
         draw();
       }
     });
+  }
+
+  /** The drawn wing's nodes on screen at the instant shown (CSS pixels), for picking and the point mark. */
+  function screenNodes() {
+    const s = store.get();
+    const r = s.result;
+    if (!fe || !cam || !r || !r.angles) return null;
+    const a = r.analysis;
+    const i = Math.min(a.sim.t.length - 1, Math.max(0, Math.round((s.t3d ?? 0) * a.sim.sample_rate_hz)));
+    const ang = [r.angles.alpha[i], r.angles.beta[i], r.angles.gamma[i]];
+    const q = a.sim.modes.map((m) => m.q.total[i]);
+    return { ang, q, proj: S.projectNodes(fe.nodes, fe.shapes, q, exaggeration(), ang, cam, canvas.clientWidth, canvas.clientHeight) };
+  }
+
+  /**
+   * A click on the drawn wing at (x, y) CSS pixels: the front-most triangle there gives the
+   * planform point (undeformed x, y), which becomes the strain point (mm). FE wings only.
+   */
+  function pickAt(x, y) {
+    const s = store.get();
+    if (!fe || s.modes !== 'fe') {
+      status.textContent = 'The strain point can be chosen on an FE wing only (the paper’s strains exist only at P).';
+      return null;
+    }
+    const sn = screenNodes();
+    if (!sn) return null;
+    const hit = S.pick(fe.nodes, fe.triangles, sn.proj, x, y);
+    if (!hit) return null;
+    /** @type {[number, number]} */
+    const mm = [Math.round(hit.x * 1e6) / 1e3, Math.round(hit.y * 1e6) / 1e3];
+    store.set({ strain_point: mm });
+    return mm;
+  }
+
+  /**
+   * Where the planform point (x, y) mm is drawn now (CSS px in the canvas): its triangle of the
+   * flat planform gives barycentric weights, applied to the drawn (cambered, deflected, rotated,
+   * projected) nodes. Null when the point is off the wing or behind the eye.
+   */
+  function drawnPoint(xmm, ymm) {
+    if (!fe) return null;
+    const sn = screenNodes();
+    if (!sn) return null;
+    const n = fe.nodes.length / 3;
+    const top = { xy: new Float64Array(2 * n), depth: new Float64Array(n) };
+    for (let i = 0; i < n; i++) { top.xy[2 * i] = fe.nodes[3 * i]; top.xy[2 * i + 1] = fe.nodes[3 * i + 1]; }
+    const hit = S.pick(fe.nodes, fe.triangles, top, xmm * 1e-3, ymm * 1e-3);
+    if (!hit) return null;
+    let px = 0, py = 0;
+    hit.ids.forEach((i, j) => { px += hit.w[j] * sn.proj.xy[2 * i]; py += hit.w[j] * sn.proj.xy[2 * i + 1]; });
+    return Number.isFinite(px) && Number.isFinite(py) ? [px, py] : null;
+  }
+
+  /** Places the strain-point ring over the drawn wing (hidden for the paper mode set). */
+  function placePoint() {
+    const s = store.get();
+    const p = s.strain_point || (fe && fe.strain_point_mm);
+    if (!fe || !p || s.modes !== 'fe' || !cam) { pointMark.hidden = true; return; }
+    const at = drawnPoint(p[0], p[1]);
+    const ok = !!at && at[0] > 0 && at[1] > 0 && at[0] < canvas.clientWidth && at[1] < canvas.clientHeight;
+    pointMark.hidden = !ok;
+    if (at && ok) pointMark.style.transform = `translate(${Math.round(at[0] - 7)}px, ${Math.round(at[1] - 7)}px)`;
+    pointMark.title = `strain point (${p[0]}, ${p[1]}) mm`;
   }
 
   /** Moves the in-view labels to the projected axis tips (src/render/gpu.rs scene_geometry). */
@@ -477,6 +615,8 @@ export function mount(ctx) {
     frames += 1;
     box.dataset.frames = String(frames);
     placeSceneLabels(ang);
+    placePoint();
+    box.dataset.modes = String(q.length);
     const d = lg.max_deflection_m;
     exagText.textContent = `×${fmt(ex, 3)}`;
     exag.setAttribute('aria-valuetext', `deflection drawn ${fmt(ex, 3)} times true scale`);
@@ -489,8 +629,9 @@ export function mount(ctx) {
       : `Paper mode set: Table 4’s a_k are not SI, so these deflections are in paper units (≈ 10× below SI), not mm; choose the FE wing mode set for millimetres.`;
     if (!isFe) defl.replaceChildren(rich(defl.textContent));
     drawLegend(lg, isFe);
+    const wingName = s.wing && s.wing.label ? s.wing.label : 'synthetic Manduca-like outline, not digitised';
     note.replaceChildren(rich(isFe
-      ? `The shell-FE wing (synthetic Manduca-like outline, not digitised) with its first ${a.sim.modes.length} modes driven by the simulated q_k(t); strain per the FE modal strain fields (dimensionless, true scale).`
+      ? `The shell-FE wing (${wingName}; ${fe.n_nodes} nodes) with all ${a.sim.modes.length} of its modes driven by the simulated q_k(t): deflection Σ_k φ_k q_k(t); strain per the FE modal strain fields (dimensionless, true scale). Click the wing to choose the strain point (ring).`
       : `Paper mode set: the paper's q_k(t) (Table 4 units, not SI) drawn on the shell-FE wing's first ${a.sim.modes.length} mode shapes, so shapes and timing are right and magnitudes are not physical. Choose the FE wing mode set for SI deflection and strain.`));
     summary.textContent = `Wing at t = ${(s.t3d ?? 0).toFixed(4)} s: roll α ${ang[0].toFixed(3)}, pitch β ${ang[1].toFixed(3)}, yaw γ ${ang[2].toFixed(3)} rad; deflection now ${fmt(d * 1e3, 3)} ${isFe ? 'mm' : 'paper units'}, largest over the run ${fmt((runDeflection || 0) * 1e3, 3)}. ${legendText.textContent}`;
   }
@@ -517,13 +658,18 @@ export function mount(ctx) {
     c2.fillStyle = g;
     c2.fillRect(0, 0, w, h);
     const units = isFe ? 'strain (–)' : '(FE strain × paper q: not physical)';
-    legendText.textContent = `${lg.component}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} ${units}, fixed for the whole run`;
+    legendText.textContent = lg.component === 'field'
+      ? (fieldProblem ? `no strain map: ${fieldProblem}` : `${fieldLabel}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} strain (–), one map for the whole run (the hottest 2 % of the wing saturate)`)
+      : `${lg.component}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} ${units}, fixed for the whole run`;
     legendText.dataset.min = String(lg.min);
     legendText.dataset.max = String(lg.max);
   }
 
   const unsub = [
     store.subscribe(['result'], onResult),
+    store.subscribe(['fe'], onFe),
+    store.subscribe(['strain_map'], () => { fieldKey = ''; if (view && Number(colour.value) === 5) { applyRange(); draw(); } }),
+    store.subscribe(['strain_point'], () => { if (view) placePoint(); }),
     store.subscribe(['t3d'], () => { if (view) draw(); else describeTime(); }),
     store.subscribe(['playing'], (s) => setPlaying(!!s.playing)),
   ];
@@ -537,6 +683,16 @@ export function mount(ctx) {
     get camera() { return cam; },
     get ranges() { return ranges; },
     get frames() { return frames; },
+    get fe() { return fe; },
+    pickAt,
+    /** Where the strain point is drawn (CSS px in the canvas), or null when hidden. */
+    pointOnScreen() {
+      if (pointMark.hidden) return null;
+      const m = /translate\((-?\d+)px, (-?\d+)px\)/.exec(pointMark.style.transform);
+      return m ? [Number(m[1]) + 7, Number(m[2]) + 7] : null;
+    },
+    /** CSS px of the planform point (x, y) mm on the drawn wing at the current instant (tests). */
+    screenOf: drawnPoint,
     setTime(t) {
       const r = store.get().result;
       const dur = r ? r.analysis.sim.t[r.analysis.sim.t.length - 1] : 2;
