@@ -502,24 +502,21 @@ export const MAP_COMPONENTS = ['eps_x', 'eps_y', 'gamma_xy', 'von_mises'];
 export const MAP_STATS = ['rms', 'peak'];
 
 /**
- * The equivalent (von Mises) strain at a surface point of a thin plate in plane stress:
- * ε_eq = (2/3)·√(3/2 (e_x² + e_y² + e_z²) + 3/4 γ_xy²), with e = ε − tr(ε)/3 the deviatoric
- * strains and ε_z = −ν/(1 − ν)·(ε_x + ε_y) the through-thickness strain (ν = 0.3 unless given).
- * Used only by the JS fallback below; the core's strainField defines its own.
+ * The von Mises equivalent of an in-plane strain state, the plane-stress von Mises formula
+ * applied to the strain components (as the core's strainField):
+ * ε_vm = √(ε_x² − ε_x ε_y + ε_y² + ¾ γ_xy²).
  */
-export function vonMisesStrain(ex, ey, g, nu = 0.3) {
-  const ez = (-nu / (1 - nu)) * (ex + ey);
-  const m = (ex + ey + ez) / 3;
-  const dx = ex - m, dy = ey - m, dz = ez - m;
-  return (2 / 3) * Math.sqrt(1.5 * (dx * dx + dy * dy + dz * dz) + 0.75 * g * g);
+export function vonMisesStrain(ex, ey, g) {
+  return Math.sqrt(Math.max(0, ex * ex - ex * ey + ey * ey + 0.75 * g * g));
 }
 
 /**
  * A whole-wing strain map in JS (used only when the engine does not offer the core's
  * strainField): per node, the RMS or the peak |value| over the run of a component of
- * Σ_k ε_k(node) q_k(t). RMS of a linear component is exact from the modal second-moment matrix
- * C_kl = mean_t q_k q_l (√(εᵀ C ε) per node); von Mises and peaks use at most `maxSamples`
- * evenly spaced samples plus each mode's extremes (extremeStates).
+ * Σ_k ε_k(node) q_k(t). RMS is exact from the modal second-moment matrix C_kl = mean_t q_k q_l:
+ * √(Σ_kl C_kl B(ε_k, ε_l)) per node, B the component's bilinear form (as the core's); a peak
+ * uses at most `maxSamples` evenly spaced samples plus each mode's extremes (extremeStates), so
+ * it may fall slightly below the core's, which visits every sample.
  * @param {ArrayLike<number>} strainNodes [(k·n + i)·3 + c]
  * @param {number} nNodes
  * @param {ArrayLike<number>[]} qs q_k(t) per mode
@@ -532,7 +529,8 @@ export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSam
   const c = { eps_x: 0, eps_y: 1, gamma_xy: 2 }[component];
   const nT = m ? qs[0].length : 0;
   if (!m || !nT) return out;
-  if (stat === 'rms' && c != null) {
+  if (stat === 'rms') {
+    // mean square = Σ_kl C_kl B(ε_k, ε_l), B the component's bilinear form
     const C = new Float64Array(m * m);
     for (let k = 0; k < m; k++) {
       for (let l = k; l < m; l++) {
@@ -542,22 +540,23 @@ export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSam
         C[k * m + l] = C[l * m + k] = s / nT;
       }
     }
+    const B = c != null
+      ? (/** @type {number} */ i, /** @type {number} */ j) => strainNodes[i + c] * strainNodes[j + c]
+      : (/** @type {number} */ i, /** @type {number} */ j) => {
+        const ax = strainNodes[i], ay = strainNodes[i + 1], ag = strainNodes[i + 2];
+        const bx = strainNodes[j], by = strainNodes[j + 1], bg = strainNodes[j + 2];
+        return ax * bx - 0.5 * (ax * by + ay * bx) + ay * by + 0.75 * ag * bg;
+      };
     for (let i = 0; i < nNodes; i++) {
       let s = 0;
       for (let k = 0; k < m; k++) {
-        const ek = strainNodes[(k * nNodes + i) * 3 + c];
-        for (let l = 0; l < m; l++) s += ek * C[k * m + l] * strainNodes[(l * nNodes + i) * 3 + c];
+        for (let l = 0; l < m; l++) s += C[k * m + l] * B((k * nNodes + i) * 3, (l * nNodes + i) * 3);
       }
       out[i] = Math.sqrt(Math.max(0, s));
     }
     return out;
   }
-  const states = stat === 'peak' ? extremeStates(qs, maxSamples) : (() => {
-    const stride = Math.max(1, Math.ceil(nT / maxSamples));
-    const st = [];
-    for (let t = 0; t < nT; t += stride) st.push(qs.map((q) => q[t]));
-    return st;
-  })();
+  const states = extremeStates(qs, maxSamples);
   for (let i = 0; i < nNodes; i++) {
     let acc = 0;
     for (const q of states) {
@@ -569,10 +568,9 @@ export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSam
         g += strainNodes[o + 2] * q[k];
       }
       const v = c === 0 ? ex : c === 1 ? ey : c === 2 ? g : vonMisesStrain(ex, ey, g);
-      if (stat === 'peak') acc = Math.max(acc, Math.abs(v));
-      else acc += v * v;
+      acc = Math.max(acc, Math.abs(v));
     }
-    out[i] = stat === 'peak' ? acc : Math.sqrt(acc / states.length);
+    out[i] = acc;
   }
   return out;
 }
@@ -587,10 +585,16 @@ export const MAP_LABELS = {
   peak: 'peak |value| over the run',
 };
 /** The strain map shown when the store has no choice yet. */
-export const DEFAULT_MAP = Object.freeze({ component: 'gamma_xy', stat: 'rms' });
+export const DEFAULT_MAP = Object.freeze({ component: 'von_mises', stat: 'rms' });
 
 /** @type {{ fe: any, result: any, key: string, field: Float64Array } | null} */
 let mapCache = null;
+
+/** The cached strain map for exactly this wing, run and choice, else undefined (see strainMap). */
+export function cachedStrainMap(fe, result, map) {
+  const c = mapCache;
+  return c && c.fe === fe && c.result === result && c.key === `${map.component}/${map.stat}` ? c.field : undefined;
+}
 
 /**
  * The whole-wing strain map of a run: per node of the FE wing `fe`, the RMS or peak of a strain

@@ -128,3 +128,80 @@ test('hull2 with the interior filter equals the plain hull; outline holds every 
   const few = S.bbox(cam, S.posePoints(ol.nodes, poses, { lift: ol.zmax }), 640, 480);
   assert.ok(few[0] <= all[0] + 1e-9 && few[1] <= all[1] + 1e-9 && few[2] >= all[2] - 1e-9 && few[3] >= all[3] - 1e-9);
 });
+
+// ---------- strain maps, picking and the colour map (mode viewer, strain panel) ----------
+
+/** Deterministic pseudo-random numbers in [−1, 1). */
+function rng(seed) {
+  let s = seed >>> 0;
+  return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 31) - 1;
+}
+
+test('strainMapJs: RMS equals the sample RMS for every component; peak bounds every sample', () => {
+  const { nodes } = wing();
+  const n = nodes.length / 3, m = 3, nT = 500;
+  const r = rng(7);
+  const sn = Float64Array.from({ length: 3 * n * m }, () => 1e-3 * r());
+  const qs = Array.from({ length: m }, (_, k) => Float64Array.from({ length: nT }, (_, t) => Math.sin(0.05 * (k + 1) * t + k) + 0.3 * r()));
+  const at = (i, t) => {
+    const e = [0, 0, 0];
+    for (let k = 0; k < m; k++) for (let c = 0; c < 3; c++) e[c] += sn[(k * n + i) * 3 + c] * qs[k][t];
+    return e;
+  };
+  const value = { eps_x: (e) => e[0], eps_y: (e) => e[1], gamma_xy: (e) => e[2], von_mises: (e) => S.vonMisesStrain(e[0], e[1], e[2]) };
+  for (const component of S.MAP_COMPONENTS) {
+    const rms = S.strainMapJs(sn, n, qs, { component, stat: 'rms' });
+    const peak = S.strainMapJs(sn, n, qs, { component, stat: 'peak' });
+    for (const i of [0, 7, n - 1]) {
+      let ms = 0, pk = 0;
+      for (let t = 0; t < nT; t++) { const v = value[component](at(i, t)); ms += v * v; pk = Math.max(pk, Math.abs(v)); }
+      assert.ok(Math.abs(rms[i] - Math.sqrt(ms / nT)) <= 1e-12 + 1e-9 * rms[i], `${component} rms node ${i}`);
+      // every sample visited here (500 < maxSamples): exact
+      assert.ok(Math.abs(peak[i] - pk) <= 1e-15 + 1e-12 * pk, `${component} peak node ${i}: ${peak[i]} vs ${pk}`);
+    }
+  }
+  // von Mises of a pure shear γ: √¾·|γ|; of uniaxial ε: |ε|
+  assert.ok(Math.abs(S.vonMisesStrain(0, 0, 2e-3) - Math.sqrt(0.75) * 2e-3) < 1e-15);
+  assert.ok(Math.abs(S.vonMisesStrain(1e-3, 0, 0) - 1e-3) < 1e-15);
+});
+
+test('strainMap: the engine’s field when it fits, the JS map otherwise; null for a mismatched run', () => {
+  const { nodes, tris } = wing();
+  const n = nodes.length / 3;
+  const fe = { nodes: Float64Array.from(nodes), triangles: Uint32Array.from(tris), strain_nodes: new Float64Array(3 * n * 2).fill(1e-3), n_modes: 2 };
+  const mk = (m) => ({ analysis: { sim: { modes: Array.from({ length: m }, () => ({ q: { total: Float64Array.from([1, -1, 1, -1]) } })) } } });
+  const res = mk(2);
+  const fromEngine = S.strainMap(fe, res, { component: 'eps_x', stat: 'rms' }, () => new Float64Array(n).fill(42));
+  assert.equal(fromEngine[0], 42);
+  // wrong length from the engine (another wing): the JS map is used
+  const js = S.strainMap(fe, mk(2), { component: 'eps_x', stat: 'rms' }, () => new Float64Array(3));
+  assert.ok(Math.abs(js[0] - 2e-3) < 1e-15, String(js[0]));
+  assert.equal(S.strainMap(fe, mk(3), { component: 'eps_x', stat: 'rms' }), null);
+});
+
+test('pick: the planform point under a screen position, front-most triangle, null off the wing', () => {
+  const { nodes, tris } = wing();
+  const n = nodes.length / 3;
+  const top = { xy: new Float64Array(2 * n), depth: new Float64Array(n) };
+  for (let i = 0; i < n; i++) { top.xy[2 * i] = nodes[3 * i] * 1e3; top.xy[2 * i + 1] = nodes[3 * i + 1] * 1e3; }
+  const h = S.pick(nodes, tris, top, 23.3, -7.1);
+  assert.ok(h && Math.abs(h.x - 0.0233) < 1e-12 && Math.abs(h.y + 0.0071) < 1e-12);
+  assert.ok(Math.abs(h.w.reduce((a, b) => a + b, 0) - 1) < 1e-12);
+  assert.equal(S.pick(nodes, tris, top, 60, -5), null);
+  // Seen through the camera at a pose: the picked point projects back under the cursor.
+  const cam = S.defaultCamera(0.05);
+  const proj = S.projectNodes(nodes, null, [], 1, [0.3, -0.2, 0.1], cam, 640, 480);
+  const p = S.rotate(0.3, -0.2, 0.1, [0.02, -0.012, 0]);
+  const at = S.projector(cam, 640, 480)(p[0], p[1], p[2]);
+  const hit = S.pick(nodes, tris, proj, at[0], at[1]);
+  assert.ok(hit && Math.hypot(hit.x - 0.02, hit.y + 0.012) < 2e-4, JSON.stringify(hit));
+});
+
+test('colourAt: interpolates the renderer’s stops, clamps, and maps NaN to the middle', () => {
+  const stops = [0, 0, 0, 1, 0.5, 1, 1, 1, 1, 1, 0, 0];
+  assert.deepEqual(S.colourAt(stops, 0), [0, 0, 255]);
+  assert.deepEqual(S.colourAt(stops, 0.25), [128, 128, 255]);
+  assert.deepEqual(S.colourAt(stops, 2), [255, 0, 0]);
+  assert.deepEqual(S.colourAt(stops, NaN), [255, 255, 255]);
+  assert.deepEqual(S.colourAt([], 0.3), [128, 128, 128]);
+});

@@ -16,6 +16,12 @@ export const title = 'Strain where you point (paper Fig. 9)';
 
 /** Arrow-key step of the strain point on the map, mm (Shift: ×4). */
 const KEY_STEP_MM = 0.5;
+/**
+ * A peak map visits every sample of every node (~0.5 s for 1650 nodes × 20 000 samples × 6
+ * modes): computed this long after the last change, so moving a slider stays smooth (the
+ * previous map stays drawn meanwhile). RMS maps take milliseconds and are computed at once.
+ */
+export const PEAK_DELAY_MS = 300;
 
 /**
  * The engine's strainField (the core's, wasm, for the engine's current wing) when it has one,
@@ -110,7 +116,10 @@ export function mount(ctx) {
     return m && m.length ? m : null;
   }
 
-  function drawMap() {
+  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  let peakTimer;
+  /** Draws the planform map; `force`: compute a peak map now (else it waits PEAK_DELAY_MS). */
+  function drawMap(force = false) {
     const s = store.get();
     const fe = feOf(s);
     const c2 = context2d(canvas);
@@ -132,12 +141,23 @@ export function mount(ctx) {
     comp.value = map.component;
     stat.value = map.stat;
     let err = '';
-    try {
-      field = S.strainMap(fe, s.result, map, strainFieldOf(ctx.engine));
-    } catch (e) {
-      field = null;
-      err = errorText(e);
+    const cached = S.cachedStrainMap(fe, s.result, map);
+    if (cached) field = cached;
+    else if (map.stat === 'peak' && !force) {
+      // keep the last map (if it is this wing's) and compute once the changes stop
+      if (!field || field.length !== fe.nodes.length / 3) field = null;
+      clearTimeout(peakTimer);
+      peakTimer = setTimeout(() => drawMap(true), PEAK_DELAY_MS);
+      mapBox.dataset.pending = '1';
+    } else {
+      try {
+        field = S.strainMap(fe, s.result, map, strainFieldOf(ctx.engine));
+      } catch (e) {
+        field = null;
+        err = errorText(e);
+      }
     }
+    if (cached || force || map.stat !== 'peak') delete mapBox.dataset.pending;
     // Size: the planform's aspect, the panel's width (device pixels for sharpness).
     const n = fe.nodes.length / 3;
     let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
@@ -206,7 +226,7 @@ export function mount(ctx) {
     const what = `${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}`;
     legendText.textContent = field
       ? `${signed ? fmt(-limit, 3) : '0'} … ${fmt(limit, 3)} strain (–): ${what}; the hottest 2 % of the wing saturate (largest ${fmt(Math.max(...field), 3)})`
-      : `no map: ${err || 'the wing and the run do not match'}`;
+      : mapBox.dataset.pending ? 'computing the peak map…' : `no map: ${err || 'the wing and the run do not match'}`;
     canvas.dataset.limit = String(limit);
     mapNote.replaceChildren(rich(`Colours: ${what}, per node of the FE mesh (${n} nodes), from the modal strain fields and q_k(t) of all ${fe.n_modes} modes; the same colour map as the 3-D view (choose “whole-run strain map” there to see it on the flapping wing). Top view: span to the right, leading edge up.`));
     pointText.textContent = `Strain point (x, y) = (${fmt(sx, 3)}, ${fmt(sy, 3)}) mm. ${touch ? 'Tap the map or the 3-D wing to move it.' : 'Click the map or the 3-D wing, or focus the map and use the arrow keys (Shift: bigger steps), to move it.'}`;
@@ -319,6 +339,6 @@ export function mount(ctx) {
     plot,
     get field() { return field; },
     choose,
-    destroy: () => { unsubs.forEach((f) => f()); if (ro) ro.disconnect(); plot.destroy(); },
+    destroy: () => { unsubs.forEach((f) => f()); clearTimeout(peakTimer); if (ro) ro.disconnect(); plot.destroy(); },
   };
 }

@@ -19,7 +19,7 @@ import { fmt, errorText } from '../format.js';
 import { beatInfo } from '../beat.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
-import { strainFieldOf } from './strain.js';
+import { strainFieldOf, PEAK_DELAY_MS } from './strain.js';
 
 export const title = '3-D wing';
 
@@ -345,12 +345,21 @@ export function mount(ctx) {
   let fieldKey = '';
   /** @type {string | null} */
   let fieldProblem = null;
-  function applyField() {
+  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  let fieldTimer;
+  function applyField(force = false) {
     const s = store.get();
     if (!view || !fe || !s.result) return;
     const map = s.strain_map || S.DEFAULT_MAP;
     const key = `${map.component}/${map.stat}`;
     if (fieldKey === key && fieldResult === s.result) return;
+    // A peak map is slow (see PEAK_DELAY_MS): made once the run stops changing, unless the
+    // strain panel already made it; the previous map stays drawn meanwhile.
+    if (s.modes === 'fe' && map.stat === 'peak' && !force && !S.cachedStrainMap(fe, s.result, map)) {
+      clearTimeout(fieldTimer);
+      fieldTimer = setTimeout(() => { applyField(true); draw(); }, PEAK_DELAY_MS);
+      return;
+    }
     fieldKey = key;
     fieldResult = s.result;
     const field = s.modes === 'fe' ? S.strainMap(fe, s.result, map, strainFieldOf(engine)) : null;
@@ -706,6 +715,7 @@ export function mount(ctx) {
       if (io) io.disconnect();
       if (ro) ro.disconnect();
       if (raf) cancelAnimationFrame(raf);
+      clearTimeout(fieldTimer);
       if (view) view.free();
       view = null;
     },
