@@ -361,10 +361,11 @@ export const RANGE_QUANTILE = 0.9;
 /**
  * The colour range of a run per component: { 1: ε_x, 2: ε_y, 3: γ_xy, 4: |ε| } (limits for
  * WingView.set_strain_range), each the robust (q-quantile over nodes, RANGE_QUANTILE by
- * default) maximum over time of the nodal |strain|. strainNodes[(k·n + i)·3 + c] per unit q_k; qs: q_k(t) per mode.
+ * default) maximum over time of the nodal |strain|. With more than two modes the maximum is over
+ * at most `maxSamples` evenly spaced samples plus each mode's extremes (extremeStates). strainNodes[(k·n + i)·3 + c] per unit q_k; qs: q_k(t) per mode.
  */
-export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE) {
-  const states = extremeStates(qs);
+export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE, maxSamples = 4000) {
+  const states = extremeStates(qs, maxSamples);
   const m = Math.min(qs.length, Math.floor(strainNodes.length / (3 * nNodes)));
   const mx = [new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes)];
   for (let i = 0; i < nNodes; i++) {
@@ -387,8 +388,8 @@ export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE) {
 }
 
 /** The largest |Σ_k φ_k(node) q_k(t)| over nodes and the whole run (m, true scale). */
-export function maxDeflection(shapes, nNodes, qs) {
-  const states = extremeStates(qs);
+export function maxDeflection(shapes, nNodes, qs, maxSamples = 4000) {
+  const states = extremeStates(qs, maxSamples);
   const m = Math.min(qs.length, Math.floor(shapes.length / nNodes));
   let best = 0;
   for (let i = 0; i < nNodes; i++) {
