@@ -217,12 +217,12 @@ export function mount(ctx) {
     k = prev !== '' && Number(prev) < fe.n_modes ? Number(prev) : 0;
     pick.value = String(k);
     geom = null;
-    note.replaceChildren(rich(`The FE wing’s ${fe.n_modes} mode shapes (${fe.n_nodes} nodes, ${fmt(fe.mesh_size_mm, 3)} mm elements), one at a time. Drawn oscillating once every ${ANIM_PERIOD_S} s whatever f_k, deflection scaled so the largest is ${DRAWN_FRACTION * 100} % of the span (mass-normalised shapes have no physical size); dashed: the flat outline. Colours: the 3-D view’s map, blue down, red up. a_k couples the mode to the flapping forces (Eq. 13): every response of mode k scales with |a_k|.`));
+    note.replaceChildren(rich(`The FE wing’s ${fe.n_modes} mode shapes (${fe.n_nodes} nodes, ${fmt(fe.mesh_size_mm, 3)} mm elements), one at a time. Drawn oscillating once every ${ANIM_PERIOD_S} s whatever f_k, deflection scaled so the largest is ${DRAWN_FRACTION * 100} % of the span (mass-normalised shapes have no physical size); dashed: the flat outline. Colours: the 3-D view’s map, blue down, red up. a_k couples the mode to the flapping forces (Eq. 13): every response of mode k scales with |a_k|.${s.modes === 'paper' ? ' (The paper’s table has frequencies and a_k but no shapes: these are the FE wing’s, as in the 3-D view.)' : ''}`));
     describe();
     draw();
   }
 
-  const unsub = store.subscribe(['fe'], onFe);
+  const unsub = store.subscribe(['fe', 'modes'], onFe);
   /** @type {IntersectionObserver | null} */
   let io = null;
   if (typeof IntersectionObserver === 'function') {

@@ -79,9 +79,10 @@ export function mount(ctx) {
   const pointText = el('p', { class: 'wl-smap-point', id: `${mapId}-text`, 'aria-live': 'polite' });
   const mapNote = el('p', { class: 'wl-note' });
   const row = (label, id, input) => el('span', { class: 'wl-smap-field' }, el('label', { for: id, text: label }), input);
+  const mapControls = el('div', { class: 'wl-smap-controls' }, row('component', comp.id, comp), row('statistic', stat.id, stat));
   const mapBox = el('div', { class: 'wl-smap', 'data-smap': '' },
     el('h3', { class: 'wl-smap-title', text: 'Whole-wing strain map' }),
-    el('div', { class: 'wl-smap-controls' }, row('component', comp.id, comp), row('statistic', stat.id, stat)),
+    mapControls,
     canvas,
     el('div', { class: 'wl-smap-legendrow' }, legend, legendText),
     pointText,
@@ -124,6 +125,10 @@ export function mount(ctx) {
     const fe = feOf(s);
     const c2 = context2d(canvas);
     mapBox.dataset.state = fe ? 'ready' : 'none';
+    const map = mapOf(s);
+    comp.value = map.component;
+    stat.value = map.stat;
+    mapControls.hidden = !fe;
     if (!fe) {
       canvas.hidden = true;
       legend.hidden = true;
@@ -137,9 +142,6 @@ export function mount(ctx) {
     }
     canvas.hidden = false;
     legend.hidden = false;
-    const map = mapOf(s);
-    comp.value = map.component;
-    stat.value = map.stat;
     let err = '';
     const cached = S.cachedStrainMap(fe, s.result, map);
     if (cached) field = cached;
