@@ -11,7 +11,7 @@ fn bench_wing(c: &mut Criterion) {
     let mut group = c.benchmark_group("fem_default_wing_6_modes");
     for h in [2.0, 1.25, 0.75] {
         let input = FemInput {
-            mesh_size_mm: h,
+            mesh_size_mm: Some(h),
             ..FemInput::default()
         };
         let r = compute_modes(&input).expect("default wing solves");
@@ -34,7 +34,7 @@ fn bench_backends(c: &mut Criterion) {
     let mut group = c.benchmark_group("fem_backends_default_wing_6_modes");
     for h in [2.0, 1.25, 1.0, 0.75] {
         let input = FemInput {
-            mesh_size_mm: h,
+            mesh_size_mm: Some(h),
             ..FemInput::default()
         };
         for backend in [Backend::Skyline, Backend::Faer] {

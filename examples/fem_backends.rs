@@ -20,7 +20,7 @@ fn main() {
     println!("|---|---|---|---|---|---|---|");
     for h in [2.0, 1.25, 1.0, 0.75] {
         let input = FemInput {
-            mesh_size_mm: h,
+            mesh_size_mm: Some(h),
             ..FemInput::default()
         };
         let mut reference: Option<Vec<f64>> = None;

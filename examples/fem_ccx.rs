@@ -15,7 +15,7 @@ fn main() {
         .unwrap_or(1.0);
     let path = args.get(2).cloned().unwrap_or_else(|| "wing.inp".into());
     let input = FemInput {
-        mesh_size_mm: h,
+        mesh_size_mm: Some(h),
         ..FemInput::default()
     };
     let t = Instant::now();

@@ -19,7 +19,7 @@ fn main() {
     println!("|---|---|---|---|---|---|---|---|---|---|");
     for h in [3.0, 2.0, 1.5, 1.25, 1.0, 0.75, 0.5] {
         let (r, t) = run(&FemInput {
-            mesh_size_mm: h,
+            mesh_size_mm: Some(h),
             ..FemInput::default()
         });
         let f: Vec<String> = r.freq_hz.iter().map(|f| format!("{f:.1}")).collect();
@@ -63,13 +63,13 @@ fn main() {
     println!("\n## Camber effect (root clamp)\n");
     for h in [2.0, 1.0, 0.75] {
         let (flat, _) = run(&FemInput {
-            mesh_size_mm: h,
+            mesh_size_mm: Some(h),
             camber: 0.0,
             ..FemInput::default()
         });
         for c in [0.05, 0.13] {
             let (cam, _) = run(&FemInput {
-                mesh_size_mm: h,
+                mesh_size_mm: Some(h),
                 camber: c,
                 ..FemInput::default()
             });

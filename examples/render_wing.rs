@@ -16,7 +16,7 @@ fn main() -> Result<(), String> {
     let colour = ColourMode::from_name(&colour).ok_or(format!("unknown colouring {colour}"))?;
     let mesh = if args.next().as_deref() == Some("fe") {
         let input = wingbeat::fem::FemInput {
-            mesh_size_mm: 1.5,
+            mesh_size_mm: Some(1.5),
             n_modes: 2,
             ..Default::default()
         };

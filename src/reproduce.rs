@@ -213,7 +213,7 @@ impl Context {
         let kin = cfg.kinematics.compile();
         let fe_in = FemInput {
             n_modes: 2,
-            mesh_size_mm: FE_MESH_MM,
+            mesh_size_mm: Some(FE_MESH_MM),
             ..Default::default()
         };
         let fe = compute_modes(&fe_in)?;

@@ -25,7 +25,8 @@ fn plate_input(n_modes: usize) -> FemInput {
         clamp: Clamp::Root,
         material: steel(),
         n_modes,
-        mesh_size_mm: 1000.0,
+        mesh_size_mm: Some(1000.0),
+        max_nodes: None,
     }
 }
 
@@ -63,7 +64,7 @@ fn sturm_count_through_the_backend_trait() {
         .map(|f| (2.0 * std::f64::consts::PI * f).powi(2))
         .collect();
     let outline = geometry::validate_outline(&input.planform_mm).unwrap();
-    let mesh = mesh_planform(&outline, input.mesh_size_mm, 0.0).unwrap();
+    let mesh = mesh_planform(&outline, input.mesh_size_mm.unwrap(), 0.0).unwrap();
     let clamped = clamp_nodes(&outline, &mesh, Clamp::Root).unwrap();
     let asm = assemble(&mesh, &steel(), &clamped).unwrap();
     for k in 1..7 {
@@ -137,7 +138,7 @@ mod faer_vs_skyline {
     #[test]
     fn default_wing_coarse_mesh_agrees() {
         agree(&FemInput {
-            mesh_size_mm: 2.0,
+            mesh_size_mm: Some(2.0),
             ..FemInput::default()
         });
     }

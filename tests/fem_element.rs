@@ -162,7 +162,8 @@ fn membrane_in_plane_bending_of_a_cantilever_strip() {
         clamp: Clamp::Root,
         material: m,
         n_modes: 12,
-        mesh_size_mm: 2.5,
+        mesh_size_mm: Some(2.5),
+        max_nodes: None,
     };
     let r = compute_modes(&input).unwrap();
     // the in-plane mode is the first one with (numerically) no out-of-plane motion

@@ -6,7 +6,7 @@ use wingbeat::WingbeatError;
 fn small(planform: Vec<[f64; 2]>) -> FemInput {
     FemInput {
         planform_mm: planform,
-        mesh_size_mm: 5.0,
+        mesh_size_mm: Some(5.0),
         n_modes: 2,
         ..FemInput::default()
     }
@@ -135,10 +135,13 @@ fn bad_material_and_sizes_are_rejected() {
         ("camber", Box::new(|i| i.camber = -0.1)),
         ("n_modes", Box::new(|i| i.n_modes = 0)),
         ("n_modes", Box::new(|i| i.n_modes = 1000)),
-        ("mesh_size_mm", Box::new(|i| i.mesh_size_mm = 0.0)),
-        ("mesh_size_mm", Box::new(|i| i.mesh_size_mm = f64::NAN)),
+        ("mesh_size_mm", Box::new(|i| i.mesh_size_mm = Some(0.0))),
+        (
+            "mesh_size_mm",
+            Box::new(|i| i.mesh_size_mm = Some(f64::NAN)),
+        ),
         // would need ≈ 7 million nodes: refused before meshing, quickly
-        ("mesh_size_mm", Box::new(|i| i.mesh_size_mm = 0.01)),
+        ("mesh_size_mm", Box::new(|i| i.mesh_size_mm = Some(0.01))),
     ];
     for (field, f) in cases {
         let mut i = base.clone();

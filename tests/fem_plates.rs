@@ -26,7 +26,8 @@ fn plate(h_mm: f64, clamp: Clamp, n_modes: usize) -> FemModes {
         clamp,
         material: steel(),
         n_modes,
-        mesh_size_mm: h_mm,
+        mesh_size_mm: Some(h_mm),
+        max_nodes: None,
     };
     compute_modes(&input).expect("plate solves")
 }

@@ -5,7 +5,7 @@ use wingbeat::fem::*;
 
 fn wing(h: f64, camber: f64, clamp: Clamp) -> FemModes {
     compute_modes(&FemInput {
-        mesh_size_mm: h,
+        mesh_size_mm: Some(h),
         camber,
         clamp,
         ..FemInput::default()
@@ -16,8 +16,14 @@ fn wing(h: f64, camber: f64, clamp: Clamp) -> FemModes {
 #[test]
 fn default_wing_reproduces_paper_f1_and_mode_types() {
     let input = FemInput::default();
-    assert_eq!(input.mesh_size_mm, DEFAULT_MESH_SIZE_MM);
+    // the default input leaves the mesh size automatic, which gives the default wing 1.0 mm
+    assert_eq!(input.mesh_size_mm, None);
+    assert_eq!(
+        default_mesh_size_mm(&input.planform_mm),
+        DEFAULT_MESH_SIZE_MM
+    );
     let r = compute_modes(&input).unwrap();
+    assert_eq!(r.mesh_size_mm, DEFAULT_MESH_SIZE_MM);
     println!(
         "default wing: nodes {}, dofs {}, f = {:.2?}, kinds {:?}",
         r.nodes.len(),
@@ -67,7 +73,7 @@ fn default_wing_reproduces_paper_f1_and_mode_types() {
 fn paper_as_printed_material_gives_under_2_hz() {
     let r = compute_modes(&FemInput {
         material: ShellMaterial::paper_as_printed(),
-        mesh_size_mm: 2.0,
+        mesh_size_mm: Some(2.0),
         n_modes: 2,
         ..FemInput::default()
     })

@@ -412,7 +412,7 @@ fn perf_1280x720_10k_triangles() {
 fn fe_modes_json_renders() {
     use wingbeat::fem::{compute_modes, FemInput};
     let input = FemInput {
-        mesh_size_mm: 3.0,
+        mesh_size_mm: Some(3.0),
         n_modes: 3,
         ..FemInput::default()
     };

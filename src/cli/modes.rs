@@ -2,14 +2,11 @@
 
 use clap::Args;
 use wingbeat::fem::{
-    compute_modes, parse_planform_csv, parse_planform_json, Clamp, FemInput, FemModes,
-    ShellMaterial,
+    compute_modes, modes_document, parse_planform_csv, parse_planform_json, strain_point_for,
+    Clamp, FemInput, FemModes, ShellMaterial,
 };
 use wingbeat::model::Mode;
 use wingbeat::{Result, WingbeatError};
-
-/// The default strain point P (mm), shared with the browser lab: [`wingbeat::fem::STRAIN_POINT_P_MM`].
-pub const DEFAULT_POINT: (f64, f64) = wingbeat::fem::STRAIN_POINT_P_MM;
 
 #[derive(Args, Debug, Clone)]
 pub struct ModesArgs {
@@ -43,11 +40,14 @@ pub struct ModesArgs {
     /// Number of modes, 1–64.
     #[arg(long, default_value_t = 6)]
     pub n_modes: usize,
-    /// Target element edge, mm (node count capped at 20 000).
-    #[arg(long, default_value_t = wingbeat::fem::DEFAULT_MESH_SIZE_MM, allow_negative_numbers = true)]
-    pub mesh_size_mm: f64,
+    /// Target element edge, mm. Default: automatic from the planform's area (about 1 000
+    /// nodes' worth; 1.0 mm for the default wing), printed on stderr. The mesh is refused
+    /// above 20 000 nodes (the error names a size that fits).
+    #[arg(long, allow_negative_numbers = true)]
+    pub mesh_size_mm: Option<f64>,
     /// Strain point(s) `NAME:X_MM,Y_MM` carried into the `modes` array for `simulate --modes`.
-    /// Default `P:3,-6`.
+    /// Default: `P:3,-6` on the default outline; on any other outline a point P inside the
+    /// wing, 1/8 of the span out from the root (or from a strip clamp's edge), mid-chord.
     #[arg(long = "point", value_name = "NAME:X,Y")]
     pub points: Vec<String>,
 }
@@ -120,10 +120,11 @@ pub fn fem_input(
     Ok(input)
 }
 
-/// The strain points requested (default P).
-pub fn points(a: &ModesArgs) -> Result<Vec<(String, f64, f64)>> {
+/// The strain points requested (default: P = [`strain_point_for`] the input).
+pub fn points(a: &ModesArgs, input: &FemInput) -> Result<Vec<(String, f64, f64)>> {
     if a.points.is_empty() {
-        return Ok(vec![("P".into(), DEFAULT_POINT.0, DEFAULT_POINT.1)]);
+        let (x, y) = strain_point_for(input);
+        return Ok(vec![("P".into(), x, y)]);
     }
     a.points.iter().map(|s| parse_point(s)).collect()
 }
@@ -136,34 +137,29 @@ pub fn model_modes(fe: &FemModes, pts: &[(String, f64, f64)]) -> Result<Vec<Mode
 /// Runs `wingbeat modes`.
 pub fn run(a: &ModesArgs, read: impl Fn(&std::path::Path) -> Result<String>) -> Result<String> {
     let input = fem_input(a, read)?;
-    let pts = points(a)?;
+    let pts = points(a, &input)?;
+    let size = match input.mesh_size_mm {
+        Some(h) => format!("{h} mm elements"),
+        None => "automatic element size".to_string(),
+    };
     eprintln!(
-        "modes: meshing and solving ({} modes, {} mm elements)…",
-        input.n_modes, input.mesh_size_mm
+        "modes: meshing and solving ({} modes, {size})…",
+        input.n_modes
     );
     let t0 = std::time::Instant::now();
     let fe = compute_modes(&input)?;
     eprintln!(
-        "modes: {} nodes, {} DOFs, done in {:.2} s",
+        "modes: mesh size {} mm{}, {} nodes, {} DOFs, done in {:.2} s",
+        fe.mesh_size_mm,
+        if input.mesh_size_mm.is_none() {
+            " (automatic)"
+        } else {
+            ""
+        },
         fe.nodes.len(),
         fe.n_dofs,
         t0.elapsed().as_secs_f64()
     );
     let modes = model_modes(&fe, &pts)?;
-    let mut v = serde_json::to_value(&fe).map_err(|e| WingbeatError::NonFinite {
-        what: "JSON output".into(),
-        detail: e.to_string(),
-    })?;
-    v["modes"] = serde_json::to_value(&modes).map_err(|e| WingbeatError::NonFinite {
-        what: "JSON output".into(),
-        detail: e.to_string(),
-    })?;
-    v["units"] = serde_json::json!({
-        "freq_hz": "Hz", "a": "kg^0.5 m", "b": "kg^0.5 m", "mass_kg": "kg", "nodes": "m",
-        "shapes": "kg^-0.5 (mass-normalised out-of-plane displacement)", "strain_nodes": "strain per unit modal coordinate [eps_x, eps_y, gamma_xy], top surface"
-    });
-    serde_json::to_string(&v).map_err(|e| WingbeatError::NonFinite {
-        what: "JSON output".into(),
-        detail: e.to_string(),
-    })
+    modes_document(&fe, &modes)
 }

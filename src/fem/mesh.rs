@@ -25,9 +25,185 @@ pub fn estimate_nodes(area_mm2: f64, perim_mm: f64, h_mm: f64) -> f64 {
     2.0 * area_mm2 / (3f64.sqrt() * h_mm * h_mm) + perim_mm / h_mm
 }
 
+/// Options of [`mesh_planform_with`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshOptions {
+    /// Largest node count accepted (at most [`MAX_NODES`]); exceeding it is a
+    /// `ResourceCap` error on `mesh_size_mm` that names a size that would fit.
+    pub max_nodes: usize,
+    /// Spanwise stations x (mm) that get a mesh line across the planform (a constraint
+    /// segment wherever the line x = X lies inside the outline), e.g. the edge of a clamped
+    /// basal strip, so that nodes lie exactly on it.
+    pub lines_x_mm: Vec<f64>,
+}
+
+impl Default for MeshOptions {
+    fn default() -> Self {
+        MeshOptions {
+            max_nodes: MAX_NODES,
+            lines_x_mm: Vec::new(),
+        }
+    }
+}
+
 /// Meshes a validated counter-clockwise outline (mm) with target edge length `h_mm`, and
 /// lifts the nodes onto the camber surface ([`camber_height`]). Output in metres.
 pub fn mesh_planform(outline: &[[f64; 2]], h_mm: f64, camber: f64) -> Result<Mesh> {
+    mesh_planform_with(outline, h_mm, camber, &MeshOptions::default())
+}
+
+/// A mesh size (mm) that should keep an outline of this area and perimeter under `cap`
+/// nodes, from `h_mm` that gave `nodes`: node counts scale like 1/h², so scale by
+/// √(nodes/cap) with a 10 % margin, rounded up to two significant digits.
+pub fn size_that_fits(h_mm: f64, nodes: f64, cap: usize) -> f64 {
+    let h = h_mm * (nodes / cap as f64).sqrt() * 1.1;
+    round_up_2sig(h.max(h_mm * 1.1))
+}
+
+fn round_up_2sig(h: f64) -> f64 {
+    if !(h.is_finite() && h > 0.0) {
+        return h;
+    }
+    let k = 1 - h.log10().floor() as i32;
+    if k >= 0 {
+        let s = 10f64.powi(k);
+        (h * s).ceil() / s
+    } else {
+        let s = 10f64.powi(-k);
+        (h / s).ceil() * s
+    }
+}
+
+/// The reason given with a node-cap error, naming a mesh size `fit_mm` that would fit.
+pub fn cap_why(fit_mm: f64) -> String {
+    format!(
+        "memory and solve time grow quickly with the node count; a mesh size of about {fit_mm} mm \
+         would fit"
+    )
+}
+
+/// The node-cap error: `how` qualifies the count ("about", "more than" or "").
+fn cap_error(h_mm: f64, nodes: f64, cap: usize, how: &str) -> WingbeatError {
+    let fit = size_that_fits(h_mm, nodes, cap);
+    let how = if how.is_empty() {
+        String::new()
+    } else {
+        format!("{how} ")
+    };
+    WingbeatError::ResourceCap {
+        field: "mesh_size_mm".into(),
+        requested: format!("{h_mm} mm ({how}{nodes:.0} nodes)"),
+        cap: format!("{cap} nodes"),
+        why: cap_why(fit),
+    }
+}
+
+/// Points where the vertical line x = `x` meets the interior of outline edges (not at their
+/// end points), per edge index, as the edge parameter s ∈ (0, 1).
+fn line_crossings(outline: &[[f64; 2]], x: f64) -> Vec<(usize, f64)> {
+    let n = outline.len();
+    let mut out = Vec::new();
+    for i in 0..n {
+        let (a, b) = (outline[i], outline[(i + 1) % n]);
+        if (a[0] < x && b[0] > x) || (a[0] > x && b[0] < x) {
+            let s = (x - a[0]) / (b[0] - a[0]);
+            if s > 0.0 && s < 1.0 {
+                out.push((i, s));
+            }
+        }
+    }
+    out
+}
+
+/// True if `p` is strictly inside the polygon (even–odd rule) and farther than `tol` from
+/// every edge.
+fn strictly_inside(poly: &[[f64; 2]], p: [f64; 2], tol: f64) -> bool {
+    let n = poly.len();
+    let mut inside = false;
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[(i + 1) % n]);
+        // distance to the segment
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let l2 = dx * dx + dy * dy;
+        let t = if l2 > 0.0 {
+            (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let (qx, qy) = (a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+        if (qx * qx + qy * qy).sqrt() <= tol {
+            return false;
+        }
+        if (a[1] > p[1]) != (b[1] > p[1]) {
+            let xc = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            if p[0] < xc {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// The pieces (y_low, y_high), mm, of the vertical line x = `x` that lie inside the outline
+/// (any orientation, not necessarily validated), bottom to top.
+pub fn inside_intervals(outline: &[[f64; 2]], x: f64) -> Vec<(f64, f64)> {
+    let (poly, segs) = outline_with_lines(outline, &[x]);
+    let mut v: Vec<(f64, f64)> = segs
+        .iter()
+        .map(|&[i, j]| (poly[i][1], poly[j][1]))
+        .collect();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    v
+}
+
+/// Inserts the crossings of the lines x = X into the outline as vertices (exactly on x = X)
+/// and returns the augmented outline with, per line, the pairs of outline-vertex indices
+/// whose connecting vertical segment lies inside the planform.
+fn outline_with_lines(outline: &[[f64; 2]], lines: &[f64]) -> (Vec<[f64; 2]>, Vec<[usize; 2]>) {
+    let n = outline.len();
+    let mut extra: Vec<Vec<(f64, [f64; 2])>> = vec![Vec::new(); n];
+    for &x in lines {
+        for (i, s) in line_crossings(outline, x) {
+            let (a, b) = (outline[i], outline[(i + 1) % n]);
+            extra[i].push((s, [x, a[1] + s * (b[1] - a[1])]));
+        }
+    }
+    let mut poly = Vec::with_capacity(n + 4 * lines.len());
+    for i in 0..n {
+        poly.push(outline[i]);
+        let mut e = extra[i].clone();
+        e.sort_by(|p, q| p.0.total_cmp(&q.0));
+        poly.extend(e.into_iter().map(|(_, p)| p));
+    }
+    let span = outline
+        .iter()
+        .map(|p| p[0].abs().max(p[1].abs()))
+        .fold(0.0, f64::max);
+    let tol = 1e-9 * span.max(1e-300);
+    let mut segs = Vec::new();
+    for &x in lines {
+        let mut on: Vec<usize> = (0..poly.len()).filter(|&i| poly[i][0] == x).collect();
+        on.sort_by(|&i, &j| poly[i][1].total_cmp(&poly[j][1]));
+        for w in on.windows(2) {
+            let (y0, y1) = (poly[w[0]][1], poly[w[1]][1]);
+            if y1 - y0 > tol && strictly_inside(&poly, [x, 0.5 * (y0 + y1)], tol) {
+                segs.push([w[0], w[1]]);
+            }
+        }
+    }
+    (poly, segs)
+}
+
+/// [`mesh_planform`] with a node cap and interior mesh lines ([`MeshOptions`]). The node
+/// count is estimated before meshing and counted after it; both are checked against
+/// `opts.max_nodes`.
+pub fn mesh_planform_with(
+    outline: &[[f64; 2]],
+    h_mm: f64,
+    camber: f64,
+    opts: &MeshOptions,
+) -> Result<Mesh> {
+    let cap = opts.max_nodes.min(MAX_NODES);
     let n = outline.len();
     let perim: f64 = (0..n)
         .map(|i| {
@@ -37,13 +213,8 @@ pub fn mesh_planform(outline: &[[f64; 2]], h_mm: f64, camber: f64) -> Result<Mes
         .sum();
     let area = signed_area(outline).abs();
     let est = estimate_nodes(area, perim, h_mm);
-    if est.is_nan() || est > MAX_NODES as f64 {
-        return Err(WingbeatError::ResourceCap {
-            field: "mesh_size_mm".into(),
-            requested: format!("{h_mm} mm (about {est:.0} nodes)"),
-            cap: format!("{MAX_NODES} nodes"),
-            why: "memory and solve time grow quickly with the node count".into(),
-        });
+    if est.is_nan() || est > cap as f64 {
+        return Err(cap_error(h_mm, est, cap, "about"));
     }
     // Split the outline edges so that the boundary is resolved at the target size, graded
     // finer toward the root (the clamp corners carry the stress concentration); the
@@ -55,37 +226,62 @@ pub fn mesh_planform(outline: &[[f64; 2]], h_mm: f64, camber: f64) -> Result<Mes
             None => h_mm,
         }
     };
-    let mut verts: Vec<Point2<f64>> = Vec::new();
-    for i in 0..n {
-        let (a, b) = (outline[i], outline[(i + 1) % n]);
-        let mut s = 0.0;
-        verts.push(Point2::new(a[0], a[1]));
+    // Stations along a segment a → b at the local size (end points excluded), evened out.
+    let stations = |a: [f64; 2], b: [f64; 2]| -> Vec<[f64; 2]> {
         let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
-        // march along the edge with the local size, then even out the last step
-        let mut stations = vec![0.0];
+        let mut s = 0.0;
+        let mut st = vec![0.0];
         while s < len {
             let p = [
                 a[0] + s / len * (b[0] - a[0]),
                 a[1] + s / len * (b[1] - a[1]),
             ];
             s += local_h(p);
-            stations.push(s);
-            if stations.len() > 4 * MAX_NODES {
+            st.push(s);
+            if st.len() > 4 * MAX_NODES {
                 break;
             }
         }
-        let k = (stations.len() - 1).max(1);
-        let scale = len / stations[k].max(1e-300);
-        for st in stations.iter().take(k).skip(1) {
-            let f = st * scale / len;
-            verts.push(Point2::new(
-                a[0] + f * (b[0] - a[0]),
-                a[1] + f * (b[1] - a[1]),
-            ));
+        let k = (st.len() - 1).max(1);
+        let scale = len / st[k].max(1e-300);
+        st.iter()
+            .take(k)
+            .skip(1)
+            .map(|v| {
+                let f = v * scale / len;
+                [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])]
+            })
+            .collect()
+    };
+    let (poly, lines) = outline_with_lines(outline, &opts.lines_x_mm);
+    let np = poly.len();
+    let mut verts: Vec<Point2<f64>> = Vec::new();
+    let mut poly_index = vec![0usize; np];
+    let mut edges: Vec<[usize; 2]> = Vec::new();
+    for i in 0..np {
+        let (a, b) = (poly[i], poly[(i + 1) % np]);
+        poly_index[i] = verts.len();
+        verts.push(Point2::new(a[0], a[1]));
+        for p in stations(a, b) {
+            verts.push(Point2::new(p[0], p[1]));
         }
     }
     let m = verts.len();
-    let edges: Vec<[usize; 2]> = (0..m).map(|i| [i, (i + 1) % m]).collect();
+    edges.extend((0..m).map(|i| [i, (i + 1) % m]));
+    // Mesh lines: their stations go in as plain vertices now and become constraint edges
+    // after the refinement. (spade finds the outer faces by counting constraint crossings
+    // from the convex hull, which an interior line would confuse: it separates two inner
+    // regions.)
+    let mut line_pts: Vec<Vec<[f64; 2]>> = Vec::new();
+    for &[i, j] in &lines {
+        let mut pts = vec![poly[i]];
+        for p in stations(poly[i], poly[j]) {
+            verts.push(Point2::new(p[0], p[1]));
+            pts.push(p);
+        }
+        pts.push(poly[j]);
+        line_pts.push(pts);
+    }
     let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(verts, edges)
         .map_err(|e| WingbeatError::Geometry(format!("triangulation failed: {e:?}")))?;
     let max_area = 3f64.sqrt() / 4.0 * h_mm * h_mm;
@@ -93,18 +289,34 @@ pub fn mesh_planform(outline: &[[f64; 2]], h_mm: f64, camber: f64) -> Result<Mes
         RefinementParameters::new()
             .with_max_allowed_area(max_area)
             .with_angle_limit(AngleLimit::from_deg(28.0))
-            .with_max_additional_vertices(MAX_NODES)
+            .with_max_additional_vertices(cap)
             .exclude_outer_faces(true),
     );
     if !result.refinement_complete {
-        return Err(WingbeatError::ResourceCap {
-            field: "mesh_size_mm".into(),
-            requested: format!("{h_mm} mm"),
-            cap: format!("{MAX_NODES} nodes"),
-            why: "mesh refinement stopped at the vertex cap".into(),
-        });
+        return Err(cap_error(h_mm, cdt.num_vertices() as f64, cap, "more than"));
     }
-    let excluded: std::collections::HashSet<_> = result.excluded_faces.iter().copied().collect();
+    let with_lines = !line_pts.is_empty();
+    if with_lines {
+        insert_lines(&mut cdt, &line_pts, &local_h)?;
+    }
+    // with lines the face handles changed: tell inside from outside by the centroid
+    // (faces of three collinear outline points, which spade may leave outside, have their
+    // centroid on the outline and are dropped too)
+    let span = outline
+        .iter()
+        .map(|p| p[0].abs().max(p[1].abs()))
+        .fold(0.0, f64::max);
+    let excluded: std::collections::HashSet<_> = if with_lines {
+        cdt.inner_faces()
+            .filter(|f| {
+                let c = f.center();
+                !strictly_inside(&poly, [c.x, c.y], 1e-9 * span)
+            })
+            .map(|f| f.fix())
+            .collect()
+    } else {
+        result.excluded_faces.iter().copied().collect()
+    };
     let mut used = vec![usize::MAX; cdt.num_vertices()];
     let mut nodes: Vec<[f64; 3]> = Vec::new();
     let mut triangles = Vec::new();
@@ -126,13 +338,8 @@ pub fn mesh_planform(outline: &[[f64; 2]], h_mm: f64, camber: f64) -> Result<Mes
         }
         triangles.push(tri);
     }
-    if nodes.len() > MAX_NODES {
-        return Err(WingbeatError::ResourceCap {
-            field: "mesh_size_mm".into(),
-            requested: format!("{h_mm} mm ({} nodes)", nodes.len()),
-            cap: format!("{MAX_NODES} nodes"),
-            why: "memory and solve time grow quickly with the node count".into(),
-        });
+    if nodes.len() > cap {
+        return Err(cap_error(h_mm, nodes.len() as f64, cap, ""));
     }
     if triangles.is_empty() {
         return Err(WingbeatError::Geometry(
@@ -148,6 +355,66 @@ pub fn mesh_planform(outline: &[[f64; 2]], h_mm: f64, camber: f64) -> Result<Mes
         }
     }
     Ok(Mesh { nodes, triangles })
+}
+
+/// Makes each mesh line (its stations, in order) a chain of constraint edges of the refined
+/// triangulation. Refinement vertices closer to a line than 0.3 × the local size are removed
+/// first (unless they lie on a constraint edge), so that forcing the line in leaves no
+/// slivers; the Delaunay fill of the small gap they leave is well shaped.
+fn insert_lines(
+    cdt: &mut ConstrainedDelaunayTriangulation<Point2<f64>>,
+    lines: &[Vec<[f64; 2]>],
+    local_h: &impl Fn([f64; 2]) -> f64,
+) -> Result<()> {
+    let on_line: std::collections::HashSet<(u64, u64)> = lines
+        .iter()
+        .flatten()
+        .map(|p| (p[0].to_bits(), p[1].to_bits()))
+        .collect();
+    let near: Vec<Point2<f64>> = cdt
+        .vertices()
+        .filter(|v| {
+            let p = v.position();
+            if on_line.contains(&(p.x.to_bits(), p.y.to_bits()))
+                || v.out_edges()
+                    .any(|e| cdt.is_constraint_edge(e.as_undirected().fix()))
+            {
+                return false;
+            }
+            lines.iter().any(|l| {
+                let x = l[0][0];
+                let (lo, hi) = (
+                    l[0][1].min(l[l.len() - 1][1]),
+                    l[0][1].max(l[l.len() - 1][1]),
+                );
+                (p.x - x).abs() < 0.3 * local_h([p.x, p.y]) && p.y > lo && p.y < hi
+            })
+        })
+        .map(|v| v.position())
+        .collect();
+    for p in near {
+        if let Some(v) = cdt.locate_vertex(p).map(|v| v.fix()) {
+            cdt.remove(v);
+        }
+    }
+    let handle = |cdt: &ConstrainedDelaunayTriangulation<Point2<f64>>, p: [f64; 2]| {
+        cdt.locate_vertex(Point2::new(p[0], p[1]))
+            .map(|v| v.fix())
+            .ok_or_else(|| WingbeatError::Geometry(format!("mesh line vertex {p:?} was lost")))
+    };
+    for l in lines {
+        for w in l.windows(2) {
+            let (a, b) = (handle(cdt, w[0])?, handle(cdt, w[1])?);
+            if !cdt.can_add_constraint(a, b) {
+                return Err(WingbeatError::Geometry(format!(
+                    "mesh line {:?}–{:?} crosses the outline",
+                    w[0], w[1]
+                )));
+            }
+            cdt.add_constraint(a, b);
+        }
+    }
+    Ok(())
 }
 
 /// Total length (mm) of the outline edges lying on x = 0 (the root), if any.

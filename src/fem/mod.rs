@@ -19,10 +19,12 @@
 //! | `--rho 860` | `material.rho_kg_m3` |
 //! | `--nu 0.3` | `material.nu` |
 //! | `--n-modes 6` | `n_modes` |
-//! | `--mesh-size-mm 1.0` | `mesh_size_mm` (target triangle edge) |
+//! | `--mesh-size-mm 1.0` (default: automatic, [`default_mesh_size_mm`]) | `mesh_size_mm` (target triangle edge; `None` = automatic) |
+//! | (none; the CLI keeps [`MAX_NODES`]) | `max_nodes` (node cap; `None` = [`MAX_NODES`]) |
 //!
 //! As JSON (`serde`), `clamp` is `"root"`, `"free"` or `{"strip": {"x_mm": 3.0}}`; every
-//! field is optional and missing ones take their default, e.g.
+//! field is optional and missing ones take their default (`mesh_size_mm` and `max_nodes`
+//! missing or `null`: automatic size, CLI cap), e.g.
 //! `{"n_modes": 4, "clamp": {"strip": {"x_mm": 3.0}}, "material": {"thickness_m": 8.1e-5,
 //! "e_pa": 1.311e10, "rho_kg_m3": 860.0, "nu": 0.3}}`.
 //!
@@ -44,7 +46,7 @@ pub use eigen::EigenOptions;
 pub use element::ShellMaterial;
 pub use geometry::{manduca_planform, parse_planform_csv, parse_planform_json, rectangle_planform};
 pub use linalg::Backend;
-pub use mesh::{Mesh, MAX_NODES};
+pub use mesh::{Mesh, MeshOptions, MAX_NODES};
 
 use crate::error::{Result, WingbeatError};
 use crate::model::{ModalStrain, Mode};
@@ -150,17 +152,112 @@ pub struct FemInput {
     pub material: ShellMaterial,
     /// Number of modes, 1 ..= 64.
     pub n_modes: usize,
-    /// Target triangle edge length, mm.
-    pub mesh_size_mm: f64,
+    /// Target triangle edge length, mm; `None` (JSON: missing or `null`) = automatic from
+    /// the planform's area ([`default_mesh_size_mm`]).
+    pub mesh_size_mm: Option<f64>,
+    /// Largest node count accepted, checked after meshing and before assembly; `None` =
+    /// [`MAX_NODES`] (the CLI's cap). 1 ..= [`MAX_NODES`]. The browser lab passes
+    /// [`BROWSER_MAX_NODES`].
+    pub max_nodes: Option<usize>,
 }
 
 /// The default strain point P near the wing base, (x, y) in mm: the paper's Table 6 point is
 /// not given in coordinates, so wingbeat picks one at mid-root-chord, 3 mm out from the root.
-/// The CLI (`wingbeat modes`) and the browser lab's FE wing both use it.
+/// It applies to the default outline only; see [`default_strain_point_mm`].
 pub const STRAIN_POINT_P_MM: (f64, f64) = (3.0, -6.0);
 
-/// Default target element size for the default wing, mm.
+/// The element size the automatic rule gives the default wing, mm (the size its material
+/// was calibrated at; `default_mesh_size_mm(&manduca_planform())` returns it).
 pub const DEFAULT_MESH_SIZE_MM: f64 = 1.0;
+
+/// Target node count of the automatic mesh size: [`default_mesh_size_mm`] picks the edge h
+/// at which equilateral triangles would fill the planform's area with this many nodes.
+pub const AUTO_MESH_NODES: f64 = 1000.0;
+
+/// Node cap of the browser (wasm `feModes`), below the CLI's [`MAX_NODES`]: a wasm
+/// instance that runs out of memory aborts, and the solve time grows like N^1.5–N^2.
+/// See docs/fem.md ("Node caps") for the measured memory behind it.
+pub const BROWSER_MAX_NODES: usize = 6000;
+
+/// The automatic element size for an outline (mm): the edge h of equilateral triangles that
+/// would cover the outline's area A with [`AUTO_MESH_NODES`] nodes, h = √(2A / (√3·N)),
+/// rounded to two significant digits (so it prints cleanly and is reproducible). Scales
+/// with the planform: 1.0 mm for the default wing (8.70 cm²), 0.68 mm for a 40 × 10 mm
+/// strip, 340 mm for a 10 m square plate. The mesher grades finer toward a root edge, so the
+/// actual node count is higher (1 653 nodes for the default wing). Returns NaN for an
+/// outline without area (which [`compute_modes`] rejects first).
+pub fn default_mesh_size_mm(outline: &[[f64; 2]]) -> f64 {
+    let area = geometry::signed_area(outline).abs();
+    if !(area.is_finite() && area > 0.0) {
+        return f64::NAN;
+    }
+    round_2sig((2.0 * area / (3f64.sqrt() * AUTO_MESH_NODES)).sqrt())
+}
+
+/// Rounds a positive number to two significant digits.
+fn round_2sig(h: f64) -> f64 {
+    let k = 1 - h.log10().floor() as i32;
+    if k >= 0 {
+        let s = 10f64.powi(k);
+        (h * s).round() / s
+    } else {
+        let s = 10f64.powi(-k);
+        (h / s).round() * s
+    }
+}
+
+/// The default strain point (x, y), mm, for an outline: the paper's P
+/// ([`STRAIN_POINT_P_MM`]) for the default outline (exactly [`manduca_planform`]); for any
+/// other outline the middle of the longest inside piece of the chordwise line one eighth of
+/// the span out from the outline's innermost x. That point lies strictly inside the
+/// outline, so it is inside the meshed planform whatever the mesh.
+pub fn default_strain_point_mm(outline: &[[f64; 2]]) -> (f64, f64) {
+    if outline == manduca_planform().as_slice() {
+        return STRAIN_POINT_P_MM;
+    }
+    strain_point_beyond(outline, f64::NEG_INFINITY)
+}
+
+/// [`default_strain_point_mm`] for a whole input: with a basal strip clamp the station is
+/// one eighth of the free span out from the strip's edge (a point in the clamped strip
+/// would have no strain). The default outline keeps P whatever the clamp.
+pub fn strain_point_for(input: &FemInput) -> (f64, f64) {
+    if input.planform_mm == manduca_planform() {
+        return STRAIN_POINT_P_MM;
+    }
+    match input.clamp {
+        Clamp::Strip { x_mm } if x_mm.is_finite() => strain_point_beyond(&input.planform_mm, x_mm),
+        _ => strain_point_beyond(&input.planform_mm, f64::NEG_INFINITY),
+    }
+}
+
+fn strain_point_beyond(outline: &[[f64; 2]], x_from: f64) -> (f64, f64) {
+    let (lo, hi) = outline
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p[0]), h.max(p[0]))
+        });
+    let lo = lo.max(x_from);
+    if !(lo.is_finite() && hi.is_finite()) || outline.is_empty() {
+        return (0.0, 0.0);
+    }
+    // the line at 1/8 of the span, else (a thin or odd outline) the first station with an
+    // inside piece
+    for frac in [0.125, 0.25, 0.0625, 0.5, 0.375, 0.625, 0.75, 0.875] {
+        let x = lo + frac * (hi - lo);
+        let best = mesh::inside_intervals(outline, x)
+            .into_iter()
+            .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0)));
+        if let Some((y0, y1)) = best {
+            return (x, 0.5 * (y0 + y1));
+        }
+    }
+    let n = outline.len() as f64;
+    let c = outline
+        .iter()
+        .fold([0.0, 0.0], |c, p| [c[0] + p[0] / n, c[1] + p[1] / n]);
+    (c[0], c[1])
+}
 
 impl Default for FemInput {
     fn default() -> Self {
@@ -171,7 +268,8 @@ impl Default for FemInput {
             clamp: Clamp::Root,
             material: ShellMaterial::paper_frequencies(),
             n_modes: 6,
-            mesh_size_mm: DEFAULT_MESH_SIZE_MM,
+            mesh_size_mm: None,
+            max_nodes: None,
         }
     }
 }
@@ -216,6 +314,10 @@ pub struct FemModes {
     pub n_dofs: usize,
     /// Material used.
     pub material: ShellMaterial,
+    /// Target element edge the mesh was made with, mm (the automatic size when the input
+    /// left it out); 0 when the mesh did not come from the mesher ([`solve_mesh`]).
+    #[serde(default)]
+    pub mesh_size_mm: f64,
 }
 
 /// Runs the whole FE step for `input`: validate, mesh, assemble, solve, post-process.
@@ -235,18 +337,126 @@ pub fn compute_modes_with(input: &FemInput, opt: EigenOptions) -> Result<FemMode
             format!("1 ..= {}", crate::model::MAX_MODES),
         ));
     }
-    crate::error::check_positive("mesh_size_mm", input.mesh_size_mm, 1e6, "mm")?;
-    let outline = geometry::validate_outline(&input.planform_mm)?;
-    let mesh = mesh::mesh_planform(&outline, input.mesh_size_mm, input.camber)?;
+    let (outline, mesh, h) = mesh_input(input)?;
     let clamped = clamp_nodes(&outline, &mesh, input.clamp)?;
-    solve_mesh_with(
+    let mut fe = solve_mesh_with(
         &mesh,
         &clamped,
         &input.material,
         input.n_modes,
         &input.planform_note,
         opt,
-    )
+    )?;
+    fe.mesh_size_mm = h;
+    Ok(fe)
+}
+
+/// The node cap an input asks for ([`FemInput::max_nodes`], default [`MAX_NODES`]),
+/// checked to be 1 ..= [`MAX_NODES`].
+pub fn node_cap(input: &FemInput) -> Result<usize> {
+    match input.max_nodes {
+        None => Ok(MAX_NODES),
+        Some(n) if (1..=MAX_NODES).contains(&n) => Ok(n),
+        Some(n) => Err(WingbeatError::invalid(
+            "max_nodes",
+            n,
+            format!("1 ..= {MAX_NODES} nodes"),
+        )),
+    }
+}
+
+/// The mesh size an input resolves to, mm: its `mesh_size_mm` (checked > 0) or the
+/// automatic [`default_mesh_size_mm`] of its (validated) outline.
+pub fn resolved_mesh_size_mm(input: &FemInput) -> Result<f64> {
+    match input.mesh_size_mm {
+        Some(h) => {
+            crate::error::check_positive("mesh_size_mm", h, 1e6, "mm")?;
+            Ok(h)
+        }
+        None => Ok(default_mesh_size_mm(&geometry::validate_outline(
+            &input.planform_mm,
+        )?)),
+    }
+}
+
+/// Validates the outline and meshes it: the mesh size resolved ([`resolved_mesh_size_mm`]),
+/// a mesh line on a strip clamp's edge (so the clamped edge is exact), and the node cap
+/// ([`node_cap`]) checked after meshing, before any assembly. An automatic size that would
+/// exceed the cap is coarsened until it fits (a default never makes a valid outline fail);
+/// an explicit size over the cap is an error naming `mesh_size_mm`, the node count, the cap
+/// and a size that would fit. Returns (validated outline, mesh, mesh size in mm).
+pub fn mesh_input(input: &FemInput) -> Result<(Vec<[f64; 2]>, Mesh, f64)> {
+    let cap = node_cap(input)?;
+    let mut h = resolved_mesh_size_mm(input)?;
+    let outline = geometry::validate_outline(&input.planform_mm)?;
+    let lines_x_mm = match input.clamp {
+        Clamp::Strip { x_mm } if x_mm.is_finite() => vec![x_mm],
+        _ => Vec::new(),
+    };
+    let opts = MeshOptions {
+        max_nodes: cap,
+        lines_x_mm,
+    };
+    let mut tries = 0;
+    loop {
+        match mesh::mesh_planform_with(&outline, h, input.camber, &opts) {
+            Ok(m) => return Ok((outline, m, h)),
+            Err(WingbeatError::ResourceCap { .. }) if input.mesh_size_mm.is_none() && tries < 8 => {
+                tries += 1;
+                h = round_2sig(h * 1.25);
+            }
+            Err(WingbeatError::ResourceCap {
+                field,
+                requested,
+                cap,
+                why,
+            }) => {
+                // name a size that was checked to fit (the estimate behind the first
+                // suggestion does not see the grading toward the root)
+                let fit = (1..=8)
+                    .scan(why_size(&why).unwrap_or(h * 1.25), |next, _| {
+                        let try_h = *next;
+                        *next = round_2sig(try_h * 1.2);
+                        Some(try_h)
+                    })
+                    .find(|&try_h| {
+                        mesh::mesh_planform_with(&outline, try_h, input.camber, &opts).is_ok()
+                    });
+                return Err(WingbeatError::ResourceCap {
+                    field,
+                    requested,
+                    cap,
+                    why: fit.map_or(why, mesh::cap_why),
+                });
+            }
+            Err(e) => return Err(e),
+        }
+    }
+}
+
+/// The size named in a [`mesh::cap_why`] text.
+fn why_size(why: &str) -> Option<f64> {
+    why.split("about ").nth(1)?.split(' ').next()?.parse().ok()
+}
+
+/// The `wingbeat modes` JSON document: every field of [`FemModes`], plus `modes` (the
+/// modal model's [`Mode`]s, e.g. from [`FemModes::model_modes`], which `wingbeat simulate
+/// --modes FILE` reads) and `units`. The CLI and wasm `feModes` (`json: true`) both build it
+/// here, so a file exported from the lab is the CLI's file.
+pub fn modes_document(fe: &FemModes, modes: &[Mode]) -> Result<String> {
+    let json_err = |e: serde_json::Error| WingbeatError::NonFinite {
+        what: "JSON output".into(),
+        detail: e.to_string(),
+    };
+    let mut v = serde_json::to_value(fe).map_err(json_err)?;
+    v["modes"] = serde_json::to_value(modes).map_err(json_err)?;
+    v["units"] = serde_json::json!({
+        "freq_hz": "Hz", "a": "kg^0.5 m", "b": "kg^0.5 m", "mass_kg": "kg", "nodes": "m",
+        "mesh_size_mm": "mm",
+        "shapes": "kg^-0.5 (mass-normalised out-of-plane displacement)",
+        "strain_nodes": "strain per unit modal coordinate [eps_x, eps_y, gamma_xy], top surface"
+    });
+    serde_json::to_string(&v).map_err(json_err)
 }
 
 /// Flags the nodes held by `clamp` (outline and clamp in mm, mesh in m).
@@ -473,6 +683,7 @@ fn postprocess(
         mass_orthonormality_error: ortho,
         n_dofs: asm.m.len(),
         material: *material,
+        mesh_size_mm: 0.0,
     }
 }
 

@@ -1,28 +1,59 @@
 //! The shell finite-element side of the wasm API (paper §3.1): `feModes`.
 
 use super::marshal::{err, f64a, from_js, set, to_js};
+use crate::fem::{FemInput, BROWSER_MAX_NODES};
 use js_sys::{Object, Uint32Array};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
+
+/// The options of `feModes` (declared as `FeModesOptions`).
+#[derive(Debug, Default, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+struct FeModesOptions {
+    /// The strain point [x, y], mm; default [`crate::fem::strain_point_for`] the input.
+    strain_point_mm: Option<[f64; 2]>,
+    /// Also return `modes_json`, the `wingbeat modes` JSON document.
+    json: bool,
+}
+
+/// The input `feModes` solves: `input` with its node cap lowered to
+/// [`BROWSER_MAX_NODES`] unless it asks for less.
+pub(crate) fn browser_input(mut input: FemInput) -> FemInput {
+    input.max_nodes = Some(
+        input
+            .max_nodes
+            .map_or(BROWSER_MAX_NODES, |n| n.min(BROWSER_MAX_NODES)),
+    );
+    input
+}
 
 /// Shell FE modes of a wing (paper §3.1): mesh, assemble, solve `K φ = ω² M φ`, then the
 /// modal model's inputs — frequencies, SI a_k and b_k, and `modes` ready for a `SimConfig`
-/// (damping ratio `zeta`, modal strains at P = `strain_point_mm`). The mesh, shapes and nodal
-/// strains come back as flat typed arrays (see `FeModesResult`). Errors name the field
-/// (outline, material, camber, mesh size and its node cap). Seconds of work at fine meshes:
-/// call it from a Web Worker.
+/// (damping ratio `zeta`, modal strains at `strain_point_mm`: `opts.strain_point_mm`, else the
+/// paper's P on the default outline and a point inside any other outline near its root).
+/// The mesh size may be left out (automatic, reported as `mesh_size_mm`); the node cap is
+/// `BROWSER_MAX_NODES` (or the input's `max_nodes` when lower, reported as `max_nodes`).
+/// With `opts.json`, `modes_json` is the `wingbeat modes` JSON document of the same result.
+/// The mesh, shapes and nodal strains come back as flat typed arrays (see `FeModesResult`).
+/// Errors name the field (outline, material, camber, mesh size and its node cap, strain
+/// point). Seconds of work at fine meshes: call it from a Web Worker.
 #[wasm_bindgen(js_name = feModes, unchecked_return_type = "FeModesResult")]
 pub fn fe_modes(
     #[wasm_bindgen(unchecked_param_type = "FemInput | undefined")] input: JsValue,
     zeta: Option<f64>,
+    #[wasm_bindgen(unchecked_param_type = "FeModesOptions | undefined")] opts: JsValue,
 ) -> Result<JsValue, JsError> {
-    let input: crate::fem::FemInput = from_js(input, "fem")?;
+    let input = browser_input(from_js::<FemInput>(input, "fem")?);
+    let opts: FeModesOptions = from_js(opts, "opts")?;
     let zeta = zeta.unwrap_or(0.0);
     crate::error::check_range("zeta", zeta, 0.0, 10.0, "").map_err(err)?;
+    let (px, py) = match opts.strain_point_mm {
+        Some([x, y]) => (x, y),
+        None => crate::fem::strain_point_for(&input),
+    };
     let fe = crate::fem::compute_modes(&input).map_err(err)?;
-    let (px, py) = crate::fem::STRAIN_POINT_P_MM;
     let modes = fe
-        .model_modes(zeta, &[("P".to_string(), px, py)], "strain point")
+        .model_modes(zeta, &[("P".to_string(), px, py)], "opts.strain_point_mm")
         .map_err(err)?;
     #[derive(Serialize)]
     struct Meta<'a> {
@@ -38,9 +69,17 @@ pub fn fe_modes(
         n_triangles: usize,
         n_modes: usize,
         mesh_size_mm: f64,
+        max_nodes: usize,
         strain_point_mm: [f64; 2],
         modes: &'a [crate::model::Mode],
+        #[serde(skip_serializing_if = "Option::is_none")]
+        modes_json: Option<String>,
     }
+    let modes_json = if opts.json {
+        Some(crate::fem::modes_document(&fe, &modes).map_err(err)?)
+    } else {
+        None
+    };
     let o: Object = to_js(&Meta {
         planform_note: &fe.planform_note,
         a: &fe.a,
@@ -53,9 +92,11 @@ pub fn fe_modes(
         n_nodes: fe.nodes.len(),
         n_triangles: fe.triangles.len(),
         n_modes: fe.freq_hz.len(),
-        mesh_size_mm: input.mesh_size_mm,
+        mesh_size_mm: fe.mesh_size_mm,
+        max_nodes: input.max_nodes.unwrap_or(BROWSER_MAX_NODES),
         strain_point_mm: [px, py],
         modes: &modes,
+        modes_json,
     })?
     .unchecked_into();
     set(&o, "freq_hz", &f64a(&fe.freq_hz))?;

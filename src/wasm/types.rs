@@ -90,15 +90,29 @@ export interface FemInput {
   planform_mm?: [number, number][]; planform_note?: string; camber?: number;
   clamp?: "root" | "free" | { strip: { x_mm: number } };
   material?: { thickness_m: number; e_pa: number; rho_kg_m3: number; nu: number };
-  n_modes?: number; mesh_size_mm?: number;
+  n_modes?: number;
+  /** Target element edge, mm; missing or null = automatic from the planform's area. */
+  mesh_size_mm?: number | null;
+  /** Node cap, 1 ..= 20 000; feModes uses min(this, BROWSER_MAX_NODES = 6000). */
+  max_nodes?: number | null;
+}
+/** Options of feModes. */
+export interface FeModesOptions {
+  /** Strain point [x, y], mm; default: P = (3, −6) on the default outline, else inside the wing near its root. */
+  strain_point_mm?: [number, number];
+  /** Also return `modes_json`, the `wingbeat modes` JSON document. */
+  json?: boolean;
 }
 /** Shell FE modes: SI summary, Eq. 13 inputs (`modes`, strain at P) and the mesh as flat typed arrays. */
 export interface FeModesResult {
   planform_note: string; freq_hz: Float64Array; a: [number, number][]; b: [number, number][];
   mass_kg: number; centre_of_mass_m: [number, number, number]; kinds: string[];
   residuals: Float64Array; mass_orthonormality_error: number; n_dofs: number;
-  n_nodes: number; n_triangles: number; n_modes: number; mesh_size_mm: number;
-  strain_point_mm: [number, number]; modes: Mode[];
+  n_nodes: number; n_triangles: number; n_modes: number;
+  /** The element size used, mm (the automatic one when the input left it out). */ mesh_size_mm: number;
+  /** The node cap applied. */ max_nodes: number;
+  /** The strain point of `modes[k].strains`, mm. */ strain_point_mm: [number, number]; modes: Mode[];
+  /** With `opts.json`: the `wingbeat modes` JSON document (for `wingbeat simulate --modes`). */ modes_json?: string;
   /** x, y, z per node, m. */ nodes: Float64Array;
   /** Three node indices per triangle. */ triangles: Uint32Array;
   /** Mode-major: shapes[k·n_nodes + i], kg^-½. */ shapes: Float64Array;

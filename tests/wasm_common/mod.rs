@@ -516,13 +516,14 @@ pub fn fe_modes_match_core() {
     use wingbeat::fem::{compute_modes, FemInput, STRAIN_POINT_P_MM};
     let input = FemInput {
         n_modes: 3,
-        mesh_size_mm: 2.5,
+        mesh_size_mm: Some(2.5),
         ..Default::default()
     };
     let core = compute_modes(&input).unwrap();
     let js = wasm::fe_modes(
         js_sys::JSON::parse(r#"{"n_modes": 3, "mesh_size_mm": 2.5}"#).unwrap(),
         Some(0.01),
+        JsValue::UNDEFINED,
     )
     .unwrap();
     close_all("freq_hz", &f64s(&js, "freq_hz"), &core.freq_hz, TOL);
@@ -600,10 +601,14 @@ pub fn fe_modes_match_core() {
         ),
         (r#"{"bogus": 1}"#, "bogus"),
     ] {
-        let m = message(wasm::fe_modes(bad(json), None));
+        let m = message(wasm::fe_modes(bad(json), None, JsValue::UNDEFINED));
         assert!(m.contains(field), "{json}: message `{m}` lacks {field}");
     }
-    let m = message(wasm::fe_modes(JsValue::UNDEFINED, Some(f64::NAN)));
+    let m = message(wasm::fe_modes(
+        JsValue::UNDEFINED,
+        Some(f64::NAN),
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("zeta"), "{m}");
 }
 
@@ -719,6 +724,7 @@ pub fn ts_declarations_match_results() {
     let fe = wasm::fe_modes(
         js_sys::JSON::parse(r#"{"n_modes": 2, "mesh_size_mm": 3}"#).unwrap(),
         None,
+        JsValue::UNDEFINED,
     )
     .unwrap();
     check("FeModesResult", &fe);

@@ -13,7 +13,7 @@ pub extern "C" fn wing_f1(mesh_mm: f64, backend: u32) -> f64 {
         ..EigenOptions::default()
     };
     let input = FemInput {
-        mesh_size_mm: mesh_mm,
+        mesh_size_mm: Some(mesh_mm),
         ..FemInput::default()
     };
     compute_modes_with(&input, opt)
