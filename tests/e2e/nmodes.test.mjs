@@ -93,6 +93,14 @@ test('6 modes: table, picker, spectra and 3-D view use every mode', async () => 
   await ready3d(page);
   assert.equal(await page.getAttribute('#wing3d', 'data-modes'), '6');
   assert.match(await page.textContent('section.wl-wing3d .wl-note'), /all 6 of its modes/);
+  // Another wing (3 modes): every view follows; the 3-D view is rebuilt on the new mesh.
+  await page.evaluate(() => document.querySelector('wing-lab').store.set({ n_modes: 3 }));
+  await page.waitForFunction(() => { const l = document.querySelector('wing-lab'); return l.store.get().fe.n_modes === 3 && l.analysis.sim.modes.length === 3; }, null, { timeout: 90000 });
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.03));
+  await page.waitForFunction(() => document.querySelector('#wing3d').dataset.modes === '3', null, { timeout: 30000 });
+  assert.equal(await page.getAttribute('wing-lab table.wl-numtable', 'data-modes'), '3');
+  assert.equal(await page.locator('wing-lab section.wl-modeshape select option').count(), 3);
+  assert.equal(await page.locator('#wing3d canvas.wl-w3-canvas').count(), 1);
   assert.deepEqual(problems, []);
   await context.close();
 });

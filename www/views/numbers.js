@@ -32,7 +32,9 @@ export function mount(ctx) {
   const tbody = el('tbody');
   table.append(caption, el('thead', {}, headRow), tbody);
   // The table scrolls sideways on its own when there are more modes than fit (8 at most).
-  const scroller = el('div', { class: 'wl-numscroll', role: 'region', tabindex: '0', 'aria-label': 'Floquet and contributions table (scrolls sideways for many modes)' }, table);
+  // Named after its section (which carries the lab's name when a page has several labs), so
+  // each lab's region is a distinct landmark.
+  const scroller = el('div', { class: 'wl-numscroll', role: 'region', tabindex: '0', 'aria-label': `${section.getAttribute('aria-label') || 'Floquet and contributions'}: table, scrolls sideways for many modes` }, table);
   section.append(scroller, el('p', { class: 'wl-note', rich: 'Shares are 100·Σq_{term}^2/Σq_{total}^2 (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms). One column per mode of the current mode set; the selected mode is highlighted.' }));
   /** @type {Record<string, HTMLTableCellElement>} */
   const cells = {};
