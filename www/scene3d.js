@@ -576,6 +576,17 @@ export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSam
   return out;
 }
 
+/**
+ * The colour limit of a whole-wing strain map: the RANGE_QUANTILE (90 %) quantile of |value|
+ * over the nodes, as for the 3-D view's run-wide ranges (the clamped root's singular strains
+ * would otherwise leave the rest of the wing in the map's neutral colour). The planform map and
+ * the 3-D wing (WingView.setNodeField's limit) both use it, so their colours agree.
+ * @param {ArrayLike<number>} field
+ */
+export function mapLimit(field) {
+  return robust(field, RANGE_QUANTILE);
+}
+
 /** Labels of the strain-map choices (store `strain_map`), for selects and legends. */
 export const MAP_LABELS = {
   eps_x: 'ε_x, spanwise strain',

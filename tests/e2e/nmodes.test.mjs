@@ -207,6 +207,16 @@ test('whole-wing strain map colours the planform canvas and the 3-D wing', async
   const b = await page.locator(map).screenshot();
   assert.ok(!b.equals(a), 'the map follows the choice');
   assert.match(await page.textContent('wing-lab .wl-smap-legend-text'), /peak \|value\| over the run of ε_x/);
+  // The map exports as CSV (one row per FE node, positions in mm) and PNG.
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab [data-smap] button[data-export="csv"]')]);
+  const csv = fs.readFileSync(await dl.path(), 'utf8').trim().split('\n');
+  const nNodes = await page.evaluate(() => document.querySelector('wing-lab').store.get().fe.n_nodes);
+  const head = csv.findIndex((l) => l.startsWith('x (mm)'));
+  assert.equal(csv[head], 'x (mm),y (mm),peak_eps_x (strain (-))');
+  assert.equal(csv.length - head - 1, nNodes);
+  assert.ok(csv.slice(head + 1).every((l) => l.split(',').length === 3 && l.split(',').every((v) => Number.isFinite(Number(v)))));
+  const [dl2] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab [data-smap] button[data-export="png"]')]);
+  assert.equal(fs.readFileSync(await dl2.path()).subarray(1, 4).toString(), 'PNG');
   // The 3-D wing with colour 5 shows the same map.
   await ready3d(page);
   const canvas = '#wing3d canvas.wl-w3-canvas';

@@ -81,7 +81,9 @@ export function mount(ctx) {
   const row = (label, id, input) => el('span', { class: 'wl-smap-field' }, el('label', { for: id, text: label }), input);
   const mapControls = el('div', { class: 'wl-smap-controls' }, row('component', comp.id, comp), row('statistic', stat.id, stat));
   const mapBox = el('div', { class: 'wl-smap', 'data-smap': '' },
-    el('h3', { class: 'wl-smap-title', text: 'Whole-wing strain map' }),
+    el('div', { class: 'wl-smap-head' },
+      el('h3', { class: 'wl-smap-title', text: 'Whole-wing strain map' }),
+      ctx.exportButtons('strainmap', 'Whole-wing strain map', ['csv', 'png'])),
     mapControls,
     canvas,
     el('div', { class: 'wl-smap-legendrow' }, legend, legendText),
@@ -185,7 +187,7 @@ export function mount(ctx) {
     const px = (x) => (x - /** @type {any} */ (frame).x0) * kk;
     const py = (y) => (/** @type {any} */ (frame).y1 - y) * kk;
     const st = stops();
-    limit = field ? S.robust(field, 0.98) : 0;
+    limit = field ? S.mapLimit(field) : 0;
     const signed = !!field && field.some((v) => v < 0);
     const tOf = (v) => (limit > 0 ? 0.5 + 0.5 * Math.max(-1, Math.min(1, v / limit)) : 0.5);
     const tri = fe.triangles;
@@ -227,7 +229,7 @@ export function mount(ctx) {
     }
     const what = `${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}`;
     legendText.textContent = field
-      ? `${signed ? fmt(-limit, 3) : '0'} … ${fmt(limit, 3)} strain (–): ${what}; the hottest 2 % of the wing saturate (largest ${fmt(Math.max(...field), 3)})`
+      ? `${signed ? fmt(-limit, 3) : '0'} … ${fmt(limit, 3)} strain (–): ${what}; the hottest ${Math.round(100 * (1 - S.RANGE_QUANTILE))} % of the nodes saturate (largest ${fmt(Math.max(...field), 3)})`
       : mapBox.dataset.pending ? 'computing the peak map…' : `no map: ${err || 'the wing and the run do not match'}`;
     canvas.dataset.limit = String(limit);
     mapNote.replaceChildren(rich(`Colours: ${what}, per node of the FE mesh (${n} nodes), from the modal strain fields and q_k(t) of all ${fe.n_modes} modes; the same colour map as the 3-D view (choose “whole-run strain map” there to see it on the flapping wing). Top view: span to the right, leading edge up.`));
@@ -273,7 +275,7 @@ export function mount(ctx) {
     note.replaceChildren(rich(s.modes === 'fe'
       ? `Σ_k ε_k q_k(t) over all ${a.sim.modes.length} modes at the strain point (${fmt(px, 3)}, ${fmt(py, 3)}) mm, from the FE modal strain fields (top surface, dimensionless, SI).`
       : `Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). ${PAPER_UNITS_NOTE}`));
-    plot.setYLabel(`strain (${unit(s)})`);
+    plot.setYLabel(s.modes === 'fe' ? 'strain (–)' : 'strain (paper units)');
     if (!st) {
       plot.setData([[0], [null], [null], [null]]);
       plot.setSummary('No strain at this point for this mode set.');
@@ -314,7 +316,7 @@ export function mount(ctx) {
           { name: 'eps_y', unit: unit(s), values: st.eps_y },
           { name: 'gamma_xy', unit: unit(s), values: st.gamma_xy },
         ],
-        [`wingbeat lab; ${toQuery(s)}`, `strain at point ${st.point}`],
+        [`wingbeat lab; ${toQuery(s)}`, s.modes === 'fe' ? `strain at the strain point (x, y) = (${pointOf(s).join(', ')}) mm` : `strain at point ${st.point}`],
       );
     },
     figure: () => {
@@ -327,7 +329,7 @@ export function mount(ctx) {
         x: s.result.analysis.sim.t,
         xRange: plot.xWindow(),
         xLabel: 't (s)',
-        yLabel: `strain (${unit(s)})`,
+        yLabel: s.modes === 'fe' ? 'strain (–)' : 'strain (paper units)',
         series: [
           { label: 'ε_x', color: color('eps_x'), y: st.eps_x, show: plot.u.series[1].show },
           { label: 'ε_y', color: color('eps_y'), y: st.eps_y, show: plot.u.series[2].show },
@@ -336,6 +338,25 @@ export function mount(ctx) {
         note: s.modes === 'paper' ? 'Paper units: Table 4/6 data are not SI.' : 'Dimensionless (SI).',
       };
     },
+  });
+  // The map itself: one row per node (planform position, mm, and the value), and the canvas.
+  ctx.registerExport('strainmap', {
+    csv: () => {
+      const s = store.get();
+      const fe = feOf(s);
+      if (!fe || !field || field.length !== fe.nodes.length / 3) return null;
+      const n = field.length;
+      const map = mapOf(s);
+      return ctx.toCSV(
+        [
+          { name: 'x', unit: 'mm', values: Float64Array.from({ length: n }, (_, i) => fe.nodes[3 * i] * 1e3) },
+          { name: 'y', unit: 'mm', values: Float64Array.from({ length: n }, (_, i) => fe.nodes[3 * i + 1] * 1e3) },
+          { name: `${map.stat}_${map.component}`, unit: 'strain (-)', values: field },
+        ],
+        [`wingbeat lab; ${toQuery(s)}`, `whole-wing strain map: ${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}, per FE node (${n} nodes, all ${fe.n_modes} modes)`],
+      );
+    },
+    canvas: () => (feOf(store.get()) && field ? canvas : null),
   });
   return {
     plot,

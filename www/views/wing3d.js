@@ -341,13 +341,13 @@ export function mount(ctx) {
     if (!view) return;
     const c = Number(colour.value);
     if (c === 5) applyField();
-    view.set_strain_range(c > 0 && c < 5 && ranges && ranges[c] > 0 ? ranges[c] : null);
+    view.set_strain_range(c === 5 ? fieldLimit : c > 0 && ranges && ranges[c] > 0 ? ranges[c] : null);
   }
 
   /**
    * Colour 5: the whole-run strain map of the strain panel (store `strain_map`), uploaded to the
-   * renderer once per run and choice (WingView.setNodeField; the legend limit is the renderer's
-   * robust 98th percentile, as on the panel's planform map).
+   * renderer once per run and choice (WingView.setNodeField with the limit S.mapLimit, as on the
+   * panel's planform map).
    */
   let fieldKey = '';
   /** @type {string | null} */
@@ -372,7 +372,8 @@ export function mount(ctx) {
     const field = s.modes === 'fe' ? S.strainMap(fe, s.result, map, strainFieldOf(engine)) : null;
     fieldProblem = field ? null : s.modes === 'fe' ? 'the wing and the run do not match yet' : 'the paper mode set has no whole-wing strain (choose the FE wing)';
     try {
-      view.setNodeField(field || new Float64Array(fe.nodes.length / 3), null);
+      fieldLimit = field ? S.mapLimit(field) : null;
+      view.setNodeField(field || new Float64Array(fe.nodes.length / 3), fieldLimit);
     } catch (e) {
       fieldProblem = errorText(e);
     }
@@ -381,6 +382,8 @@ export function mount(ctx) {
   /** @type {any} */
   let fieldResult = null;
   let fieldLabel = '';
+  /** @type {number | null} the map's colour limit (S.mapLimit, as on the strain panel's map) */
+  let fieldLimit = null;
 
   /** New analysis: time range now; colour ranges, run deflection and camera fit on the next frame. */
   function onResult() {
@@ -676,7 +679,7 @@ export function mount(ctx) {
     c2.fillRect(0, 0, w, h);
     const units = isFe ? 'strain (–)' : '(FE strain × paper q: not physical)';
     legendText.textContent = lg.component === 'field'
-      ? (fieldProblem ? `no strain map: ${fieldProblem}` : `${fieldLabel}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} strain (–), one map for the whole run (the hottest 2 % of the wing saturate)`)
+      ? (fieldProblem ? `no strain map: ${fieldProblem}` : `${fieldLabel}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} strain (–), one map for the whole run (the hottest ${Math.round(100 * (1 - S.RANGE_QUANTILE))} % of the nodes saturate)`)
       : `${lg.component}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} ${units}, fixed for the whole run`;
     legendText.dataset.min = String(lg.min);
     legendText.dataset.max = String(lg.max);
