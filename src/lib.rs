@@ -4,6 +4,7 @@
 //! "Dynamic Modeling of a Rotating Insect Wing". The pipeline, one module each:
 //!
 //! * [`kinematics`] — roll α, pitch β, yaw γ and the frame's angular velocity Ω (Eq. 1);
+//!   [`kinematics_table`] turns a measured CSV table of them into periodic kinematics;
 //! * [`model`] — the modal equation of motion, Eq. 13, and its three force terms;
 //! * [`solve`] — exact-to-rounding period propagation plus two independent time steppers;
 //! * [`floquet`] — monodromy, multipliers, stability, effective frequency and beat period;
@@ -11,6 +12,7 @@
 //! * [`analysis`] — spectra, contributions, sweeps, initial-condition maps, beats, strain;
 //! * [`fem`] — shell finite elements: modes of any planform with camber (paper §3.1);
 //! * [`reproduce`] — every claim of the paper's §3–4 against what wingbeat computes;
+//! * [`modes_doc`] — reading a `wingbeat modes` document (CLI `--modes` and the lab);
 //! * [`presets`] and [`config`] — the paper's data and the serde types every front end shares.
 //!
 //! The core is `f64` throughout, single-threaded, and uses no filesystem or web APIs, so it
@@ -41,7 +43,9 @@ pub mod error;
 pub mod fem;
 pub mod floquet;
 pub mod kinematics;
+pub mod kinematics_table;
 pub mod model;
+pub mod modes_doc;
 pub mod params;
 pub mod presets;
 #[cfg(feature = "render")]

@@ -101,3 +101,37 @@ fn result_types_match_serde() {
     ts_common::check(&i, "Spectrum", &keys(&s.coriolis));
     ts_common::check(&i, "Peak", &keys(&s.coriolis.peaks[0]));
 }
+
+/// The own-wing and own-kinematics declarations against the core's serde types.
+#[test]
+fn lab_wing_types_match_serde() {
+    use wingbeat::analysis::strain::{StrainComponent, StrainFieldOptions, StrainStat};
+    use wingbeat::kinematics_table::{kinematics_from_csv, AngleUnits, CsvKinematicsOptions};
+    let i = ts_common::interfaces(ts_common::declarations());
+    let b = &wingbeat::fem::geometry::builtin_planforms()[0];
+    ts_common::check(&i, "BuiltinPlanform", &keys(b));
+    ts_common::check(&i, "WingParam", &keys(&wingbeat::params::WING_PARAMS[0]));
+    ts_common::check(
+        &i,
+        "MaterialPreset",
+        &keys(&wingbeat::params::material_presets()[0]),
+    );
+    let s = StrainFieldOptions {
+        component: StrainComponent::EpsX,
+        stat: StrainStat::Peak,
+    };
+    ts_common::check(&i, "StrainFieldOptions", &keys(&s));
+    let opts = CsvKinematicsOptions {
+        units: AngleUnits::Deg,
+        flap_hz: 25.0,
+        max_harmonic: Some(3),
+    };
+    ts_common::check(&i, "CsvKinematicsOptions", &keys(&opts));
+    let t = kinematics_from_csv("t,alpha\n0,0\n0.01,10\n0.02,0\n0.03,-10\n", &opts).unwrap();
+    ts_common::check(&i, "KinematicsTable", &keys(&t));
+    ts_common::check(&i, "FoldedSamples", &keys(&t.samples));
+    let sum = wingbeat::fem::geometry::outline_summary(&b.points_mm).unwrap();
+    let mut ok = keys(&sum);
+    ok.extend(["ok", "default_mesh_size_mm", "default_strain_point_mm"].map(String::from));
+    ts_common::check(&i, "PlanformOk", &ok);
+}

@@ -313,3 +313,422 @@ fn resonance_map_of_200_points_is_fast() {
     assert_eq!(f64s(&js, "modes.1.max_modulus").len(), 200);
     assert!(ms < 30_000.0);
 }
+
+// ---- The lab's own wing and own kinematics (src/wasm/wing.rs, kinematicsFromCsv) ----
+
+// The same reader wasm_common includes privately.
+#[allow(clippy::duplicate_mod)]
+#[path = "ts_common/mod.rs"]
+mod ts_common;
+
+use wingbeat::analysis::strain::{strain_field as core_strain_field, StrainFieldOptions};
+use wingbeat::fem::{compute_modes, geometry, strain_point_for};
+use wingbeat::params::{material_presets, wing_input as core_wing_input, WING_PARAMS};
+
+fn js_keys(o: &JsValue) -> Vec<String> {
+    js_sys::Object::keys(o.unchecked_ref::<js_sys::Object>())
+        .iter()
+        .map(|k| k.as_string().unwrap())
+        .collect()
+}
+
+fn close(name: &str, got: f64, want: f64) {
+    let scale = got.abs().max(want.abs()).max(1e-300);
+    assert!(
+        (got - want).abs() <= 1e-12 * scale,
+        "{name}: wasm {got:e} vs core {want:e}"
+    );
+}
+
+#[wasm_bindgen_test]
+fn wing_tables_are_the_core_tables() {
+    let js = wasm::wing_parameters().unwrap();
+    for (i, p) in WING_PARAMS.iter().enumerate() {
+        assert_eq!(
+            get(&js, &format!("{i}.key")).as_string().as_deref(),
+            Some(p.key)
+        );
+        for (k, v) in [
+            ("min", p.min),
+            ("max", p.max),
+            ("step", p.step),
+            ("default", p.default),
+        ] {
+            assert_eq!(num(&js, &format!("{i}.{k}")), v, "{}.{k}", p.key);
+        }
+    }
+    let js = wasm::material_presets().unwrap();
+    for (i, m) in material_presets().iter().enumerate() {
+        assert_eq!(
+            get(&js, &format!("{i}.id")).as_string().as_deref(),
+            Some(m.id)
+        );
+        assert_eq!(num(&js, &format!("{i}.e_pa")), m.e_pa);
+        assert_eq!(num(&js, &format!("{i}.thickness_um")), m.thickness_um);
+    }
+    let js = wasm::planforms().unwrap();
+    for (i, b) in geometry::builtin_planforms().iter().enumerate() {
+        assert_eq!(
+            get(&js, &format!("{i}.id")).as_string().as_deref(),
+            Some(b.id)
+        );
+        let n = js_sys::Array::from(&get(&js, &format!("{i}.points_mm"))).length() as usize;
+        assert_eq!(n, b.points_mm.len());
+        assert_eq!(num(&js, &format!("{i}.points_mm.1.1")), b.points_mm[1][1]);
+    }
+}
+
+/// The lab's wing input path (wingInput → feModes) gives the same frequencies, a_k and strains
+/// as `compute_modes` on the core's input, to 1e-12; modalStrainAt gives feModes' strains at
+/// its strain point; strainField matches the core.
+#[wasm_bindgen_test]
+fn wing_input_path_matches_compute_modes() {
+    let pts = geometry::builtin_planforms()[1].points_mm.clone(); // slender
+    let input = wasm::wing_input(
+        json(r#"{"n_modes": 3, "mesh_mm": 3, "camber": 0.05, "clamp_mm": 1.5}"#),
+        to_js(&pts),
+    )
+    .unwrap();
+    let core_in = core_wing_input(
+        [
+            ("n_modes", 3.0),
+            ("mesh_mm", 3.0),
+            ("camber", 0.05),
+            ("clamp_mm", 1.5),
+        ],
+        Some(pts),
+    )
+    .unwrap();
+    let back: wingbeat::fem::FemInput = serde_wasm_bindgen::from_value(input.clone()).unwrap();
+    assert_eq!(back, core_in);
+    let js = wasm::fe_modes(input, Some(0.0), JsValue::UNDEFINED).unwrap();
+    let core = compute_modes(&core_in).unwrap();
+    let (px, py) = strain_point_for(&core_in);
+    let modes = core
+        .model_modes(0.0, &[("P".to_string(), px, py)], "P")
+        .unwrap();
+    let freq = f64s(&js, "freq_hz");
+    assert_eq!(freq.len(), 3);
+    for k in 0..3 {
+        close(&format!("freq_hz[{k}]"), freq[k], core.freq_hz[k]);
+        close(
+            &format!("a[{k}].x"),
+            num(&js, &format!("a.{k}.0")),
+            core.a[k][0],
+        );
+        close(
+            &format!("a[{k}].y"),
+            num(&js, &format!("a.{k}.1")),
+            core.a[k][1],
+        );
+        for (c, want) in [
+            ("eps_x", modes[k].strains[0].eps_x),
+            ("eps_y", modes[k].strains[0].eps_y),
+            ("gamma_xy", modes[k].strains[0].gamma_xy),
+        ] {
+            close(c, num(&js, &format!("modes.{k}.strains.0.{c}")), want);
+        }
+    }
+    // modalStrainAt at feModes' own strain point equals the strains feModes reports there.
+    let nodes = f64s(&js, "nodes");
+    let tris = get(&js, "triangles")
+        .dyn_into::<js_sys::Uint32Array>()
+        .unwrap()
+        .to_vec();
+    let sn = f64s(&js, "strain_nodes");
+    let p = [num(&js, "strain_point_mm.0"), num(&js, "strain_point_mm.1")];
+    let at = wasm::modal_strain_at(&nodes, &tris, &sn, 3.0, &p).unwrap();
+    for k in 0..3 {
+        for c in ["eps_x", "eps_y", "gamma_xy"] {
+            close(
+                &format!("modalStrainAt {k} {c}"),
+                num(&at, &format!("{k}.{c}")),
+                num(&js, &format!("modes.{k}.strains.0.{c}")),
+            );
+        }
+    }
+    let i = ts_common::interfaces(ts_common::declarations());
+    ts_common::check(&i, "ModalStrainValues", &js_keys(&get(&at, "0")));
+    // Outside the wing and inconsistent arrays: named errors.
+    let m = message(wasm::modal_strain_at(
+        &nodes,
+        &tris,
+        &sn,
+        3.0,
+        &[200.0, 0.0],
+    ));
+    assert!(
+        m.contains("point") && m.contains("inside the meshed planform"),
+        "{m}"
+    );
+    let m = message(wasm::modal_strain_at(&nodes, &tris, &sn, 4.0, &p));
+    assert!(m.contains("strain_nodes"), "{m}");
+    let m = message(wasm::modal_strain_at(&nodes, &tris, &sn, 2.5, &p));
+    assert!(m.contains("n_modes"), "{m}");
+    let mut bad = tris.clone();
+    bad[4] = 1_000_000;
+    let m = message(wasm::modal_strain_at(&nodes, &bad, &sn, 3.0, &p));
+    assert!(m.contains("triangles[4]"), "{m}");
+    let m = message(wasm::modal_strain_at(&nodes, &tris, &sn, 3.0, &[1.0]));
+    assert!(m.contains("point"), "{m}");
+    // strainField against the core, both statistics.
+    let qs: Vec<Vec<f64>> = (0..3)
+        .map(|k| {
+            (0..500)
+                .map(|t| ((t * (k + 2)) as f64 * 0.01).sin())
+                .collect()
+        })
+        .collect();
+    let arr = js_sys::Array::new();
+    for q in &qs {
+        arr.push(&js_sys::Float64Array::from(&q[..]));
+    }
+    let refs: Vec<&[f64]> = qs.iter().map(Vec::as_slice).collect();
+    let nn = core.nodes.len();
+    for opts in [
+        r#"{"stat": "rms"}"#,
+        r#"{"component": "eps_y", "stat": "peak"}"#,
+        r#"{"component": "gamma_xy", "stat": "rms"}"#,
+    ] {
+        let got = wasm::strain_field(&sn, 3.0, arr.clone().into(), json(opts))
+            .unwrap()
+            .to_vec();
+        let o: StrainFieldOptions = serde_json::from_str(opts).unwrap();
+        let want = core_strain_field(nn, 3, |k, i| core.strain_nodes[k][i], &refs, &o).unwrap();
+        assert_eq!(got.len(), nn);
+        let scale = want.iter().fold(0.0f64, |m, v| m.max(*v));
+        for (g, w) in got.iter().zip(&want) {
+            assert!((g - w).abs() <= 1e-12 * scale, "{opts}: {g} vs {w}");
+        }
+    }
+    for (qs, opts, want) in [
+        (
+            json("[[1, 2]]"),
+            r#"{"stat": "rms"}"#,
+            "one series per mode (3)",
+        ),
+        (arr.clone().into(), r#"{"stat": "max"}"#, "strainField.stat"),
+        (arr.clone().into(), r#"{"stat": "rms", "x": 1}"#, "x"),
+        (JsValue::from_f64(1.0), r#"{"stat": "rms"}"#, "qs"),
+        (json("[[1, 2], [1], [1, 2]]"), r#"{"stat": "rms"}"#, "qs[1]"),
+        (
+            json(r#"[[1, 2], [1, "a"], [1, 2]]"#),
+            r#"{"stat": "rms"}"#,
+            "qs[1][1]",
+        ),
+    ] {
+        let m = message(wasm::strain_field(&sn, 3.0, qs, json(opts)));
+        assert!(m.contains(want), "{opts}: `{m}` lacks {want}");
+    }
+    let m = message(wasm::strain_field(&sn, 3.0, arr.into(), JsValue::UNDEFINED));
+    assert!(m.contains("strainField"), "{m}");
+}
+
+#[wasm_bindgen_test]
+fn outline_functions_check_without_throwing() {
+    let csv = "x_mm,y_mm\n0,-10\n40,-10\n40,0\n0,0\n";
+    let pts = wasm::parse_planform(csv, "csv").unwrap();
+    let same = wasm::parse_planform("[[0,-10],[40,-10],[40,0],[0,0]]", "json").unwrap();
+    assert_eq!(
+        js_sys::JSON::stringify(&pts).unwrap(),
+        js_sys::JSON::stringify(&same).unwrap()
+    );
+    let c = wasm::check_planform(pts).unwrap();
+    assert_eq!(get(&c, "ok").as_bool(), Some(true));
+    assert_eq!(num(&c, "area_mm2"), 400.0);
+    assert_eq!(num(&c, "span_mm"), 40.0);
+    assert_eq!(num(&c, "chord_mm"), 10.0);
+    assert_eq!(get(&c, "root_edge").as_bool(), Some(true));
+    let rect = geometry::rectangle_planform(40.0, 10.0);
+    assert_eq!(
+        num(&c, "default_mesh_size_mm"),
+        wingbeat::fem::default_mesh_size_mm(&rect)
+    );
+    let (sx, sy) = wingbeat::fem::default_strain_point_mm(&rect);
+    assert_eq!(num(&c, "default_strain_point_mm.0"), sx);
+    assert_eq!(num(&c, "default_strain_point_mm.1"), sy);
+    let i = ts_common::interfaces(ts_common::declarations());
+    ts_common::check(&i, "PlanformOk", &js_keys(&c));
+    // Bad outlines answer { ok: false, error } and never throw.
+    for (bad, want) in [
+        ("[[0,0],[1,1],[0,1],[1,0]]", "self-intersecting"),
+        ("[[0,0],[1,1]]", "planform"),
+        ("[[0,0],[1,1],[2, null]]", "points"),
+        ("[1, 2, 3]", "points"),
+        ("[]", "planform"),
+    ] {
+        let c = wasm::check_planform(json(bad)).unwrap();
+        assert_eq!(get(&c, "ok").as_bool(), Some(false), "{bad}");
+        let e = get(&c, "error").as_string().unwrap();
+        assert!(e.contains(want), "{bad}: `{e}` lacks {want}");
+        ts_common::check(&i, "PlanformError", &js_keys(&c));
+    }
+    let big = js_sys::Array::new();
+    for _ in 0..5001 {
+        big.push(&json("[0, 0]"));
+    }
+    let c = wasm::check_planform(big.into()).unwrap();
+    assert!(get(&c, "error").as_string().unwrap().contains("5000"));
+    // Only a non-array throws.
+    assert!(message(wasm::check_planform(JsValue::from_f64(3.0))).contains("points"));
+    assert!(message(wasm::check_planform(json(r#"{"a": 1}"#))).contains("points"));
+    // Parse errors and wingInput errors name the line, format or key.
+    assert!(message(wasm::parse_planform("x_mm,y_mm\n1,2\n3,a\n", "csv")).contains("line 3"));
+    assert!(message(wasm::parse_planform("[]", "xml")).contains("parsePlanform.format"));
+    let m = message(wasm::wing_input(
+        json(r#"{"camber": 0.9}"#),
+        JsValue::UNDEFINED,
+    ));
+    assert!(m.contains("wing.camber") && m.contains("[0, 0.5]"), "{m}");
+    let m = message(wasm::wing_input(
+        json(r#"{"n_mode": 3}"#),
+        JsValue::UNDEFINED,
+    ));
+    assert!(m.contains("wing.n_mode"), "{m}");
+    let m = message(wasm::wing_input(
+        json(r#"{"nu": null}"#),
+        JsValue::UNDEFINED,
+    ));
+    assert!(m.contains("wing.nu"), "{m}");
+    let m = message(wasm::wing_input(JsValue::UNDEFINED, JsValue::from_f64(1.0)));
+    assert!(m.contains("points"), "{m}");
+    let m = message(wasm::wing_input(JsValue::UNDEFINED, json("[[0,0],[1,1]]")));
+    assert!(m.contains("planform"), "{m}");
+    // The default: the table defaults on the default outline.
+    let d = wasm::wing_input(JsValue::UNDEFINED, JsValue::UNDEFINED).unwrap();
+    let d: wingbeat::fem::FemInput = serde_wasm_bindgen::from_value(d).unwrap();
+    assert_eq!(d, wingbeat::params::default_wing().unwrap());
+}
+
+#[wasm_bindgen_test]
+fn kinematics_from_csv_matches_core() {
+    use wingbeat::kinematics_table::{kinematics_from_csv, AngleUnits, CsvKinematicsOptions};
+    let mut text = String::from("t,alpha,gamma\n");
+    for i in 0..80 {
+        let t = i as f64 * 0.04 / 40.0;
+        let th = 2.0 * std::f64::consts::PI * 25.0 * t;
+        text.push_str(&format!(
+            "{t},{},{}\n",
+            45.0 * th.sin(),
+            10.0 * (2.0 * th).cos()
+        ));
+    }
+    let js = wasm::kinematics_from_csv(&text, json(r#"{"units": "deg", "flap_hz": 25}"#)).unwrap();
+    let core = kinematics_from_csv(
+        &text,
+        &CsvKinematicsOptions {
+            units: AngleUnits::Deg,
+            flap_hz: 25.0,
+            max_harmonic: None,
+        },
+    )
+    .unwrap();
+    let k: wingbeat::kinematics::Kinematics =
+        serde_wasm_bindgen::from_value(get(&js, "kinematics")).unwrap();
+    assert_eq!(k, core.kinematics);
+    assert_eq!(f64s(&js, "samples.t"), core.samples.t);
+    assert_eq!(f64s(&js, "samples.alpha"), core.samples.alpha);
+    assert_eq!(f64s(&js, "samples.beta"), vec![0.0; 80]);
+    assert_eq!(num(&js, "n_periods"), 2.0);
+    assert_eq!(get(&js, "method").as_string().as_deref(), Some("grid"));
+    let i = ts_common::interfaces(ts_common::declarations());
+    ts_common::check(&i, "KinematicsTable", &js_keys(&js));
+    ts_common::check(&i, "FoldedSamples", &js_keys(&get(&js, "samples")));
+    // The kinematics drop into a config: anglesAt previews the interpolant through the samples.
+    let cfg = SimConfig {
+        kinematics: k,
+        ..SimConfig::paper()
+    };
+    let at = wasm::angles_at(to_js(&cfg), &[0.01]).unwrap().to_vec();
+    close("alpha(T/4)", at[0], 45f64.to_radians());
+    for (opts, want) in [
+        (
+            r#"{"units": "grad", "flap_hz": 25}"#,
+            "kinematicsFromCsv.units",
+        ),
+        (r#"{"units": "deg", "flap_hz": -1}"#, "flap_hz"),
+        (r#"{"units": "deg"}"#, "flap_hz"),
+        (
+            r#"{"units": "deg", "flap_hz": 25, "max_harmonic": 999}"#,
+            "max_harmonic",
+        ),
+    ] {
+        let m = message(wasm::kinematics_from_csv(&text, json(opts)));
+        assert!(m.contains(want), "{opts}: `{m}` lacks {want}");
+    }
+    let m = message(wasm::kinematics_from_csv(
+        "t,alpha\n0,1\n",
+        json(r#"{"units": "deg", "flap_hz": 25}"#),
+    ));
+    assert!(m.contains("rows"), "{m}");
+    let m = message(wasm::kinematics_from_csv(&text, JsValue::UNDEFINED));
+    assert!(m.contains("kinematicsFromCsv"), "{m}");
+    let l = wasm::limits().unwrap();
+    assert_eq!(num(&l, "max_strain_field_work"), 5e8);
+    ts_common::check(&i, "Limits", &js_keys(&l));
+}
+
+/// feModes' exported document (`modes_json`) read back by modesFromJson: the same modes and
+/// mesh arrays (to the last place: the JSON text round trip), in feModes' layout.
+#[wasm_bindgen_test]
+fn modes_from_json_reads_the_exported_document() {
+    let js = wasm::fe_modes(
+        json(r#"{"n_modes": 2, "mesh_size_mm": 3}"#),
+        Some(0.01),
+        json(r#"{"json": true}"#),
+    )
+    .unwrap();
+    let text = get(&js, "modes_json").as_string().unwrap();
+    let doc = wasm::modes_from_json(&text).unwrap();
+    let i = ts_common::interfaces(ts_common::declarations());
+    ts_common::check(&i, "ModesDocument", &js_keys(&doc));
+    ts_common::check(&i, "ImportedFe", &js_keys(&get(&doc, "fe")));
+    let near = |name: &str, a: f64, b: f64| {
+        assert!(
+            (a - b).abs() <= 4.5e-16 * a.abs().max(b.abs()),
+            "{name}: {a:e} vs {b:e}"
+        );
+    };
+    for k in 0..2 {
+        for p in [
+            "freq_hz",
+            "a.0",
+            "a.1",
+            "zeta",
+            "strains.0.eps_x",
+            "strains.0.gamma_xy",
+        ] {
+            let path = format!("modes.{k}.{p}");
+            near(&path, num(&doc, &path), num(&js, &path));
+        }
+    }
+    for key in ["freq_hz", "nodes", "shapes", "strain_nodes"] {
+        let (a, b) = (f64s(&doc, &format!("fe.{key}")), f64s(&js, key));
+        assert_eq!(a.len(), b.len(), "{key}");
+        for (x, y) in a.iter().zip(&b) {
+            near(key, *x, *y);
+        }
+    }
+    assert_eq!(num(&doc, "fe.n_nodes"), num(&js, "n_nodes"));
+    assert_eq!(num(&doc, "fe.mesh_size_mm"), num(&js, "mesh_size_mm"));
+    let t = |o: &JsValue, p: &str| {
+        get(o, p)
+            .dyn_into::<js_sys::Uint32Array>()
+            .unwrap()
+            .to_vec()
+    };
+    assert_eq!(t(&doc, "fe.triangles"), t(&js, "triangles"));
+    // A plain modes list has no `fe`; damaged documents name the part.
+    let plain = wasm::modes_from_json(r#"{"modes": [{"freq_hz": 60, "a": [1e-4, 0]}]}"#).unwrap();
+    assert!(get(&plain, "fe").is_undefined());
+    assert_eq!(num(&plain, "modes.0.freq_hz"), 60.0);
+    let m = message(wasm::modes_from_json("{"));
+    assert!(m.contains("modes JSON"), "{m}");
+    let m = message(wasm::modes_from_json(
+        r#"{"modes": [{"freq_hz": -1, "a": [0, 0]}]}"#,
+    ));
+    assert!(m.contains("modes[0].freq_hz"), "{m}");
+    let broken = text.replacen("\"triangles\":[[", "\"triangles\":[[9999999,", 1);
+    let m = message(wasm::modes_from_json(&broken));
+    assert!(m.contains("modes JSON: fe"), "{m}");
+}

@@ -1,6 +1,11 @@
 //! Strain at named points (paper Eqs. 16–18): ε(x, y, t) = Σ_k ε_k(x, y) q_k(t), for each of
 //! ε_x, ε_y and γ_xy, using each mode's modal strain at the point and its total response.
+//!
+//! Also the modal strain anywhere on an FE mesh ([`modal_strains_at`]: the interpolation the
+//! FE modes use for their strain points) and whole-wing strain maps ([`strain_field`]: RMS or
+//! peak of a strain component at every node over a run).
 
+use crate::error::{Result, WingbeatError};
 use crate::model::Mode;
 use serde::{Deserialize, Serialize};
 
@@ -55,4 +60,280 @@ pub fn strain_series(modes: &[Mode], totals: &[&[f64]]) -> Vec<StrainSeries> {
 /// Peak absolute value of a series.
 pub fn peak_abs(x: &[f64]) -> f64 {
     x.iter().fold(0.0, |m, v| m.max(v.abs()))
+}
+
+/// Locates (x, y) in mm on a triangle mesh whose node coordinates are in m: the triangle,
+/// its barycentric weights and whether the point is inside (within 1e-9 in the weights).
+/// A point outside maps to the nearest triangle (in the weights' sense) with clamped,
+/// renormalised weights. `None` for a mesh without a non-degenerate triangle.
+pub fn locate_in_mesh(
+    nodes: &[[f64; 3]],
+    triangles: &[[usize; 3]],
+    x_mm: f64,
+    y_mm: f64,
+) -> Option<(usize, [f64; 3], bool)> {
+    let (x, y) = (x_mm * 1e-3, y_mm * 1e-3);
+    let mut best: Option<(usize, [f64; 3], f64)> = None;
+    for (ti, t) in triangles.iter().enumerate() {
+        let (a, b, c) = (nodes[t[0]], nodes[t[1]], nodes[t[2]]);
+        let det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+        if det == 0.0 {
+            continue;
+        }
+        let l1 = ((b[0] - x) * (c[1] - y) - (c[0] - x) * (b[1] - y)) / det;
+        let l2 = ((c[0] - x) * (a[1] - y) - (a[0] - x) * (c[1] - y)) / det;
+        let l3 = 1.0 - l1 - l2;
+        let out = (-l1).max(-l2).max(-l3).max(0.0);
+        if best.is_none_or(|bst| out < bst.2) {
+            best = Some((ti, [l1, l2, l3], out));
+        }
+        if out == 0.0 {
+            break;
+        }
+    }
+    best.map(|(ti, l, out)| {
+        let mut lc = l.map(|v| v.max(0.0));
+        let s: f64 = lc.iter().sum();
+        lc.iter_mut().for_each(|v| *v /= s);
+        (ti, lc, out <= 1e-9)
+    })
+}
+
+/// The linear interpolation of nodal strains `strain(mode, node)` in triangle `t` with
+/// barycentric weights `l`.
+pub fn interpolate_strain(
+    t: [usize; 3],
+    l: [f64; 3],
+    mode: usize,
+    strain: impl Fn(usize, usize) -> [f64; 3],
+) -> [f64; 3] {
+    let mut e = [0.0; 3];
+    for c in 0..3 {
+        let s = strain(mode, t[c]);
+        for (k, ek) in e.iter_mut().enumerate() {
+            *ek += l[c] * s[k];
+        }
+    }
+    e
+}
+
+/// Top-surface modal strain [ε_x, ε_y, γ_xy] per unit q of each of `n_modes` modes at
+/// (x, y) in mm, linearly interpolated from the nodal strains `strain(mode, node)` of a
+/// triangle mesh (nodes in m): the modal strains of Eqs. 16–18 at any point of the wing.
+///
+/// Errors (naming `point`): a non-finite coordinate, or a point outside the meshed planform
+/// (the allowed text gives the mesh's extent in mm). The caller checks that the triangles'
+/// node indices are in range.
+pub fn modal_strains_at(
+    nodes: &[[f64; 3]],
+    triangles: &[[usize; 3]],
+    n_modes: usize,
+    strain: impl Fn(usize, usize) -> [f64; 3],
+    x_mm: f64,
+    y_mm: f64,
+) -> Result<Vec<[f64; 3]>> {
+    if !(x_mm.is_finite() && y_mm.is_finite()) {
+        return Err(WingbeatError::invalid(
+            "point",
+            format!("({x_mm}, {y_mm})"),
+            "finite coordinates, mm",
+        ));
+    }
+    match locate_in_mesh(nodes, triangles, x_mm, y_mm) {
+        Some((ti, l, true)) => Ok((0..n_modes)
+            .map(|k| interpolate_strain(triangles[ti], l, k, &strain))
+            .collect()),
+        _ => {
+            let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+            for p in nodes {
+                for k in 0..2 {
+                    lo[k] = lo[k].min(p[k] * 1e3);
+                    hi[k] = hi[k].max(p[k] * 1e3);
+                }
+            }
+            Err(WingbeatError::invalid(
+                "point",
+                format!("({x_mm}, {y_mm}) mm"),
+                format!(
+                    "a point inside the meshed planform (x in [{:.3}, {:.3}] mm, y in [{:.3}, {:.3}] mm)",
+                    lo[0], hi[0], lo[1], hi[1]
+                ),
+            ))
+        }
+    }
+}
+
+/// Which strain a whole-wing map shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum StrainComponent {
+    /// ε_x (spanwise).
+    EpsX,
+    /// ε_y (chordwise).
+    EpsY,
+    /// γ_xy (engineering shear strain).
+    GammaXy,
+    /// The von Mises equivalent of the in-plane strain, the plane-stress von Mises formula
+    /// applied to the strain components: ε_vm = √(ε_x² − ε_x ε_y + ε_y² + 3 (γ_xy / 2)²).
+    #[default]
+    VonMises,
+}
+
+/// Which statistic over the run a whole-wing map shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StrainStat {
+    /// Root mean square over the samples, exact from the modal covariance.
+    Rms,
+    /// Largest absolute value (for von Mises: largest value) over the samples.
+    Peak,
+}
+
+/// Options of [`strain_field`].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StrainFieldOptions {
+    /// The strain shown (default: von Mises).
+    #[serde(default)]
+    pub component: StrainComponent,
+    /// RMS or peak.
+    pub stat: StrainStat,
+}
+
+/// Most work a peak map may take: nodes × samples × modes multiply-adds (about half a
+/// second in the browser). RMS maps cost samples × modes² + nodes × modes² and are not capped.
+pub const MAX_STRAIN_FIELD_WORK: f64 = 5.0e8;
+
+/// ε_vm² as a quadratic form in (ε_x, ε_y, γ_xy): ε_x² − ε_x ε_y + ε_y² + ¾ γ_xy².
+fn von_mises_sq(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] - 0.5 * (a[0] * b[1] + a[1] * b[0]) + a[1] * b[1] + 0.75 * a[2] * b[2]
+}
+
+/// A whole-wing strain map: per node, the RMS or peak over the samples of a strain
+/// component of ε(t) = Σ_k ε_k q_k(t), where `strain(mode, node)` is the nodal modal strain
+/// [ε_x, ε_y, γ_xy] per unit q and `qs[k]` the modal response q_k on one time grid.
+///
+/// RMS: with the modal covariance C_kl = (1/N) Σ_t q_k(t) q_l(t), the mean square of a
+/// linear component e = Σ_k e_k q_k is Σ_kl e_k C_kl e_l, and that of ε_vm² (a quadratic
+/// form Q in the strain) is Σ_kl C_kl ε_kᵀ Q ε_l: the same number as averaging over the
+/// samples, without the per-node time loop. Peak: max over every sample, capped by
+/// [`MAX_STRAIN_FIELD_WORK`] (an error names the cap; pass every m-th sample to stay
+/// under it).
+///
+/// Errors: `qs` not one series per mode, series of different or zero length, more than
+/// [`crate::config::MAX_SAMPLES`] samples, a non-finite sample (named `qs[k][i]`).
+pub fn strain_field(
+    n_nodes: usize,
+    n_modes: usize,
+    strain: impl Fn(usize, usize) -> [f64; 3],
+    qs: &[&[f64]],
+    opts: &StrainFieldOptions,
+) -> Result<Vec<f64>> {
+    if qs.len() != n_modes {
+        return Err(WingbeatError::invalid(
+            "qs",
+            format!("{} series", qs.len()),
+            format!("one series per mode ({n_modes})"),
+        ));
+    }
+    let n = qs.first().map_or(0, |q| q.len());
+    if n == 0 || n > crate::config::MAX_SAMPLES {
+        return Err(WingbeatError::invalid(
+            "qs[0]",
+            format!("{n} samples"),
+            format!("1 to {} samples", crate::config::MAX_SAMPLES),
+        ));
+    }
+    for (k, q) in qs.iter().enumerate() {
+        if q.len() != n {
+            return Err(WingbeatError::invalid(
+                format!("qs[{k}]"),
+                format!("{} samples", q.len()),
+                format!("{n} samples, as qs[0]"),
+            ));
+        }
+        if let Some(i) = q.iter().position(|v| !v.is_finite()) {
+            return Err(WingbeatError::invalid(
+                format!("qs[{k}][{i}]"),
+                q[i],
+                "finite numbers",
+            ));
+        }
+    }
+    // The index of a linear component (unused for von Mises).
+    let ci = match opts.component {
+        StrainComponent::EpsX | StrainComponent::VonMises => 0,
+        StrainComponent::EpsY => 1,
+        StrainComponent::GammaXy => 2,
+    };
+    let vm = opts.component == StrainComponent::VonMises;
+    match opts.stat {
+        StrainStat::Rms => {
+            let nf = n as f64;
+            let mut c = vec![0.0; n_modes * n_modes];
+            for k in 0..n_modes {
+                for l in 0..=k {
+                    let s: f64 = qs[k].iter().zip(qs[l]).map(|(a, b)| a * b).sum::<f64>() / nf;
+                    c[k * n_modes + l] = s;
+                    c[l * n_modes + k] = s;
+                }
+            }
+            Ok((0..n_nodes)
+                .map(|i| {
+                    let e: Vec<[f64; 3]> = (0..n_modes).map(|k| strain(k, i)).collect();
+                    let mut ms = 0.0;
+                    for k in 0..n_modes {
+                        for l in 0..n_modes {
+                            let w = if vm {
+                                von_mises_sq(e[k], e[l])
+                            } else {
+                                e[k][ci] * e[l][ci]
+                            };
+                            ms += c[k * n_modes + l] * w;
+                        }
+                    }
+                    ms.max(0.0).sqrt()
+                })
+                .collect())
+        }
+        StrainStat::Peak => {
+            let work = n_nodes as f64 * n as f64 * n_modes as f64;
+            if work > MAX_STRAIN_FIELD_WORK {
+                return Err(WingbeatError::ResourceCap {
+                    field: "nodes × samples × modes (strain peak map)".into(),
+                    requested: format!("{n_nodes} × {n} × {n_modes} = {work:.3e}"),
+                    cap: format!("{MAX_STRAIN_FIELD_WORK:e}"),
+                    why: "the peak visits every sample at every node; pass every m-th sample"
+                        .into(),
+                });
+            }
+            let mut out = vec![0.0; n_nodes];
+            let mut e = vec![[0.0; 3]; n_modes];
+            for (i, o) in out.iter_mut().enumerate() {
+                for (k, ek) in e.iter_mut().enumerate() {
+                    *ek = strain(k, i);
+                }
+                let mut peak: f64 = 0.0;
+                if vm {
+                    for t in 0..n {
+                        let mut s = [0.0; 3];
+                        for k in 0..n_modes {
+                            let q = qs[k][t];
+                            for c in 0..3 {
+                                s[c] += e[k][c] * q;
+                            }
+                        }
+                        peak = peak.max(von_mises_sq(s, s).max(0.0).sqrt());
+                    }
+                } else {
+                    for t in 0..n {
+                        let s: f64 = (0..n_modes).map(|k| e[k][ci] * qs[k][t]).sum();
+                        peak = peak.max(s.abs());
+                    }
+                }
+                *o = peak;
+            }
+            Ok(out)
+        }
+    }
 }

@@ -5,13 +5,14 @@ mod modes;
 mod render;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use serde_json::{json, Value};
+use serde_json::json;
 use wingbeat::analysis::ic_map::{ic_map, IcAttribution, IcMapOptions};
 use wingbeat::analysis::psd::{welch, Detrend, WelchOptions};
 use wingbeat::analysis::spectra::mode_spectra;
 use wingbeat::analysis::sweep::{apply, sweep, SweepOptions, SweepParam};
 use wingbeat::config::SimConfig;
-use wingbeat::model::Mode;
+use wingbeat::kinematics_table::{kinematics_from_csv, AngleUnits, CsvKinematicsOptions};
+use wingbeat::modes_doc::modes_from_json;
 use wingbeat::simulate::{force_series, simulate, SimResult};
 use wingbeat::{Result, WingbeatError};
 
@@ -141,6 +142,23 @@ struct SimInput {
     /// data.
     #[arg(long, value_name = "FILE")]
     config: Option<std::path::PathBuf>,
+    /// Measured kinematics: a CSV table with a header naming `t` (s) and any of `alpha`,
+    /// `beta`, `gamma` (a missing angle is 0; names may end in `_deg`/`_rad`, matching
+    /// --kinematics-units), one row per sample, t strictly increasing over one or more whole
+    /// flap periods (1 / --flap-hz, or the config's flap frequency). The samples are folded
+    /// onto one period (t mod T). On a uniform grid aligned with t = 0 mod T they are averaged
+    /// point by point over the periods into sampled angles (the same as a config with
+    /// `{"kind": "sampled", "values": [...]}`); otherwise a least-squares Fourier series
+    /// (--kinematics-max-harmonic harmonics, default up to 32) is fitted and sampled. Replaces
+    /// the config's kinematics; the lab's "load kinematics" does exactly the same.
+    #[arg(long, value_name = "FILE")]
+    kinematics_csv: Option<std::path::PathBuf>,
+    /// Units of the angle columns of --kinematics-csv: deg or rad (required with it).
+    #[arg(long, value_name = "deg|rad")]
+    kinematics_units: Option<String>,
+    /// Highest harmonic kept from --kinematics-csv (a low-pass for noisy measurements).
+    #[arg(long, value_name = "H")]
+    kinematics_max_harmonic: Option<u32>,
     /// Replace the modes by those in a JSON file: the output of `wingbeat modes` (FE) or
     /// `{"modes": [{"freq_hz":…, "a":[x,y], …}]}`.
     #[arg(long, value_name = "FILE")]
@@ -308,60 +326,6 @@ fn read_file(path: &std::path::Path) -> Result<String> {
     })
 }
 
-/// Reads modes from `wingbeat modes` output or a `{"modes": [...]}` document.
-fn modes_from_json(text: &str, what: &str) -> Result<Vec<Mode>> {
-    let v: Value = serde_json::from_str(text).map_err(|e| WingbeatError::Parse {
-        what: what.into(),
-        message: e.to_string(),
-    })?;
-    if let Some(m) = v.get("modes") {
-        return serde_json::from_value(m.clone()).map_err(|e| WingbeatError::Parse {
-            what: format!("{what}: modes"),
-            message: e.to_string(),
-        });
-    }
-    let freqs: Vec<f64> = v
-        .get("freq_hz")
-        .and_then(|f| serde_json::from_value(f.clone()).ok())
-        .ok_or_else(|| WingbeatError::Parse {
-            what: what.into(),
-            message: "expected `modes` or `freq_hz` + `a` arrays".into(),
-        })?;
-    let a: Vec<[f64; 2]> = v
-        .get("a")
-        .and_then(|f| serde_json::from_value(f.clone()).ok())
-        .ok_or_else(|| WingbeatError::Parse {
-            what: what.into(),
-            message: "missing `a` array of [x, y]".into(),
-        })?;
-    if a.len() != freqs.len() {
-        return Err(WingbeatError::Parse {
-            what: what.into(),
-            message: format!("{} frequencies but {} a-vectors", freqs.len(), a.len()),
-        });
-    }
-    let kinds: Vec<String> = v
-        .get("kinds")
-        .and_then(|k| serde_json::from_value(k.clone()).ok())
-        .unwrap_or_default();
-    Ok(freqs
-        .iter()
-        .zip(&a)
-        .enumerate()
-        .map(|(k, (f, a))| Mode {
-            name: format!(
-                "{}: {}",
-                k + 1,
-                kinds.get(k).map(String::as_str).unwrap_or("FE mode")
-            ),
-            freq_hz: *f,
-            a: *a,
-            zeta: 0.0,
-            strains: vec![],
-        })
-        .collect())
-}
-
 fn build_config(inp: &SimInput) -> Result<SimConfig> {
     let preset = match inp.preset.as_str() {
         "paper" => None,
@@ -392,6 +356,37 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
     }
     if let Some(p) = &inp.modes {
         cfg.modes = modes_from_json(&read_file(p)?, &p.display().to_string())?;
+    }
+    if let Some(p) = &inp.kinematics_csv {
+        let units = inp.kinematics_units.as_deref().ok_or_else(|| {
+            WingbeatError::invalid(
+                "--kinematics-units",
+                "missing",
+                "deg or rad (required with --kinematics-csv)",
+            )
+        })?;
+        let opts = CsvKinematicsOptions {
+            units: AngleUnits::parse("--kinematics-units", units)?,
+            flap_hz: inp.flap_hz.unwrap_or(cfg.kinematics.flap_freq_hz),
+            max_harmonic: inp.kinematics_max_harmonic,
+        };
+        let table = kinematics_from_csv(&read_file(p)?, &opts).map_err(|e| match e {
+            WingbeatError::Parse { message, .. } => WingbeatError::Parse {
+                what: p.display().to_string(),
+                message,
+            },
+            other => other,
+        })?;
+        for w in &table.warnings {
+            eprintln!("kinematics: {w}");
+        }
+        cfg.kinematics = table.kinematics;
+    } else if inp.kinematics_units.is_some() || inp.kinematics_max_harmonic.is_some() {
+        return Err(WingbeatError::invalid(
+            "--kinematics-units/--kinematics-max-harmonic",
+            "given without a table",
+            "only together with --kinematics-csv FILE",
+        ));
     }
     for (flag, param, v) in [
         ("--alpha0", SweepParam::Alpha0, inp.alpha0),

@@ -308,3 +308,137 @@ pub fn camber_height(outline: &[[f64; 2]], camber: f64, x: f64, y: f64) -> f64 {
     let s = (r * r - d * d).max(0.0).sqrt() - (r - h);
     s.max(0.0)
 }
+
+// ---- Built-in outlines (the lab's planform picker) ----
+
+/// A built-in planform: an identifier, a label that says it is synthetic, a provenance note
+/// and the outline in mm (counter-clockwise, root edge on x = 0, chord toward −y).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct BuiltinPlanform {
+    /// Identifier (`manduca`, `slender`, `broad`, `rect`).
+    pub id: &'static str,
+    /// Human label, including the word "synthetic".
+    pub label: &'static str,
+    /// Provenance note (copied into `FemInput.planform_note` when used).
+    pub note: &'static str,
+    /// Outline, mm.
+    pub points_mm: Vec<[f64; 2]>,
+}
+
+/// An outline with a straight leading edge on y = 0 from the root (0, 0) to the tip
+/// (`span`, 0) and a trailing edge y = −c(x) given by the superellipse
+/// (x / span)^p + (c / root_chord)^p = 1, sampled at `n` points from the root to the tip
+/// (denser near the tip), coordinates rounded to 0.1 µm. The root edge is x = 0 from
+/// (0, −root_chord) to (0, 0).
+fn superellipse_wing(span: f64, root_chord: f64, p: f64, n: usize, n_le: usize) -> Vec<[f64; 2]> {
+    let round = |v: f64| (v * 1e4).round() / 1e4;
+    let mut pts = Vec::with_capacity(n + n_le + 1);
+    for i in 0..n {
+        let th = std::f64::consts::FRAC_PI_2 * i as f64 / (n - 1) as f64;
+        let (s, c) = th.sin_cos();
+        let x = span * s.powf(2.0 / p);
+        let y = -root_chord * c.powf(2.0 / p);
+        pts.push([round(x), round(y)]);
+    }
+    // Back along the leading edge, from just inside the tip to the root.
+    for j in 1..=n_le {
+        let x = span * (1.0 - j as f64 / n_le as f64);
+        pts.push([round(x), 0.0]);
+    }
+    pts
+}
+
+/// Provenance note of the `slender` outline.
+pub const SLENDER_NOTE: &str = "synthetic slender wing: straight leading edge, elliptic \
+trailing edge, span 45 mm, root chord 9 mm (aspect ratio 6.4); not a measured wing";
+/// Provenance note of the `broad` outline.
+pub const BROAD_NOTE: &str = "synthetic broad wing: straight leading edge, superellipse \
+(power 3) trailing edge, span 30 mm, root chord 20 mm (aspect ratio 1.7); not a measured wing";
+/// Provenance note of the `rect` outline.
+pub const RECT_NOTE: &str = "synthetic rectangular plate 40 mm × 10 mm, root edge on x = 0";
+
+/// The built-in outlines, the default first: `manduca` (the synthetic Manduca-like forewing,
+/// [`manduca_planform`]), `slender`, `broad` and `rect`. All are synthetic, have a root edge
+/// on x = 0 (so [`crate::fem::Clamp::Root`] applies) and contain the paper's strain point
+/// P = (3, −6) mm; `tests/lab_api.rs` meshes and solves each one.
+pub fn builtin_planforms() -> Vec<BuiltinPlanform> {
+    vec![
+        BuiltinPlanform {
+            id: "manduca",
+            label: "Manduca-like forewing (synthetic)",
+            note: MANDUCA_NOTE,
+            points_mm: manduca_planform(),
+        },
+        BuiltinPlanform {
+            id: "slender",
+            label: "Slender elliptic wing (synthetic)",
+            note: SLENDER_NOTE,
+            points_mm: superellipse_wing(45.0, 9.0, 2.0, 17, 6),
+        },
+        BuiltinPlanform {
+            id: "broad",
+            label: "Broad wing (synthetic)",
+            note: BROAD_NOTE,
+            points_mm: superellipse_wing(30.0, 20.0, 3.0, 17, 5),
+        },
+        BuiltinPlanform {
+            id: "rect",
+            label: "Rectangular plate 40 × 10 mm (synthetic)",
+            note: RECT_NOTE,
+            points_mm: rectangle_planform(40.0, 10.0),
+        },
+    ]
+}
+
+/// What the lab shows about an outline while it is edited.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct OutlineSummary {
+    /// Area, mm².
+    pub area_mm2: f64,
+    /// Spanwise extent max x − min x, mm.
+    pub span_mm: f64,
+    /// Chordwise extent max y − min y, mm.
+    pub chord_mm: f64,
+    /// Number of distinct points (after dropping repeats and a closing copy).
+    pub n_points: usize,
+    /// Whether an edge lies on x = 0 (the root edge that the root clamp holds).
+    pub root_edge: bool,
+}
+
+/// Validates `points` ([`validate_outline`]) and summarises the outline.
+pub fn outline_summary(points: &[[f64; 2]]) -> Result<OutlineSummary> {
+    let p = validate_outline(points)?;
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in &p {
+        for k in 0..2 {
+            lo[k] = lo[k].min(q[k]);
+            hi[k] = hi[k].max(q[k]);
+        }
+    }
+    let scale = p
+        .iter()
+        .map(|q| q[0].abs().max(q[1].abs()))
+        .fold(0.0, f64::max);
+    let tol = 1e-9 * scale.max(1e-300);
+    let n = p.len();
+    let root_edge = (0..n).any(|i| p[i][0].abs() <= tol && p[(i + 1) % n][0].abs() <= tol);
+    Ok(OutlineSummary {
+        area_mm2: signed_area(&p),
+        span_mm: hi[0] - lo[0],
+        chord_mm: hi[1] - lo[1],
+        n_points: n,
+        root_edge,
+    })
+}
+
+/// The provenance note for an outline: a built-in's note when `points` are exactly that
+/// built-in's outline, else `user outline (N points)`.
+pub fn planform_note_for(points: &[[f64; 2]]) -> String {
+    builtin_planforms()
+        .into_iter()
+        .find(|b| b.points_mm == points)
+        .map_or_else(
+            || format!("user outline ({} points)", points.len()),
+            |b| b.note.to_string(),
+        )
+}

@@ -119,6 +119,83 @@ pub fn opt_or_nan(v: Option<f64>) -> f64 {
     v.unwrap_or(f64::NAN)
 }
 
+/// The mode count a caller passed as a JS number: an integer in [1, MAX_MODES].
+pub fn check_mode_count(field: &str, n_modes: f64) -> Result<usize> {
+    let max = crate::model::MAX_MODES;
+    if !(n_modes.is_finite() && n_modes.fract() == 0.0 && n_modes >= 1.0 && n_modes <= max as f64) {
+        return Err(WingbeatError::invalid(
+            field,
+            n_modes,
+            format!("an integer in [1, {max}]"),
+        ));
+    }
+    Ok(n_modes as usize)
+}
+
+/// Checks the flat nodal strain array of `feModes` (`strain_nodes[(k·n_nodes + i)·3 + c]`)
+/// against the mode count and returns the node count.
+pub fn check_strain_nodes(strain_nodes: &[f64], n_modes: usize) -> Result<usize> {
+    let per = 3 * n_modes;
+    if strain_nodes.is_empty() || strain_nodes.len() % per != 0 {
+        return Err(WingbeatError::invalid(
+            "strain_nodes",
+            format!("{} values", strain_nodes.len()),
+            format!("3 values per node per mode: a non-zero multiple of 3 × {n_modes}"),
+        ));
+    }
+    if let Some(i) = strain_nodes.iter().position(|v| !v.is_finite()) {
+        return Err(WingbeatError::invalid(
+            format!("strain_nodes[{i}]"),
+            strain_nodes[i],
+            "finite numbers",
+        ));
+    }
+    Ok(strain_nodes.len() / per)
+}
+
+/// Node positions (m) and triangles (node indices) of a mesh.
+pub type FlatMesh = (Vec<[f64; 3]>, Vec<[usize; 3]>);
+
+/// The flat mesh arrays of `feModes` (`nodes`: x, y, z per node in m; `triangles`: three node
+/// indices each) as the core's node and triangle lists, every index checked against the node
+/// count `n_nodes` (which the nodal strains fix).
+pub fn mesh_from_flat(nodes: &[f64], triangles: &[u32], n_nodes: usize) -> Result<FlatMesh> {
+    if nodes.len() != 3 * n_nodes {
+        return Err(WingbeatError::invalid(
+            "nodes",
+            format!("{} values", nodes.len()),
+            format!("x, y, z per node: 3 × {n_nodes} values (the nodes of strain_nodes)"),
+        ));
+    }
+    if let Some(i) = nodes.iter().position(|v| !v.is_finite()) {
+        return Err(WingbeatError::invalid(
+            format!("nodes[{i}]"),
+            nodes[i],
+            "finite coordinates, m",
+        ));
+    }
+    if triangles.is_empty() || triangles.len() % 3 != 0 {
+        return Err(WingbeatError::invalid(
+            "triangles",
+            format!("{} indices", triangles.len()),
+            "three node indices per triangle, at least one triangle",
+        ));
+    }
+    if let Some(i) = triangles.iter().position(|&t| t as usize >= n_nodes) {
+        return Err(WingbeatError::invalid(
+            format!("triangles[{i}]"),
+            triangles[i],
+            format!("a node index in [0, {}]", n_nodes - 1),
+        ));
+    }
+    let p = nodes.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
+    let t = triangles
+        .chunks_exact(3)
+        .map(|c| [c[0] as usize, c[1] as usize, c[2] as usize])
+        .collect();
+    Ok((p, t))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -183,6 +260,31 @@ mod tests {
         assert_eq!(&e[..1000], &core[..]);
         assert_eq!(e[1000], core[999]);
         assert!(fast_envelope(&[]).is_empty());
+    }
+
+    #[test]
+    fn flat_mesh_checks_name_the_array() {
+        assert_eq!(check_mode_count("n_modes", 3.0).unwrap(), 3);
+        for bad in [0.0, 2.5, f64::NAN, 65.0] {
+            let e = check_mode_count("n_modes", bad).unwrap_err().to_string();
+            assert!(e.contains("n_modes") && e.contains("[1, 64]"), "{e}");
+        }
+        assert_eq!(check_strain_nodes(&[0.0; 12], 2).unwrap(), 2);
+        assert!(check_strain_nodes(&[0.0; 10], 2).is_err());
+        let e = check_strain_nodes(&[0.0, f64::NAN, 0.0], 1)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("strain_nodes[1]"), "{e}");
+        let nodes = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+        let (p, t) = mesh_from_flat(&nodes, &[0, 1, 2], 3).unwrap();
+        assert_eq!(p[1], [1.0, 0.0, 0.0]);
+        assert_eq!(t, vec![[0, 1, 2]]);
+        let e = mesh_from_flat(&nodes, &[0, 1, 3], 3)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("triangles[2]") && e.contains("[0, 2]"), "{e}");
+        assert!(mesh_from_flat(&nodes, &[0, 1], 3).is_err());
+        assert!(mesh_from_flat(&nodes[..6], &[0, 1, 2], 3).is_err());
     }
 
     #[test]

@@ -30,11 +30,16 @@ pub(crate) fn from_js<T: DeserializeOwned + Default>(v: JsValue, what: &str) -> 
 }
 
 pub(crate) fn parse_js<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T, JsError> {
+    parse_js_text(v, what).map_err(|m| JsError::new(&m))
+}
+
+/// [`parse_js`] with the error as a plain message (for results that report rather than throw).
+pub(crate) fn parse_js_text<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T, String> {
     let text: String = js_sys::JSON::stringify(&v)
         .map_err(|_| {
-            JsError::new(&format!(
+            format!(
                 "invalid value for `{what}`: not JSON-serialisable (cyclic, BigInt or a throwing getter)"
-            ))
+            )
         })?
         .into();
     let mut de = serde_json::Deserializer::from_str(&text);
@@ -51,7 +56,7 @@ pub(crate) fn parse_js<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T,
         } else {
             ""
         };
-        JsError::new(&format!("invalid value for `{place}`: {inner}{hint}"))
+        format!("invalid value for `{place}`: {inner}{hint}")
     })
 }
 
@@ -183,4 +188,32 @@ pub(crate) fn spectrum_js(s: &Spectrum) -> Result<JsValue, JsError> {
     set(&o, "psd", &f64a(&s.psd))?;
     set(&o, "peaks", &to_js(&s.peaks)?)?;
     Ok(o.into())
+}
+
+/// Sets the long arrays of an FE result on `o`, in `feModes`' layout: `freq_hz`, `residuals`,
+/// `nodes` (x, y, z per node, m), `triangles` (`Uint32Array`), `shapes` (mode-major) and
+/// `strain_nodes` (`[(k·n_nodes + i)·3 + c]`).
+pub(crate) fn fe_arrays_js(o: &Object, fe: &crate::fem::FemModes) -> Result<(), JsError> {
+    set(o, "freq_hz", &f64a(&fe.freq_hz))?;
+    set(o, "residuals", &f64a(&fe.residuals))?;
+    let nodes: Vec<f64> = fe.nodes.iter().flatten().copied().collect();
+    set(o, "nodes", &f64a(&nodes))?;
+    let tris: Vec<u32> = fe
+        .triangles
+        .iter()
+        .flatten()
+        .map(|&i| u32::try_from(i).unwrap_or(u32::MAX))
+        .collect();
+    set(o, "triangles", &js_sys::Uint32Array::from(&tris[..]).into())?;
+    let shapes: Vec<f64> = fe.shapes.iter().flatten().copied().collect();
+    set(o, "shapes", &f64a(&shapes))?;
+    let strains: Vec<f64> = fe
+        .strain_nodes
+        .iter()
+        .flatten()
+        .flatten()
+        .copied()
+        .collect();
+    set(o, "strain_nodes", &f64a(&strains))?;
+    Ok(())
 }

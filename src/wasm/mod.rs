@@ -9,10 +9,13 @@
 //!
 //! * [`marshal`]: JS values in and out (the seam itself);
 //! * [`sim`]: configs, limits, the lab's `parameters` and `applyOverrides`, `simulate`,
-//!   `forceSeries`, `anglesAt`, `reproduce`;
+//!   `forceSeries`, `anglesAt`, `kinematicsFromCsv`, `reproduce`;
 //! * [`analysis`]: `psd`, `spectra`, `analyze`, `envelope`, `decimateMinMax`, `sweep`, `icMap`,
 //!   `resonanceMap`;
 //! * [`fe`]: `feModes`, the shell finite elements;
+//! * [`wing`]: the lab's own wing: `planforms`, `parsePlanform`, `checkPlanform`,
+//!   `wingParameters`, `materialPresets`, `wingInput`, `modalStrainAt`, `strainField`,
+//!   `modesFromJson`;
 //! * `view` (wasm32 with feature `render`): `WingView`, the 3-D view of the flexing wing;
 //! * [`types`]: the TypeScript declarations of all of the above;
 //! * [`helpers`]: plain-Rust helpers (web caps, decimation, ...) tested natively.
@@ -32,14 +35,19 @@ pub mod sim;
 pub mod types;
 #[cfg(all(feature = "render", target_arch = "wasm32"))]
 pub mod view;
+pub mod wing;
 
 pub use analysis::{
     analyze, decimate_min_max, envelope, ic_map, psd, resonance_map, spectra, sweep,
 };
 pub use fe::fe_modes;
 pub use sim::{
-    angles_at, apply_overrides, default_config, force_series, limits, parameters, reproduce,
-    reproduce_text, simulate, validate_config,
+    angles_at, apply_overrides, default_config, force_series, kinematics_from_csv, limits,
+    parameters, reproduce, reproduce_text, simulate, validate_config,
+};
+pub use wing::{
+    check_planform, material_presets, modal_strain_at, modes_from_json, parse_planform, planforms,
+    strain_field, wing_input, wing_parameters,
 };
 
 use wasm_bindgen::prelude::*;

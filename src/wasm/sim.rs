@@ -41,6 +41,8 @@ pub fn limits() -> Result<JsValue, JsError> {
         max_resonance_points: usize,
         max_resonance_alpha0_values: usize,
         max_resonance_work: f64,
+        max_strain_field_work: f64,
+        max_outline_points: usize,
     }
     to_js(&Limits {
         max_duration_s: crate::config::MAX_DURATION_S,
@@ -53,6 +55,8 @@ pub fn limits() -> Result<JsValue, JsError> {
         max_resonance_points: crate::analysis::resonance::MAX_POINTS,
         max_resonance_alpha0_values: crate::analysis::resonance::MAX_ALPHA0_VALUES,
         max_resonance_work: crate::analysis::resonance::MAX_WORK,
+        max_strain_field_work: crate::analysis::strain::MAX_STRAIN_FIELD_WORK,
+        max_outline_points: crate::fem::geometry::MAX_OUTLINE_POINTS,
     })
 }
 
@@ -147,4 +151,54 @@ pub fn apply_overrides(
     let c = core_apply_overrides(&base, o.iter().map(|(k, v)| (k.as_str(), *v))).map_err(err)?;
     helpers::check_web_caps(&c).map_err(err)?;
     to_js(&c)
+}
+
+/// Measured kinematics from a CSV table (core `kinematics_table::kinematics_from_csv`, the
+/// same function as `wingbeat simulate --kinematics-csv`): a header naming `t` (s) and any of
+/// `alpha`, `beta`, `gamma` (missing = 0; optional `_deg`/`_rad` suffix matching `units`),
+/// strictly increasing t over one or more whole flap periods. `opts`: `{ units: "deg" |
+/// "rad", flap_hz, max_harmonic? }`. Returns `{ kinematics, samples: { t, alpha, beta, gamma }
+/// (the file's samples folded onto one period, s and rad, file order), n_periods, method
+/// ("grid" | "least_squares"), grid_points, max_harmonic, warnings }`; `kinematics` goes into
+/// a `SimConfig` as it is, and `anglesAt` previews its periodic interpolant. Throws naming the
+/// column, line or option.
+#[wasm_bindgen(js_name = kinematicsFromCsv, unchecked_return_type = "KinematicsTable")]
+pub fn kinematics_from_csv(
+    text: &str,
+    #[wasm_bindgen(unchecked_param_type = "CsvKinematicsOptions")] opts: JsValue,
+) -> Result<JsValue, JsError> {
+    use crate::kinematics_table::{kinematics_from_csv as core_from_csv, CsvKinematicsOptions};
+    let opts: CsvKinematicsOptions = super::marshal::required_js(
+        opts,
+        "kinematicsFromCsv",
+        "{ units: \"deg\" | \"rad\", flap_hz, max_harmonic? }",
+    )?;
+    let r = core_from_csv(text, &opts).map_err(err)?;
+    #[derive(Serialize)]
+    struct Meta<'a> {
+        kinematics: &'a crate::kinematics::Kinematics,
+        n_periods: f64,
+        method: crate::kinematics_table::TableMethod,
+        grid_points: usize,
+        max_harmonic: u32,
+        warnings: &'a [String],
+    }
+    let o: js_sys::Object = to_js(&Meta {
+        kinematics: &r.kinematics,
+        n_periods: r.n_periods,
+        method: r.method,
+        grid_points: r.grid_points,
+        max_harmonic: r.max_harmonic,
+        warnings: &r.warnings,
+    })?
+    .unchecked_into();
+    let s = &r.samples;
+    let samples = obj_with(&[
+        ("t", &s.t),
+        ("alpha", &s.alpha),
+        ("beta", &s.beta),
+        ("gamma", &s.gamma),
+    ])?;
+    super::marshal::set(&o, "samples", &samples)?;
+    Ok(o.into())
 }

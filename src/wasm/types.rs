@@ -123,6 +123,8 @@ export interface Limits {
   web_max_sample_values: number; max_sweep_points: number; max_ic_cells: number; max_modes: number;
   /** Resonance map caps: flap frequencies, α0 rows, and total work in integration steps. */
   max_resonance_points: number; max_resonance_alpha0_values: number; max_resonance_work: number;
+  /** strainField's peak cap (nodes × samples × modes) and the most outline points accepted. */
+  max_strain_field_work: number; max_outline_points: number;
 }
 /** Key of one of the lab's numeric parameters (core `params`). */
 export type ParamKey =
@@ -147,4 +149,54 @@ export interface ResonanceModeColumns {
 export interface ResonanceMapResult { flap_hz: Float64Array; alpha0?: Float64Array; modes: ResonanceModeColumns[] }
 /** Roll α, pitch β and yaw γ (rad) at the simulation's sample times `sim.t`. */
 export interface AngleSeries { alpha: Float64Array; beta: Float64Array; gamma: Float64Array }
+/** A built-in outline (all synthetic), mm: counter-clockwise, root edge on x = 0, chord toward −y. */
+export interface BuiltinPlanform { id: string; label: string; note: string; points_mm: [number, number][] }
+/** checkPlanform on a valid outline: area (mm²), extents (mm), distinct points, whether an edge lies on x = 0 (root clamp possible), the automatic mesh size (mm) and strain point (mm) feModes would use. */
+export interface PlanformOk {
+  ok: true; area_mm2: number; span_mm: number; chord_mm: number; n_points: number; root_edge: boolean;
+  default_mesh_size_mm: number; default_strain_point_mm: [number, number];
+}
+/** checkPlanform on an invalid outline: what is wrong, naming the point or edge. */
+export interface PlanformError { ok: false; error: string }
+export type PlanformCheck = PlanformOk | PlanformError;
+/** Key of one of the wing's parameters (core `params::WING_PARAMS`). */
+export type WingParamKey = "camber" | "clamp_mm" | "e_pa" | "rho" | "nu" | "thickness_um" | "mesh_mm" | "n_modes";
+/** One wing parameter: camber (rise / chord), clamp_mm (0 = root edge, else strip width, mm), e_pa (Pa), rho (kg/m³), nu, thickness_um (µm), mesh_mm (0 = automatic, mm), n_modes (1–8). */
+export interface WingParam {
+  key: WingParamKey; symbol: string; label: string; unit: string;
+  min: number; max: number; step: number; default: number;
+}
+/** Named wing parameters for `wingInput`; each optional (missing = its default), each inside its `WingParam` range. */
+export type WingOverrides = Partial<Record<WingParamKey, number>>;
+/** One of the paper's two materials, in the wing parameters' units. */
+export interface MaterialPreset { id: string; label: string; e_pa: number; rho: number; nu: number; thickness_um: number }
+/** Modal strain of one mode at a point, per unit q (top surface, Eqs. 16–18). */
+export interface ModalStrainValues { eps_x: number; eps_y: number; gamma_xy: number }
+/** Strain component of a whole-wing map; von_mises = √(ε_x² − ε_x ε_y + ε_y² + 3 (γ_xy/2)²). */
+export type StrainComponent = "eps_x" | "eps_y" | "gamma_xy" | "von_mises";
+export interface StrainFieldOptions { component?: StrainComponent; stat: "rms" | "peak" }
+/** Options of kinematicsFromCsv: units of the angle columns, the flap frequency (Hz) the samples are folded at, an optional low-pass. */
+export interface CsvKinematicsOptions { units: "deg" | "rad"; flap_hz: number; max_harmonic?: number | null }
+/** The file's samples folded onto one period: t in [0, 1/flap_hz) s, angles in rad, file order. */
+export interface FoldedSamples { t: Float64Array; alpha: Float64Array; beta: Float64Array; gamma: Float64Array }
+/** A measured stroke as the core's kinematics (sampled angles on a uniform grid over one period). */
+export interface KinematicsTable {
+  kinematics: Kinematics; samples: FoldedSamples; n_periods: number;
+  /** grid: per-point means on a uniform grid aligned with t = 0 mod T; least_squares: a fitted Fourier series. */
+  method: "grid" | "least_squares"; grid_points: number; max_harmonic: number; warnings: string[];
+}
+/** An FE result read back from a modes document: feModes' layout (flat typed arrays) without `modes`. */
+export interface ImportedFe {
+  planform_note: string; freq_hz: Float64Array; a: [number, number][]; b: [number, number][];
+  mass_kg: number; centre_of_mass_m: [number, number, number]; kinds: string[];
+  residuals: Float64Array; mass_orthonormality_error: number; n_dofs: number;
+  n_nodes: number; n_triangles: number; n_modes: number; mesh_size_mm: number;
+  clamped_nodes: number[]; material: { thickness_m: number; e_pa: number; rho_kg_m3: number; nu: number };
+  /** x, y, z per node, m. */ nodes: Float64Array;
+  /** Three node indices per triangle. */ triangles: Uint32Array;
+  /** Mode-major: shapes[k·n_nodes + i], kg^-½. */ shapes: Float64Array;
+  /** strain_nodes[(k·n_nodes + i)·3 + c], c = ε_x, ε_y, γ_xy per unit q. */ strain_nodes: Float64Array;
+}
+/** modesFromJson: the modes for a SimConfig, and the FE mesh when the document is a `wingbeat modes` output. */
+export interface ModesDocument { modes: Mode[]; fe?: ImportedFe }
 "#;

@@ -1,0 +1,185 @@
+//! Reading a modes file: the JSON document `wingbeat modes` writes
+//! ([`crate::fem::modes_document`]) or a plain `{"modes": [...]}`. One reader for the CLI
+//! (`wingbeat simulate --modes FILE`, [`modes_from_json`]) and the lab (wasm `modesFromJson`,
+//! [`read_modes_document`], which also returns the FE mesh and shapes when the file has them).
+//!
+//! Accepted, as the CLI always has: an object with a `modes` array of [`Mode`]s; or, without
+//! `modes`, the FE arrays `freq_hz` and `a` (and optionally `kinds`), which become modes with
+//! zero damping and no strains. Other top-level keys are ignored (a `wingbeat modes` document
+//! also carries the mesh, shapes, `units`, …).
+
+use crate::error::{Result, WingbeatError};
+use crate::fem::FemModes;
+use crate::model::{Mode, MAX_MODES};
+use serde_json::Value;
+
+/// Largest modes document accepted, bytes (the CLI's file cap).
+pub const MAX_DOCUMENT_BYTES: usize = 64 * 1024 * 1024;
+
+/// A modes file as the lab reads it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModesDocument {
+    /// The modes for a `SimConfig`.
+    pub modes: Vec<Mode>,
+    /// The FE result, when the document is a `wingbeat modes` output (it has `nodes`).
+    pub fe: Option<FemModes>,
+}
+
+fn parse_err(what: &str, message: impl Into<String>) -> WingbeatError {
+    WingbeatError::Parse {
+        what: what.into(),
+        message: message.into(),
+    }
+}
+
+fn parse_value(text: &str, what: &str) -> Result<Value> {
+    if text.len() > MAX_DOCUMENT_BYTES {
+        return Err(WingbeatError::ResourceCap {
+            field: what.into(),
+            requested: format!("{} bytes", text.len()),
+            cap: "64 MiB".into(),
+            why: "the document is read whole".into(),
+        });
+    }
+    serde_json::from_str(text).map_err(|e| parse_err(what, e.to_string()))
+}
+
+fn modes_of(v: &Value, what: &str) -> Result<Vec<Mode>> {
+    if let Some(m) = v.get("modes") {
+        return serde_json::from_value(m.clone())
+            .map_err(|e| parse_err(&format!("{what}: modes"), e.to_string()));
+    }
+    let freqs: Vec<f64> = v
+        .get("freq_hz")
+        .and_then(|f| serde_json::from_value(f.clone()).ok())
+        .ok_or_else(|| parse_err(what, "expected `modes` or `freq_hz` + `a` arrays"))?;
+    let a: Vec<[f64; 2]> = v
+        .get("a")
+        .and_then(|f| serde_json::from_value(f.clone()).ok())
+        .ok_or_else(|| parse_err(what, "missing `a` array of [x, y]"))?;
+    if a.len() != freqs.len() {
+        return Err(parse_err(
+            what,
+            format!("{} frequencies but {} a-vectors", freqs.len(), a.len()),
+        ));
+    }
+    let kinds: Vec<String> = v
+        .get("kinds")
+        .and_then(|k| serde_json::from_value(k.clone()).ok())
+        .unwrap_or_default();
+    Ok(freqs
+        .iter()
+        .zip(&a)
+        .enumerate()
+        .map(|(k, (f, a))| Mode {
+            name: format!(
+                "{}: {}",
+                k + 1,
+                kinds.get(k).map_or("FE mode", String::as_str)
+            ),
+            freq_hz: *f,
+            a: *a,
+            zeta: 0.0,
+            strains: vec![],
+        })
+        .collect())
+}
+
+/// The modes of a modes document (what `wingbeat simulate --modes FILE` uses); `what` names
+/// the document in errors. The modes are checked later, with the config they go into.
+pub fn modes_from_json(text: &str, what: &str) -> Result<Vec<Mode>> {
+    modes_of(&parse_value(text, what)?, what)
+}
+
+/// Checks that an FE result's arrays fit together (every per-mode array has one entry per
+/// mode, every per-node array one per node, triangle indices name nodes).
+pub fn check_fem_modes(fe: &FemModes, what: &str) -> Result<()> {
+    let w = format!("{what}: fe");
+    let k = fe.freq_hz.len();
+    let nn = fe.nodes.len();
+    if k == 0 || k > MAX_MODES {
+        return Err(parse_err(
+            &w,
+            format!("{k} frequencies; expected 1 to {MAX_MODES} modes"),
+        ));
+    }
+    for (name, len) in [
+        ("a", fe.a.len()),
+        ("shapes", fe.shapes.len()),
+        ("strain_nodes", fe.strain_nodes.len()),
+    ] {
+        if len != k {
+            return Err(parse_err(
+                &w,
+                format!("`{name}` has {len} entries, expected one per mode ({k})"),
+            ));
+        }
+    }
+    if !fe.kinds.is_empty() && fe.kinds.len() != k {
+        return Err(parse_err(
+            &w,
+            format!("`kinds` has {} entries, expected {k}", fe.kinds.len()),
+        ));
+    }
+    if nn < 3 || fe.triangles.is_empty() {
+        return Err(parse_err(&w, "no mesh: `nodes` and `triangles` are needed"));
+    }
+    for m in 0..k {
+        if fe.shapes[m].len() != nn || fe.strain_nodes[m].len() != nn {
+            return Err(parse_err(
+                &w,
+                format!(
+                    "mode {}: `shapes` has {} and `strain_nodes` {} values, expected one per node ({nn})",
+                    m + 1,
+                    fe.shapes[m].len(),
+                    fe.strain_nodes[m].len()
+                ),
+            ));
+        }
+    }
+    if let Some((i, t)) = fe
+        .triangles
+        .iter()
+        .enumerate()
+        .find(|(_, t)| t.iter().any(|&n| n >= nn))
+    {
+        return Err(parse_err(
+            &w,
+            format!("triangle {i} {t:?} names a node beyond the {nn} nodes"),
+        ));
+    }
+    if let Some(&c) = fe.clamped_nodes.iter().find(|&&c| c >= nn) {
+        return Err(parse_err(
+            &w,
+            format!("clamped node {c} is beyond the {nn} nodes"),
+        ));
+    }
+    Ok(())
+}
+
+/// A modes document for the lab: its modes (each checked as a config would check it, at most
+/// [`MAX_MODES`]) and, when the document has `nodes` (a `wingbeat modes` output), the whole
+/// FE result, checked with [`check_fem_modes`]; `what` names the document in errors.
+pub fn read_modes_document(text: &str, what: &str) -> Result<ModesDocument> {
+    let v = parse_value(text, what)?;
+    let modes = modes_of(&v, what)?;
+    if modes.is_empty() || modes.len() > MAX_MODES {
+        return Err(WingbeatError::invalid(
+            format!("{what}: modes"),
+            format!("{} modes", modes.len()),
+            format!("1 to {MAX_MODES} modes"),
+        ));
+    }
+    for (i, m) in modes.iter().enumerate() {
+        m.validate(i)?;
+    }
+    let fe = if v.get("nodes").is_some() {
+        let fe: FemModes = serde_json::from_value(v)
+            .map_err(|e| parse_err(&format!("{what}: fe"), e.to_string()))?;
+        check_fem_modes(&fe, what)?;
+        Some(fe)
+    } else {
+        None
+    };
+    Ok(ModesDocument { modes, fe })
+}
