@@ -372,6 +372,13 @@ pub fn kinematics_from_csv(text: &str, opts: &CsvKinematicsOptions) -> Result<Ki
     let period = 1.0 / opts.flap_hz;
     let dt = median_step(&t);
     let span = t[n - 1] - t[0];
+    if !(span + dt).is_finite() || !(period / dt).is_finite() {
+        return Err(WingbeatError::invalid(
+            format!("{WHAT} t"),
+            format!("from {} s to {} s", t[0], t[n - 1]),
+            "times whose range and steps are finite in f64",
+        ));
+    }
     let mut warnings = Vec::new();
     // Whole periods: the file ends one step before a period boundary, or on it.
     let k_open = ((span + dt) / period).round();

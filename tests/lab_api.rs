@@ -871,3 +871,35 @@ fn modes_document_errors_name_the_part() {
         assert!(m.contains(want), "{text}: `{m}` lacks {want}");
     }
 }
+
+/// Extreme inputs give named errors, never NaN or infinite values.
+#[test]
+fn extreme_inputs_never_give_nan() {
+    let big = |_: usize, _: usize| [1e300, -1e300, 1e300];
+    let q = [1e300, -1e300];
+    for stat in [StrainStat::Rms, StrainStat::Peak] {
+        let opts = StrainFieldOptions {
+            component: StrainComponent::VonMises,
+            stat,
+        };
+        let m = message(strain_field(2, 1, big, &[&q[..]], &opts));
+        assert!(m.contains("strain map at node 0"), "{m}");
+    }
+    let nodes = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let tris = [[0usize, 1, 2]];
+    let s = |_: usize, _: usize| [1.0, 2.0, 3.0];
+    let e = modal_strains_at(&nodes, &tris, 1, s, 100.0, 100.0).unwrap();
+    assert_eq!(e, vec![[1.0, 2.0, 3.0]]);
+    let m = message(modal_strains_at(&nodes, &tris, 1, s, 1e305, 0.0));
+    assert!(m.contains("point") && m.contains("within"), "{m}");
+    let opts = CsvKinematicsOptions {
+        units: AngleUnits::Rad,
+        flap_hz: FD,
+        max_harmonic: None,
+    };
+    let m = message(kinematics_from_csv(
+        "t,alpha\n-1e308,0\n0,1\n1e308,0\n",
+        &opts,
+    ));
+    assert!(m.contains("t"), "{m}");
+}

@@ -132,15 +132,16 @@ pub fn modal_strains_at(
     x_mm: f64,
     y_mm: f64,
 ) -> Result<Vec<[f64; 3]>> {
-    if !(x_mm.is_finite() && y_mm.is_finite()) {
+    let big = crate::fem::geometry::MAX_COORD_MM;
+    if !(x_mm.is_finite() && y_mm.is_finite() && x_mm.abs() <= big && y_mm.abs() <= big) {
         return Err(WingbeatError::invalid(
             "point",
             format!("({x_mm}, {y_mm})"),
-            "finite coordinates, mm",
+            format!("finite coordinates within ±{big} mm"),
         ));
     }
     match locate_in_mesh(nodes, triangles, x_mm, y_mm) {
-        Some((ti, l, true)) => Ok((0..n_modes)
+        Some((ti, l, true)) if l.iter().all(|v| v.is_finite()) => Ok((0..n_modes)
             .map(|k| interpolate_strain(triangles[ti], l, k, &strain))
             .collect()),
         _ => {
@@ -221,8 +222,26 @@ fn von_mises_sq(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// under it).
 ///
 /// Errors: `qs` not one series per mode, series of different or zero length, more than
-/// [`crate::config::MAX_SAMPLES`] samples, a non-finite sample (named `qs[k][i]`).
+/// [`crate::config::MAX_SAMPLES`] samples, a non-finite sample (named `qs[k][i]`), and a map
+/// that overflows (never a NaN or infinite value).
 pub fn strain_field(
+    n_nodes: usize,
+    n_modes: usize,
+    strain: impl Fn(usize, usize) -> [f64; 3],
+    qs: &[&[f64]],
+    opts: &StrainFieldOptions,
+) -> Result<Vec<f64>> {
+    let v = strain_field_values(n_nodes, n_modes, strain, qs, opts)?;
+    if let Some(i) = v.iter().position(|x| !x.is_finite()) {
+        return Err(WingbeatError::NonFinite {
+            what: format!("strain map at node {i}"),
+            detail: "the strains or responses are too large to combine in f64".into(),
+        });
+    }
+    Ok(v)
+}
+
+fn strain_field_values(
     n_nodes: usize,
     n_modes: usize,
     strain: impl Fn(usize, usize) -> [f64; 3],

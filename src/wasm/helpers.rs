@@ -167,11 +167,15 @@ pub fn mesh_from_flat(nodes: &[f64], triangles: &[u32], n_nodes: usize) -> Resul
             format!("x, y, z per node: 3 × {n_nodes} values (the nodes of strain_nodes)"),
         ));
     }
-    if let Some(i) = nodes.iter().position(|v| !v.is_finite()) {
+    let big = crate::fem::geometry::MAX_COORD_MM * 1e-3;
+    if let Some(i) = nodes
+        .iter()
+        .position(|v| !(v.is_finite() && v.abs() <= big))
+    {
         return Err(WingbeatError::invalid(
             format!("nodes[{i}]"),
             nodes[i],
-            "finite coordinates, m",
+            format!("finite coordinates within ±{big} m"),
         ));
     }
     if triangles.is_empty() || triangles.len() % 3 != 0 {
