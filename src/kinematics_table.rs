@@ -8,8 +8,8 @@
 //!
 //! # The file
 //!
-//! A header row naming the columns, then one row per sample; `#` lines and blank lines are
-//! skipped. Columns: `t` (s; also `t_s`, `time`, `time_s`) and any of `alpha`, `beta`,
+//! A header row naming the columns, then one row per sample, comma-separated (fields may be
+//! quoted; a leading byte-order mark is ignored); `#` lines and blank lines are skipped. Columns: `t` (s; also `t_s`, `time`, `time_s`) and any of `alpha`, `beta`,
 //! `gamma` (a missing angle is 0), each optionally suffixed `_deg` or `_rad`, which must agree
 //! with the units given. t increases strictly; the samples cover one or more whole flap
 //! periods T = 1 / f_d (the last sample either one step before a period boundary or on it).
@@ -178,12 +178,17 @@ fn read_table(text: &str, units: AngleUnits) -> Result<(Vec<f64>, [Option<Vec<f6
         AngleUnits::Deg => PI / 180.0,
         AngleUnits::Rad => 1.0,
     };
+    // A spreadsheet's byte-order mark and quoted fields are tolerated.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     for (lineno, raw) in text.lines().enumerate() {
         let line = raw.trim();
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        let fields: Vec<&str> = line
+            .split(',')
+            .map(|f| f.trim().trim_matches('"').trim())
+            .collect();
         let Some(c) = &cols else {
             let mut c = Vec::with_capacity(fields.len());
             for f in &fields {

@@ -666,6 +666,14 @@ fn csv_errors_name_the_column_line_and_range() {
         },
     ));
     assert!(m.contains("flap_hz"), "{m}");
+    // A spreadsheet export: byte-order mark, quoted header, CRLF line ends.
+    let xl = "\u{feff}\"t\",\"alpha\"\r\n0,0\r\n0.01,10\r\n0.02,0\r\n0.03,-10\r\n";
+    assert_eq!(
+        kinematics_from_csv(xl, &deg).unwrap().kinematics,
+        kinematics_from_csv("t,alpha\n0,0\n0.01,10\n0.02,0\n0.03,-10\n", &deg)
+            .unwrap()
+            .kinematics
+    );
     // Not a whole number of periods: folded anyway, with a warning.
     let r = kinematics_from_csv(
         "t,alpha\n0,0\n0.01,1\n0.02,0\n0.03,-1\n0.04,0\n0.05,1\n",
