@@ -272,14 +272,40 @@ pub fn mesh_planform_with(
     // after the refinement. (spade finds the outer faces by counting constraint crossings
     // from the convex hull, which an interior line would confuse: it separates two inner
     // regions.)
+    // Station sizes grow from each end of a line from the outline segments met there (an
+    // outline point may lie close to the crossing) by at most 1.5× per station.
+    let seg = |i: usize, k: usize| -> f64 {
+        let (a, b) = (poly[i], poly[k]);
+        ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt()
+    };
     let mut line_pts: Vec<Vec<[f64; 2]>> = Vec::new();
     for &[i, j] in &lines {
-        let mut pts = vec![poly[i]];
-        for p in stations(poly[i], poly[j]) {
+        let (a, b) = (poly[i], poly[j]);
+        let end_size = |k: usize| {
+            seg(k, (k + np - 1) % np)
+                .min(seg(k, (k + 1) % np))
+                .min(local_h(poly[k]))
+        };
+        let (ea, eb) = (end_size(i), end_size(j));
+        let len = (b[1] - a[1]).abs();
+        let at = |s: f64| [a[0], a[1] + (b[1] - a[1]) * s / len];
+        let mut st = vec![0.0];
+        let mut s = 0.0;
+        while s < len && st.len() < 4 * MAX_NODES {
+            s += local_h(at(s))
+                .min(ea + 0.5 * s)
+                .min(eb + 0.5 * (len - s).max(0.0));
+            st.push(s);
+        }
+        let k = (st.len() - 1).max(1);
+        let scale = len / st[k];
+        let mut pts = vec![a];
+        for v in st.iter().take(k).skip(1) {
+            let p = at(v * scale);
             verts.push(Point2::new(p[0], p[1]));
             pts.push(p);
         }
-        pts.push(poly[j]);
+        pts.push(b);
         line_pts.push(pts);
     }
     let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(verts, edges)
@@ -297,7 +323,7 @@ pub fn mesh_planform_with(
     }
     let with_lines = !line_pts.is_empty();
     if with_lines {
-        insert_lines(&mut cdt, &line_pts, &local_h)?;
+        insert_lines(&mut cdt, &line_pts)?;
     }
     // with lines the face handles changed: tell inside from outside by the centroid
     // (faces of three collinear outline points, which spade may leave outside, have their
@@ -358,13 +384,12 @@ pub fn mesh_planform_with(
 }
 
 /// Makes each mesh line (its stations, in order) a chain of constraint edges of the refined
-/// triangulation. Refinement vertices closer to a line than 0.3 × the local size are removed
+/// triangulation. Refinement vertices closer to a line than 0.3 × the local station spacing are removed
 /// first (unless they lie on a constraint edge), so that forcing the line in leaves no
 /// slivers; the Delaunay fill of the small gap they leave is well shaped.
 fn insert_lines(
     cdt: &mut ConstrainedDelaunayTriangulation<Point2<f64>>,
     lines: &[Vec<[f64; 2]>],
-    local_h: &impl Fn([f64; 2]) -> f64,
 ) -> Result<()> {
     let on_line: std::collections::HashSet<(u64, u64)> = lines
         .iter()
@@ -382,12 +407,12 @@ fn insert_lines(
                 return false;
             }
             lines.iter().any(|l| {
-                let x = l[0][0];
-                let (lo, hi) = (
-                    l[0][1].min(l[l.len() - 1][1]),
-                    l[0][1].max(l[l.len() - 1][1]),
-                );
-                (p.x - x).abs() < 0.3 * local_h([p.x, p.y]) && p.y > lo && p.y < hi
+                // the stations bracketing p.y and their spacing
+                let k = l.windows(2).position(|w| {
+                    let (lo, hi) = (w[0][1].min(w[1][1]), w[0][1].max(w[1][1]));
+                    p.y > lo && p.y <= hi
+                });
+                k.is_some_and(|k| (p.x - l[0][0]).abs() < 0.5 * (l[k + 1][1] - l[k][1]).abs())
             })
         })
         .map(|v| v.position())
