@@ -189,7 +189,7 @@ test('the node cap refuses with a message naming the mesh size, the lab stays us
   await page.keyboard.press('ArrowRight');
   await waitRenders(page, n0 + 1);
   // Cancel a long solve; the wing in use stays; the next solve runs in a fresh worker.
-  await setField(page, 'mesh_mm', 0.45);
+  await setField(page, 'mesh_mm', 0.6);
   await setField(page, 'n_modes', 8);
   await page.click(W('compute'));
   await page.waitForSelector(`${W('cancel')}:not([hidden])`);

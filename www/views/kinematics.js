@@ -13,7 +13,7 @@ export const title = 'Kinematics';
 
 const ANGLES = /** @type {const} */ (['alpha', 'beta', 'gamma']);
 const SYM = { alpha: 'α (roll)', beta: 'β (pitch)', gamma: 'γ (yaw)' };
-const COL = { alpha: '#1f77b4', beta: '#d95f02', gamma: '#2ca02c' };
+const COL = { alpha: '#1f6aa5', beta: '#b34700', gamma: '#1e7a1e' };
 /** Points of the interpolant drawn per period. */
 const PREVIEW_POINTS = 241;
 
