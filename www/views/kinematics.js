@@ -197,11 +197,13 @@ export function mount(ctx) {
       const box = el('fieldset', { class: 'wl-kin-angle' }, el('legend', { text: `${SYM[a]}, rad` }));
       const e = edit[a];
       if (sampled[a]) {
-        box.append(el('p', { class: 'wl-note', text: `Measured table (${sampled[a].values.length} samples per period): add a mean offset.` }),
-          el('label', { for: id(`kin-${a}-off`), text: 'Mean offset (rad) ' }),
-          num(`kin-${a}-off`, `${SYM[a]} mean offset, rad`, e.mean, (v) => { e.mean = v; }));
+        box.append(el('p', { class: 'wl-note', text: `Measured table (${sampled[a].values.length} samples per period): the mean offset and the harmonics below are added to it.` }),
+          el('label', { for: id(`kin-${a}-mean`), text: 'Mean offset (rad) ' }),
+          num(`kin-${a}-mean`, `${SYM[a]} mean offset, rad`, e.mean, (v) => { e.mean = v; }));
       } else {
         box.append(el('label', { for: id(`kin-${a}-mean`), text: 'Mean (rad) ' }), num(`kin-${a}-mean`, `${SYM[a]} mean, rad`, e.mean, (v) => { e.mean = v; }));
+      }
+      {
         const tbl = el('table', { class: 'wl-kin-harm' },
           el('caption', { class: 'wl-sr', text: `Harmonics of ${SYM[a]}: amplitude · sin(n ω_d t + phase)` }),
           el('thead', {}, el('tr', {}, el('th', { scope: 'col', text: 'n' }), el('th', { scope: 'col', text: 'amplitude (rad)' }), el('th', { scope: 'col', text: 'phase (rad)' }), el('th', { scope: 'col', text: 'remove' }))));
@@ -235,8 +237,10 @@ export function mount(ctx) {
     const k = { flap_freq_hz: editFlap };
     for (const a of ANGLES) {
       if (sampled[a]) {
-        const off = edit[a].mean;
-        k[a] = { ...sampled[a], values: sampled[a].values.map((v) => v + off) };
+        // Added on the table's own grid t_j = j T / N, so the core's interpolant carries them.
+        const e = edit[a];
+        const n = sampled[a].values.length;
+        k[a] = { ...sampled[a], values: sampled[a].values.map((v, j) => v + e.mean + e.harmonics.reduce((acc, h) => acc + h.amplitude * Math.sin((2 * Math.PI * h.n * j) / n + h.phase), 0)) };
       } else k[a] = { kind: 'fourier', mean: edit[a].mean, harmonics: edit[a].harmonics.map((h) => ({ n: h.n, amplitude: h.amplitude, phase: h.phase })) };
     }
     // Checked by the core right away (the message names the field), before it reaches the store.
