@@ -282,6 +282,22 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     await page.waitForFunction(() => /Read/.test(document.querySelector('wing-lab [data-kin="status"]').textContent || ''));
     await page.click('wing-lab .wl-kin-edit summary');
     await page.click('wing-lab [data-kin="load-editor"]');
+    // Hand editing: a second harmonic added to the measured yaw, by keyboard.
+    const before = await page.evaluate(() => document.querySelector('wing-lab').store.get().kin.kinematics.gamma.values.slice());
+    await page.focus('wing-lab button[aria-label="Add harmonic to γ (yaw)"]');
+    await page.keyboard.press('Enter');
+    await page.focus('wing-lab input[aria-label="γ (yaw) harmonic 1: amplitude, rad"]');
+    await page.keyboard.press('Control+A');
+    await page.keyboard.type('0.05');
+    await page.keyboard.press('Tab');
+    const n0 = await renders(page);
+    await page.focus('wing-lab [data-kin="apply"]');
+    await page.keyboard.press('Enter');
+    await waitRenders(page, n0 + 1);
+    const after = await page.evaluate(() => document.querySelector('wing-lab').store.get().kin);
+    assert.equal(after.source, 'edited');
+    const N = before.length;
+    after.kinematics.gamma.values.forEach((v, j) => assert.ok(Math.abs(v - before[j] - 0.05 * Math.sin((2 * Math.PI * 1 * j) / N)) < 1e-12));
     for (const name of ['wing', 'kinematics']) {
       const sec = page.locator(`wing-lab [data-panel="${name}"]`);
       await sec.scrollIntoViewIfNeeded();

@@ -209,7 +209,7 @@ export function mount(ctx) {
           el('thead', {}, el('tr', {}, el('th', { scope: 'col', text: 'n' }), el('th', { scope: 'col', text: 'amplitude (rad)' }), el('th', { scope: 'col', text: 'phase (rad)' }), el('th', { scope: 'col', text: 'remove' }))));
         const body = el('tbody');
         e.harmonics.forEach((h, i) => {
-          const rm = el('button', { type: 'button', text: '×', 'aria-label': `Remove harmonic ${h.n} of ${SYM[a]}` });
+          const rm = el('button', { type: 'button', text: 'Remove', 'aria-label': `Remove harmonic ${i + 1} of ${SYM[a]}` });
           rm.addEventListener('click', () => { e.harmonics.splice(i, 1); drawEditor(); });
           body.append(el('tr', {},
             el('td', {}, num(`kin-${a}-n${i}`, `${SYM[a]} harmonic ${i + 1}: order n`, h.n, (v) => { h.n = Math.max(1, Math.round(v)); }, 1)),
@@ -218,7 +218,7 @@ export function mount(ctx) {
             el('td', {}, rm)));
         });
         tbl.append(body);
-        const add = el('button', { type: 'button', text: 'Add harmonic', 'aria-label': `Add a harmonic to ${SYM[a]}` });
+        const add = el('button', { type: 'button', text: 'Add harmonic', 'aria-label': `Add harmonic to ${SYM[a]}` });
         add.addEventListener('click', () => {
           const n = e.harmonics.reduce((m, h) => Math.max(m, h.n), 0) + 1;
           e.harmonics.push({ n, amplitude: 0, phase: 0 });
