@@ -73,7 +73,7 @@ export function mount(ctx) {
       el('p', { class: 'wl-note', rich: `Sampling: 10 kHz. ${PAPER_UNITS_NOTE}` }),
       el('p', { class: 'wl-note', rich: `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker. Your own outline, material, clamp and up to 8 modes: the Wing panel.` }),
   );
-  const kinNote = el('p', { class: 'wl-note', 'data-note': 'kin', hidden: true, text: 'Custom kinematics in use (Kinematics panel): α_0, β_0, γ_0, the phases and f_d do not apply; ζ and the duration do.' });
+  const kinNote = el('p', { class: 'wl-note', 'data-note': 'kin', hidden: true, rich: 'Custom kinematics in use (Kinematics panel): α_0, β_0, γ_0, the phases and f_d do not apply; ζ and the duration do.' });
   section.append(kinNote);
   section.append(
     main,

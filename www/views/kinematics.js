@@ -224,7 +224,8 @@ export function mount(ctx) {
           e.harmonics.push({ n, amplitude: 0, phase: 0 });
           drawEditor();
         });
-        box.append(tbl, add);
+        if (e.harmonics.length) box.append(tbl);
+        box.append(add);
       }
       editor.append(box);
     }
