@@ -196,6 +196,13 @@ test('the node cap refuses with a message naming the mesh size, the lab stays us
   await setField(page, 'n_modes', 8);
   await page.click(W('compute'));
   await page.waitForSelector(`${W('cancel')}:not([hidden])`);
+  // While it solves, the wing in use keeps working: a slider recomputes with it.
+  const n1 = await renders(page);
+  await page.focus('wing-lab input[type=range][data-key="gamma0"]');
+  await page.keyboard.press('ArrowLeft');
+  await waitRenders(page, n1 + 1);
+  assert.equal(await page.evaluate(() => document.querySelector('wing-lab').analysis.sim.modes[0].freq_hz), f1);
+  assert.equal(await page.isVisible(W('cancel')), true, 'still solving');
   await page.click(W('cancel'));
   assert.match(await computed(page), /^Cancelled\. The wing in use is unchanged\./);
   assert.equal(await page.evaluate(() => document.querySelector('wing-lab').fe.freq_hz[0]), f1);
