@@ -240,6 +240,16 @@ test('a measured kinematics CSV gives the result of `wingbeat simulate --kinemat
   // The preview shows samples and the interpolant; the parameters panel says the sliders' stroke is off.
   assert.ok(await page.locator('wing-lab .wl-kin-svg circle').count() >= 96);
   assert.equal(await page.isVisible('wing-lab [data-note="kin"]'), true);
+  // The stroke travels in the link's #s= fragment and gives the same run elsewhere.
+  await page.waitForFunction(() => /^#s=/.test(location.hash), null, { timeout: 10000 });
+  const url = page.url();
+  const o = await lab(url.slice(env.url.length));
+  await o.page.waitForFunction(() => document.querySelector('wing-lab').store.get().kin, null, { timeout: 10000 });
+  await waitRenders(o.page, 1);
+  const again = await o.page.evaluate(() => document.querySelector('wing-lab').analysis.sim.modes.map((m) => m.q.total[m.q.total.length - 1]));
+  assert.deepEqual(again, labRes.modes.map((m) => m.q[m.q.length - 1]));
+  assert.deepEqual(o.problems, []);
+  await o.context.close();
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -412,7 +412,7 @@ export function mount(ctx) {
     }
     const t0 = performance.now();
     const j = engine.computeWing(input, () => {});
-    if (!j.id) return apply(p, own);
+    if (!j.id) return apply(p, own, input);
     busy(true);
     const timer = setInterval(() => say(`Computing ${p.n_modes} modes in the worker… ${((performance.now() - t0) / 1000).toFixed(1)} s (the wing in use stays until this one is ready)`), 250);
     job = { id: j.id, t0, timer };
@@ -423,7 +423,7 @@ export function mount(ctx) {
         clearInterval(timer);
         job = null;
         busy(false);
-        apply(p, own);
+        apply(p, own, input);
         say(`Computed in ${((performance.now() - t0) / 1000).toFixed(1)} s: ${r.n_nodes} nodes, element size ${fmt(r.mesh_size_mm, 3)} mm.`);
         ctx.emit('wl-wing', { state: 'done' });
       },
@@ -439,11 +439,11 @@ export function mount(ctx) {
     );
   };
   /** Makes the draft the wing in use (the store follows; the engine has the result cached). */
-  const apply = (p, own) => {
+  const apply = (p, own, input) => {
     /** @type {Record<string, any>} */
     const patch = { modes: 'fe', outline: draft.outline, planform: draft.source === 'url' ? draft.planform : '' };
     for (const w of WING) patch[w.key] = p[w.key];
-    patch.wing = own ? { input: null, source: draft.source, label: draft.label, outline: 'own', points: draft.points && draft.points.map((q) => [q[0], q[1]]) } : null;
+    patch.wing = own ? { input, source: draft.source, label: draft.label, outline: 'own', points: draft.points && draft.points.map((q) => [q[0], q[1]]) } : null;
     if (own) patch.outline = draft.outline;
     dirty = false;
     store.set(patch);
