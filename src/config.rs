@@ -61,12 +61,11 @@ impl SimConfig {
         })
     }
 
-    /// Parses a JSON config; unknown fields are errors, missing ones take the paper's values.
+    /// Parses a JSON config; unknown fields are errors at every level (kinematics, angles,
+    /// harmonics, modes, strains), missing ones take the paper's values. A failure names the
+    /// field's path (``at `modes[0]`: unknown field `damping`…``).
     pub fn from_json(text: &str) -> Result<Self> {
-        serde_json::from_str(text).map_err(|e| WingbeatError::Parse {
-            what: "config JSON".into(),
-            message: e.to_string(),
-        })
+        crate::error::parse_json(text, "config JSON")
     }
 
     /// Number of output samples.

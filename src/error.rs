@@ -75,9 +75,58 @@ impl WingbeatError {
     ) -> Self {
         WingbeatError::InvalidInput {
             field: field.into(),
-            value: value.to_string(),
+            value: compact_number(&value.to_string()),
             allowed: allowed.into(),
         }
+    }
+}
+
+/// A number for a message: as given when short, else in exponent form (`1e308`, not a
+/// 309-digit decimal; `5e-324`, not 324 zeros). Text that is not a number is returned as is.
+pub fn compact_number(text: &str) -> String {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && text.len() > 17 => format!("{v:e}"),
+        _ => text.to_string(),
+    }
+}
+
+/// [`compact_number`] of an `f64`.
+pub fn num(v: f64) -> String {
+    compact_number(&v.to_string())
+}
+
+/// Parses JSON text into `T`; a failure names the path of the offending field
+/// (``at `modes[0]`: unknown field `damping`…``) as well as the line and column, so the CLI's
+/// messages say where, as the wasm API's do. `what` names the document.
+pub fn parse_json<T: serde::de::DeserializeOwned>(text: &str, what: &str) -> Result<T> {
+    let mut de = serde_json::Deserializer::from_str(text);
+    let v = serde_path_to_error::deserialize(&mut de).map_err(|e| path_error(&e, what))?;
+    de.end().map_err(|e| WingbeatError::Parse {
+        what: what.into(),
+        message: e.to_string(),
+    })?;
+    Ok(v)
+}
+
+/// [`parse_json`] for an already parsed `serde_json::Value`; `what` names the part (its
+/// path is appended to it).
+pub fn from_json_value<T: serde::de::DeserializeOwned>(
+    v: serde_json::Value,
+    what: &str,
+) -> Result<T> {
+    serde_path_to_error::deserialize(v).map_err(|e| path_error(&e, what))
+}
+
+fn path_error(e: &serde_path_to_error::Error<serde_json::Error>, what: &str) -> WingbeatError {
+    let path = e.path().to_string();
+    let message = if path == "." || path.is_empty() {
+        e.inner().to_string()
+    } else {
+        format!("at `{path}`: {}", e.inner())
+    };
+    WingbeatError::Parse {
+        what: what.into(),
+        message,
     }
 }
 
@@ -87,7 +136,7 @@ pub fn check_range(field: &str, v: f64, lo: f64, hi: f64, unit: &str) -> Result<
         field,
         v,
         v.is_finite() && v >= lo && v <= hi,
-        &format!("[{lo}, {hi}]"),
+        &format!("[{}, {}]", num(lo), num(hi)),
         unit,
     )
 }
@@ -98,7 +147,7 @@ pub fn check_positive(field: &str, v: f64, hi: f64, unit: &str) -> Result<()> {
         field,
         v,
         v.is_finite() && v > 0.0 && v <= hi,
-        &format!("(0, {hi}]"),
+        &format!("(0, {}]", num(hi)),
         unit,
     )
 }

@@ -64,9 +64,12 @@ pub struct FloquetResult {
     pub averaged_freq_hz: f64,
     /// Harmonic of the flap frequency nearest the effective frequency (≥ 1).
     pub beat_harmonic: u32,
-    /// Beat period against that harmonic, 1/|f_eff − n_b f_d|, s (None when they coincide).
+    /// Beat period against that harmonic, 1/|f_eff − n_b f_d|, s. None when they coincide,
+    /// and None for an unstable mode (a multiplier with |λ| > 1, `stable` false): its response
+    /// grows flap after flap instead of beating, so no beat period describes it.
     pub beat_period_s: Option<f64>,
-    /// Beat period against 2 f_d specifically (the paper's mode-1 Coriolis beat), s.
+    /// Beat period against 2 f_d specifically (the paper's mode-1 Coriolis beat), s; None as
+    /// for `beat_period_s`.
     pub beat_period_vs_2fd_s: Option<f64>,
 }
 
@@ -172,10 +175,12 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
             None
         }
     };
+    let stable = is_stable(&lt);
+    let beat = |f: f64| if stable { beat(f) } else { None };
     FloquetResult {
         multipliers: lt.iter().map(|z| [z.re, z.im]).collect(),
         monodromy: [[mt[(0, 0)], mt[(0, 1)]], [mt[(1, 0)], mt[(1, 1)]]],
-        stable: is_stable(&lt),
+        stable,
         max_modulus,
         growth_rate_per_s: max_modulus.ln() / t,
         homogeneous_period_s: tp,
@@ -187,4 +192,26 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
         beat_period_s: beat(nb as f64 * flap_hz),
         beat_period_vs_2fd_s: beat(2.0 * flap_hz),
     }
+}
+
+/// Estimated cost of the Floquet analysis ([`analyse`], as `resonance::floquet_for` runs it)
+/// for `mode` under the kinematics `kin`, in Gauss–Legendre step equivalents: the full period (plus its error-estimate rerun at twice the step), the
+/// homogeneous period sampled at the checkpoints the Floquet solution needs (plus its rerun),
+/// and the DFT over those checkpoints (counted as 1/25 step per term). It mirrors the step-size
+/// rule of [`crate::solve::propagator`] and the sampling rule of [`analyse`].
+pub fn analysis_cost(kin: &crate::kinematics::Compiled, mode: &crate::model::Mode) -> f64 {
+    use crate::solve::propagator::{MAX_OMEGA_H, MIN_STEPS_PER_PERIOD};
+    let ode = crate::solve::ModalOde::new(kin, mode);
+    let s = ode.freq_scale().max(1e-300);
+    let t = ode.period();
+    let tp = ode.homogeneous_period();
+    let steps = |span: f64| {
+        let hmax = (MAX_OMEGA_H / s).min(span / MIN_STEPS_PER_PERIOD as f64);
+        (span / hmax).ceil()
+    };
+    let ratio = s * tp / (2.0 * PI);
+    let nh = ((4.0 * ratio + 16.0).min(1.0e9) as usize)
+        .next_power_of_two()
+        .clamp(32, 1 << 16) as f64;
+    1.5 * steps(t) + nh + 1.5 * steps(tp) + nh * nh / 25.0
 }

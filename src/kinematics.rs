@@ -16,6 +16,7 @@ use std::f64::consts::PI;
 
 /// One harmonic `amplitude · sin(n ω_d t + phase)`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Harmonic {
     /// Harmonic number n ≥ 1 (multiple of the flap frequency).
     pub n: u32,
@@ -28,7 +29,7 @@ pub struct Harmonic {
 
 /// How one angle is specified.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "lowercase")]
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
 pub enum Angle {
     /// Mean plus harmonics (the paper's case is one sine: mean 0, n = 1, phase 0).
     Fourier {
@@ -40,12 +41,14 @@ pub enum Angle {
         harmonics: Vec<Harmonic>,
     },
     /// Equally spaced samples over exactly one period, t_j = j T / N, j = 0..N−1 (rad).
-    /// Interpolated by the trigonometric polynomial through the samples, optionally
-    /// truncated at `max_harmonic` (a low-pass for noisy measurements).
+    /// Interpolated by the trigonometric polynomial through the samples, truncated at
+    /// `max_harmonic` (a low-pass for noisy measurements; default
+    /// [`DEFAULT_SAMPLED_MAX_HARMONIC`], so a long table does not cost N/2 harmonics).
     Sampled {
         /// The samples, rad.
         values: Vec<f64>,
-        /// Keep harmonics up to this number (default: all that N samples resolve).
+        /// Keep harmonics up to this number (default: all that N samples resolve, at most
+        /// [`DEFAULT_SAMPLED_MAX_HARMONIC`]).
         #[serde(default)]
         max_harmonic: Option<u32>,
     },
@@ -57,6 +60,17 @@ pub const MAX_HARMONIC: u32 = 256;
 pub const MAX_SAMPLES_PER_PERIOD: usize = 100_000;
 /// Largest flap frequency accepted, Hz.
 pub const MAX_FLAP_HZ: f64 = 10_000.0;
+/// Lowest flap frequency accepted, Hz: one period (at most 1000 s) is integrated whole for
+/// the Floquet analysis, so a slower flap means unbounded work (and 1e-320 Hz an infinite
+/// period). Insects flap at 5 Hz and more; the run's work budget
+/// ([`crate::simulate::MAX_RUN_WORK`]) may refuse a slow flap well above this floor when the
+/// modes are stiff.
+pub const MIN_FLAP_HZ: f64 = 1.0e-3;
+/// Harmonics a sampled angle keeps when its `max_harmonic` is not given (the table's N/2 if
+/// fewer). Every harmonic costs work at every solver step and shortens the step, so the run's
+/// cost grows with its square; measured wing kinematics carry next to nothing above the
+/// tenth harmonic. Ask for more (up to [`MAX_HARMONIC`]) with `max_harmonic`.
+pub const DEFAULT_SAMPLED_MAX_HARMONIC: u32 = 64;
 
 impl Angle {
     /// `amplitude · sin(ω_d t)`: the paper's profile.
@@ -170,10 +184,8 @@ impl Angle {
                 let n = values.len();
                 let nf = n as f64;
                 let mean = values.iter().sum::<f64>() / nf;
-                let mut hmax = n / 2;
-                if let Some(m) = max_harmonic {
-                    hmax = hmax.min(*m as usize);
-                }
+                let hmax =
+                    (n / 2).min(max_harmonic.unwrap_or(DEFAULT_SAMPLED_MAX_HARMONIC) as usize);
                 let mut terms = Vec::with_capacity(hmax);
                 for h in 1..=hmax {
                     let (mut cs, mut sn) = (0.0, 0.0);
@@ -247,6 +259,7 @@ impl Series {
 
 /// Rotation kinematics of the wing.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Kinematics {
     /// Flap frequency f_d, Hz (ω_d = 2π f_d). The paper's forward flight: 25 Hz.
     pub flap_freq_hz: f64,
@@ -332,9 +345,10 @@ impl Kinematics {
 
     /// Validates frequency and every angle.
     pub fn validate(&self) -> Result<()> {
-        crate::error::check_positive(
+        check_range(
             "kinematics.flap_freq_hz",
             self.flap_freq_hz,
+            MIN_FLAP_HZ,
             MAX_FLAP_HZ,
             "Hz",
         )?;

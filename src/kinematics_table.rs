@@ -29,8 +29,10 @@
 //!   folded samples by least squares and sampled at M = 2H + 1 (at least 3) uniform points
 //!   with `max_harmonic = H`, which reproduces the fitted series exactly.
 
-use crate::error::{check_positive, Result, WingbeatError};
-use crate::kinematics::{Angle, Kinematics, MAX_FLAP_HZ, MAX_HARMONIC, MAX_SAMPLES_PER_PERIOD};
+use crate::error::{Result, WingbeatError};
+use crate::kinematics::{
+    Angle, Kinematics, MAX_FLAP_HZ, MAX_HARMONIC, MAX_SAMPLES_PER_PERIOD, MIN_FLAP_HZ,
+};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -362,7 +364,7 @@ fn eval_fit(coef: &[f64], th: f64) -> f64 {
 /// fewer than 3 rows or less than one period, and the caps ([`MAX_ROWS`], the grid's
 /// [`MAX_SAMPLES_PER_PERIOD`], [`MAX_LS_WORK`]).
 pub fn kinematics_from_csv(text: &str, opts: &CsvKinematicsOptions) -> Result<KinematicsTable> {
-    check_positive("flap_hz", opts.flap_hz, MAX_FLAP_HZ, "Hz")?;
+    crate::error::check_range("flap_hz", opts.flap_hz, MIN_FLAP_HZ, MAX_FLAP_HZ, "Hz")?;
     if let Some(h) = opts.max_harmonic {
         if h > MAX_HARMONIC {
             return Err(WingbeatError::invalid(
@@ -461,7 +463,10 @@ pub fn kinematics_from_csv(text: &str, opts: &CsvKinematicsOptions) -> Result<Ki
                 ));
             }
             let all = (gn / 2) as u32;
-            let h = opts.max_harmonic.map_or(all, |m| m.min(all));
+            let h = opts.max_harmonic.map_or(
+                all.min(crate::kinematics::DEFAULT_SAMPLED_MAX_HARMONIC),
+                |m| m.min(all),
+            );
             (TableMethod::Grid, gn, h, values)
         }
         None => {

@@ -55,6 +55,7 @@ impl ForceTerm {
 /// Modal strain (surface strain per unit modal coordinate) of one mode at a named point
 /// (paper Eqs. 16–18, Table 6). Units: strain per (kg^½·m) for mass-normalised modes.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ModalStrain {
     /// A label for the point, e.g. "P" or "root-centre".
     pub point: String,
@@ -68,6 +69,7 @@ pub struct ModalStrain {
 
 /// One vibration mode as the modal model needs it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Mode {
     /// Human label, e.g. "1: spanwise bending".
     #[serde(default)]
@@ -196,6 +198,7 @@ pub fn coefficients(mode: &Mode, s: &RateState) -> Coefficients {
 
 /// A modal model: the wing's modes under one set of kinematics.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ModalModel {
     /// Rotation kinematics α(t), β(t), γ(t).
     pub kinematics: Kinematics,

@@ -5,8 +5,9 @@
 //!
 //! Accepted, as the CLI always has: an object with a `modes` array of [`Mode`]s; or, without
 //! `modes`, the FE arrays `freq_hz` and `a` (and optionally `kinds`), which become modes with
-//! zero damping and no strains. Other top-level keys are ignored (a `wingbeat modes` document
-//! also carries the mesh, shapes, `units`, …).
+//! zero damping and no strains. The other top-level keys of a `wingbeat modes` document (the
+//! mesh, shapes, `units`, …: [`DOCUMENT_KEYS`]) are accepted; any other key is an error, as is
+//! an unknown key inside a mode or a strain.
 
 use crate::error::{Result, WingbeatError};
 use crate::fem::FemModes;
@@ -44,10 +45,51 @@ fn parse_value(text: &str, what: &str) -> Result<Value> {
     serde_json::from_str(text).map_err(|e| parse_err(what, e.to_string()))
 }
 
+/// The top-level keys a modes document may have: those of a `wingbeat modes` document
+/// ([`crate::fem::modes_document`]: every field of [`FemModes`], `modes` and `units`).
+pub const DOCUMENT_KEYS: &[&str] = &[
+    "planform_note",
+    "freq_hz",
+    "a",
+    "b",
+    "mass_kg",
+    "centre_of_mass_m",
+    "nodes",
+    "triangles",
+    "clamped_nodes",
+    "shapes",
+    "strain_nodes",
+    "residuals",
+    "kinds",
+    "mass_orthonormality_error",
+    "n_dofs",
+    "material",
+    "mesh_size_mm",
+    "modes",
+    "units",
+];
+
 fn modes_of(v: &Value, what: &str) -> Result<Vec<Mode>> {
+    let obj = v
+        .as_object()
+        .ok_or_else(|| parse_err(what, "expected a JSON object"))?;
+    if !obj.contains_key("modes") && !obj.contains_key("freq_hz") {
+        return Err(parse_err(
+            what,
+            "expected `modes` or `freq_hz` + `a` arrays",
+        ));
+    }
+    if let Some(k) = obj.keys().find(|k| !DOCUMENT_KEYS.contains(&k.as_str())) {
+        return Err(parse_err(
+            what,
+            format!(
+                "unknown top-level key `{k}` (allowed: {})",
+                DOCUMENT_KEYS.join(", ")
+            ),
+        ));
+    }
     if let Some(m) = v.get("modes") {
-        return serde_json::from_value(m.clone())
-            .map_err(|e| parse_err(&format!("{what}: modes"), e.to_string()));
+        return crate::error::from_json_value(m.clone(), &format!("{what}: modes"));
     }
     let freqs: Vec<f64> = v
         .get("freq_hz")

@@ -3,12 +3,12 @@
 
 use crate::analysis::contribution::{contributions, Contributions};
 use crate::config::SimConfig;
-use crate::error::Result;
+use crate::error::{Result, WingbeatError};
 use crate::floquet::{self, FloquetResult};
 use crate::kinematics::Compiled;
 use crate::model::{stiffness_coefficient, Mode};
 use crate::solve::propagator::{propagate, Propagated};
-use crate::solve::ModalOde;
+use crate::solve::{LinearOde, ModalOde};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -120,10 +120,102 @@ pub fn propagate_mode(kin: &Compiled, mode: &Mode, dt: f64, n: usize) -> Result<
     propagate(&ModalOde::new(kin, mode), dt, n)
 }
 
+/// Most work one run may take, in step equivalents ([`run_cost`]; one unit is about one
+/// Gauss–Legendre step of one mode under the paper's three-term kinematics). Measured in a
+/// release build on the project's 2-core machine: `--flap-hz 0.1 --duration 0.1`, 4.2e5
+/// units, 0.39 s; an α table at 64 harmonics, 1.2e6 units, 1.1 s; so about 0.9 µs per unit
+/// and the cap keeps a native run under about 5 s. The paper case costs 1e4 units.
+pub const MAX_RUN_WORK: f64 = 5.0e6;
+
+/// Output cost per sample and mode, in step equivalents (responses, contributions, strain:
+/// measured 0.17 s per million sample-modes in a sweep).
+const SAMPLE_WORK: f64 = 0.2;
+
+/// Estimated cost of `simulate(cfg)` in step equivalents (see [`MAX_RUN_WORK`]), and the mode
+/// that costs most. Per mode: one flap period integrated for the responses and once more at
+/// twice the step (the error estimate), the Floquet analysis over the homogeneous period
+/// (`resonance::analysis_cost`), each step weighted by the kinematic terms evaluated per step
+/// (27 for the paper's three sines); plus the output, 0.2 unit per sample and mode. It mirrors
+/// the step-size rule of [`crate::solve::propagator`] (steps per period = max(32, T·ω/0.25),
+/// ω the largest of ω_k, 2ζ_kω_k and 4·H·ω_d with H the highest kinematic harmonic).
+pub fn run_cost(cfg: &SimConfig) -> (f64, Option<usize>) {
+    let kin = cfg.kinematics.compile();
+    run_cost_with(cfg, &kin)
+}
+
+fn run_cost_with(cfg: &SimConfig, kin: &Compiled) -> (f64, Option<usize>) {
+    let terms = (kin.alpha.terms.len() + kin.beta.terms.len() + kin.gamma.terms.len()) as f64;
+    let weight = (24.0 + terms) / 27.0;
+    let mut total = 0.0;
+    let mut worst = (None, -1.0);
+    for (k, m) in cfg.modes.iter().enumerate() {
+        let c = floquet::analysis_cost(kin, m) * weight;
+        let c = if c.is_nan() { f64::INFINITY } else { c };
+        if c > worst.1 {
+            worst = (Some(k), c);
+        }
+        total += c;
+    }
+    let samples = cfg.duration_s * cfg.sample_rate_hz + 1.0;
+    total += samples * cfg.modes.len() as f64 * SAMPLE_WORK;
+    (total, worst.0)
+}
+
+/// Refuses a run whose [`run_cost`] exceeds `cap`, naming the input that drives it (the
+/// costliest mode's frequency or damping, the kinematic harmonics, or the flap period).
+pub fn check_run_cost(cfg: &SimConfig, cap: f64, who: &str) -> Result<()> {
+    let kin = cfg.kinematics.compile();
+    check_cost_with(cfg, &kin, cap, who)
+}
+
+fn check_cost_with(cfg: &SimConfig, kin: &Compiled, cap: f64, who: &str) -> Result<()> {
+    let (cost, worst) = run_cost_with(cfg, kin);
+    if cost <= cap {
+        return Ok(());
+    }
+    let num = crate::error::num;
+    let fd = cfg.kinematics.flap_freq_hz;
+    let driver = match worst.map(|k| (k, &cfg.modes[k])) {
+        Some((k, m)) => {
+            let ode = ModalOde::new(kin, m);
+            let w = m.omega();
+            let harm = 4.0 * ode.max_harmonic * kin.wd;
+            let what = if harm > w && harm > 2.0 * m.zeta * w {
+                format!(
+                    "the kinematics' highest harmonic (n = {}: fewer harmonics, or `max_harmonic` on a sampled table)",
+                    ode.max_harmonic
+                )
+            } else if 2.0 * m.zeta * w > w {
+                format!(
+                    "`modes[{k}].zeta` = {} (at f_k = {} Hz)",
+                    num(m.zeta),
+                    num(m.freq_hz)
+                )
+            } else {
+                format!("`modes[{k}].freq_hz` = {} Hz", num(m.freq_hz))
+            };
+            format!(
+                "driven by {what} over one flap period of {} s (`kinematics.flap_freq_hz` = {} Hz); about {} steps per period",
+                num(1.0 / fd),
+                num(fd),
+                num((ode.period() * ode.freq_scale() / crate::solve::propagator::MAX_OMEGA_H).ceil())
+            )
+        }
+        None => "driven by the output samples".into(),
+    };
+    Err(WingbeatError::ResourceCap {
+        field: format!("{who} (modes × steps per flap period × kinematic terms)"),
+        requested: format!("{} step equivalents, {driver}", num(cost.round())),
+        cap: format!("{} step equivalents", num(cap)),
+        why: "computing time, about 1 µs per unit natively; raise the flap frequency, drop the stiffest modes or lower the harmonics".into(),
+    })
+}
+
 /// Runs a simulation.
 pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     cfg.validate()?;
     let kin = cfg.kinematics.compile();
+    check_cost_with(cfg, &kin, MAX_RUN_WORK, "simulate")?;
     let n = cfg.n_samples();
     let dt = 1.0 / cfg.sample_rate_hz;
     let t: Vec<f64> = (0..n).map(|i| i as f64 * dt).collect();

@@ -886,11 +886,15 @@ fn modes_document_round_trips() {
         assert!(ulps(*x, *y));
     }
     same_modes(&modes_from_json(&text, "doc").unwrap(), &modes);
-    // A plain `{"modes": [...]}` (extra keys ignored, as the CLI always did) has no FE part.
+    // A plain `{"modes": [...]}` has no FE part; a key outside a `wingbeat modes` document's
+    // is refused (issue 13: no key silently ignored).
     let plain = format!(
-        r#"{{"comment": "x", "modes": {}}}"#,
+        r#"{{"units": {{}}, "modes": {}}}"#,
         serde_json::to_string(&modes).unwrap()
     );
+    let extra = plain.replacen('{', r#"{"comment": "x", "#, 1);
+    let e = read_modes_document(&extra, "doc").unwrap_err().to_string();
+    assert!(e.contains("unknown top-level key `comment`"), "{e}");
     let doc = read_modes_document(&plain, "doc").unwrap();
     same_modes(&doc.modes, &modes);
     assert!(doc.fe.is_none());

@@ -33,6 +33,40 @@ pub fn envelope(x: &[f64]) -> Vec<f64> {
     buf.iter().map(|c| c.norm() / n as f64).collect()
 }
 
+/// A power of two `s` with `max |x| · s` in [0.5, 1) when `max |x|` is outside
+/// [1e-100, 1e100], else 1: scaling by it is exact, so the linear transforms below give the
+/// same digits on ordinary inputs and no overflow (or underflow) on extreme ones.
+pub fn safe_scale(x: &[f64]) -> f64 {
+    let m = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    if m == 0.0 || !m.is_finite() || (1e-100..=1e100).contains(&m) {
+        return 1.0;
+    }
+    let e = m.log2().floor() as i32 + 1;
+    2f64.powi(-e)
+}
+
+/// [`envelope`] with extreme magnitudes scaled out first (exactly, by a power of two) and the
+/// result checked: finite, or an error naming `field`.
+pub fn checked_envelope(x: &[f64], field: &str) -> crate::Result<Vec<f64>> {
+    let s = safe_scale(x);
+    let e = if s == 1.0 {
+        envelope(x)
+    } else {
+        let scaled: Vec<f64> = x.iter().map(|v| v * s).collect();
+        envelope(&scaled).into_iter().map(|v| v / s).collect()
+    };
+    if e.iter().any(|v| !v.is_finite()) {
+        return Err(crate::WingbeatError::NonFinite {
+            what: "envelope".into(),
+            detail: format!(
+                "the envelope of `{field}` (|x| up to {}) exceeds the largest f64; scale the series down",
+                crate::error::num(x.iter().fold(0.0_f64, |m, v| m.max(v.abs())))
+            ),
+        });
+    }
+    Ok(e)
+}
+
 /// Moving average over `w` samples (centred; shrinks at the ends).
 pub fn moving_average(x: &[f64], w: usize) -> Vec<f64> {
     let n = x.len();

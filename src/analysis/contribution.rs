@@ -44,7 +44,22 @@ pub fn contributions(
     coriolis: &[f64],
     total: &[f64],
 ) -> Contributions {
-    let den = sum_sq(total);
+    // A growing (unstable) response can reach 1e200 and more: its squares would overflow, so
+    // every series is scaled by one power of two (exact) chosen from the largest magnitude.
+    let all = [euler, centrifugal, coriolis, total];
+    let m = all
+        .iter()
+        .flat_map(|x| x.iter())
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    let s = crate::analysis::beat::safe_scale(&[m]);
+    let ss = |x: &[f64]| {
+        if s == 1.0 {
+            sum_sq(x)
+        } else {
+            x.iter().map(|v| (v * s) * (v * s)).sum()
+        }
+    };
+    let den = ss(total);
     if den <= 0.0 || !den.is_finite() {
         return Contributions {
             euler: 0.0,
@@ -53,8 +68,8 @@ pub fn contributions(
         };
     }
     Contributions {
-        euler: 100.0 * sum_sq(euler) / den,
-        centrifugal: 100.0 * sum_sq(centrifugal) / den,
-        coriolis: 100.0 * sum_sq(coriolis) / den,
+        euler: 100.0 * ss(euler) / den,
+        centrifugal: 100.0 * ss(centrifugal) / den,
+        coriolis: 100.0 * ss(coriolis) / den,
     }
 }

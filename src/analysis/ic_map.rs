@@ -133,16 +133,22 @@ pub fn ic_map(cfg: &SimConfig, opts: &IcMapOptions) -> Result<IcMap> {
             format!("1 to {MAX_CELLS} cells"),
         ));
     }
-    for (name, r) in [
-        ("ic_map.q_range", opts.q_range),
-        ("ic_map.qdot_range", opts.qdot_range),
+    // The same bounds as a config's initial conditions (`SimConfig::validate`), so the
+    // quadratic forms below stay finite.
+    for (name, r, lim, unit) in [
+        ("ic_map.q_range", opts.q_range, 1.0e6, "q units"),
+        ("ic_map.qdot_range", opts.qdot_range, 1.0e9, "q units per s"),
     ] {
         if let Some([a, b]) = r {
-            if !a.is_finite() || !b.is_finite() || a > b {
+            if !a.is_finite() || !b.is_finite() || a > b || a < -lim || b > lim {
                 return Err(WingbeatError::invalid(
                     name,
-                    format!("[{a}, {b}]"),
-                    "finite [lo, hi] with lo ≤ hi",
+                    format!("[{}, {}]", crate::error::num(a), crate::error::num(b)),
+                    format!(
+                        "finite [lo, hi] with lo ≤ hi inside [{}, {}] {unit}",
+                        crate::error::num(-lim),
+                        crate::error::num(lim)
+                    ),
                 ));
             }
         }
@@ -180,6 +186,14 @@ pub fn ic_map(cfg: &SimConfig, opts: &IcMapOptions) -> Result<IcMap> {
             };
             out.push(if den > 0.0 { 100.0 * num / den } else { 0.0 });
         }
+    }
+    if out.iter().any(|v| !v.is_finite()) {
+        return Err(WingbeatError::NonFinite {
+            what: "ic_map".into(),
+            detail: "a Coriolis share overflowed: the response (or the ranges) are too large; \
+                     shorten the run or narrow `q_range`/`qdot_range`"
+                .into(),
+        });
     }
     let min_percent = out.iter().cloned().fold(f64::MAX, f64::min);
     let max_percent = out.iter().cloned().fold(f64::MIN, f64::max);

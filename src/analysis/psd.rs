@@ -49,6 +49,10 @@ impl Default for WelchOptions {
     }
 }
 
+/// Lowest sample rate accepted, Hz (below it the bin frequencies and the density lose their
+/// meaning in f64; a run's own rate is at least 1 / 3600 s).
+pub const MIN_SAMPLE_RATE_HZ: f64 = 1e-6;
+
 /// Largest segment accepted.
 pub const MAX_SEGMENT: usize = 1 << 22;
 
@@ -124,7 +128,7 @@ fn detrend(seg: &mut [f64], how: Detrend) {
 /// Welch PSD of `x` sampled at `fs` Hz. `flap_hz`, if given, labels peaks as multiples of it.
 pub fn welch(x: &[f64], fs: f64, opts: &WelchOptions, flap_hz: Option<f64>) -> Result<Spectrum> {
     opts.validate()?;
-    crate::error::check_positive("psd.sample_rate_hz", fs, 1e9, "Hz")?;
+    crate::error::check_range("psd.sample_rate_hz", fs, MIN_SAMPLE_RATE_HZ, 1e9, "Hz")?;
     if x.len() < 8 {
         return Err(WingbeatError::invalid(
             "psd.series",
@@ -139,6 +143,9 @@ pub fn welch(x: &[f64], fs: f64, opts: &WelchOptions, flap_hz: Option<f64>) -> R
             "finite values",
         ));
     }
+    // Extreme magnitudes are scaled out exactly (a power of two) and back in at the end, so the
+    // squares cannot overflow on the way; a density that itself exceeds f64 is refused below.
+    let sx = crate::analysis::beat::safe_scale(x);
     let nseg = opts.segment_len.min(x.len());
     let step = ((nseg as f64 * (1.0 - opts.overlap)).round() as usize).max(1);
     let win: Vec<f64> = (0..nseg)
@@ -155,6 +162,11 @@ pub fn welch(x: &[f64], fs: f64, opts: &WelchOptions, flap_hz: Option<f64>) -> R
     let mut start = 0;
     while start + nseg <= x.len() {
         buf.copy_from_slice(&x[start..start + nseg]);
+        if sx != 1.0 {
+            for b in &mut buf {
+                *b *= sx;
+            }
+        }
         detrend(&mut buf, opts.detrend);
         for (b, w) in buf.iter_mut().zip(&win) {
             *b *= w;
@@ -180,9 +192,24 @@ pub fn welch(x: &[f64], fs: f64, opts: &WelchOptions, flap_hz: Option<f64>) -> R
             } else {
                 2.0
             };
-            a * scale * one_sided
+            let p = a * scale * one_sided;
+            if sx == 1.0 {
+                p
+            } else {
+                p / sx / sx
+            }
         })
         .collect();
+    if psd.iter().any(|p| !p.is_finite()) {
+        return Err(WingbeatError::NonFinite {
+            what: "psd".into(),
+            detail: format!(
+                "the density of `psd.series` (|x| up to about {}, sample rate {} Hz) exceeds the largest f64; scale the series down",
+                crate::error::num(if sx == 1.0 { 1e100 } else { 0.5 / sx }),
+                crate::error::num(fs)
+            ),
+        });
+    }
     let freq_hz: Vec<f64> = (0..nb).map(|k| k as f64 * fs / nseg as f64).collect();
     let peaks = find_peaks(&freq_hz, &psd, opts.max_peaks, flap_hz);
     Ok(Spectrum {

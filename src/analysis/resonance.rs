@@ -28,10 +28,7 @@ use crate::config::SimConfig;
 use crate::error::{check_positive, check_range, Result, WingbeatError};
 use crate::floquet::FloquetResult;
 use crate::kinematics::MAX_FLAP_HZ;
-use crate::model::Mode;
 use crate::simulate::floquet_for;
-use crate::solve::propagator::{MAX_OMEGA_H, MIN_STEPS_PER_PERIOD};
-use crate::solve::{LinearOde, ModalOde};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -91,26 +88,9 @@ pub struct ResonanceMap {
     pub modes: Vec<ResonanceMode>,
 }
 
-/// Estimated cost of [`floquet_for`] for `mode` under `cfg`'s kinematics, in Gauss–Legendre
-/// step equivalents: the full period (plus its error-estimate rerun at twice the step), the
-/// homogeneous period sampled at the checkpoints the Floquet solution needs (plus its rerun),
-/// and the DFT over those checkpoints (counted as 1/25 step per term). It mirrors the step-size
-/// rule of [`crate::solve::propagator`] and the sampling rule of [`crate::floquet::analyse`].
-pub fn analysis_cost(kin: &crate::kinematics::Compiled, mode: &Mode) -> f64 {
-    let ode = ModalOde::new(kin, mode);
-    let s = ode.freq_scale().max(1e-300);
-    let t = ode.period();
-    let tp = ode.homogeneous_period();
-    let steps = |span: f64| {
-        let hmax = (MAX_OMEGA_H / s).min(span / MIN_STEPS_PER_PERIOD as f64);
-        (span / hmax).ceil()
-    };
-    let ratio = s * tp / (2.0 * PI);
-    let nh = ((4.0 * ratio + 16.0).min(1.0e9) as usize)
-        .next_power_of_two()
-        .clamp(32, 1 << 16) as f64;
-    1.5 * steps(t) + nh + 1.5 * steps(tp) + nh * nh / 25.0
-}
+/// The Floquet analysis' cost estimate (moved to [`crate::floquet::analysis_cost`], which
+/// the run budget of `simulate` uses as well).
+pub use crate::floquet::analysis_cost;
 
 fn grid(from: f64, to: f64, n: usize) -> Vec<f64> {
     (0..n)

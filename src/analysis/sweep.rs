@@ -57,8 +57,30 @@ pub struct SweepOptions {
     pub points: usize,
 }
 
+/// Names the sweep value in an input error.
+fn at_value(e: WingbeatError, v: f64) -> WingbeatError {
+    match e {
+        WingbeatError::InvalidInput {
+            field,
+            value,
+            allowed,
+        } => WingbeatError::InvalidInput {
+            field: format!("{field} (sweep value {})", crate::error::num(v)),
+            value,
+            allowed,
+        },
+        other => other,
+    }
+}
+
 /// Most sweep points.
 pub const MAX_POINTS: usize = 2001;
+
+/// Most work one sweep may take: the sum over its points of each run's
+/// [`crate::simulate::run_cost`] (step equivalents, about 1 µs each natively), checked before
+/// the first point runs: about 20 s natively. The paper's Fig. 6 sweep (31 points of 2 s)
+/// costs 3e5.
+pub const MAX_SWEEP_WORK: f64 = 2.0e7;
 
 /// Result at one sweep value for one mode.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -143,22 +165,39 @@ pub fn sweep(
     }
     crate::error::check_range("sweep.from", opts.from, -1e6, 1e6, "")?;
     crate::error::check_range("sweep.to", opts.to, -1e6, 1e6, "")?;
+    // The whole sweep's cost, before any work: every point's config is built (and checked)
+    // first, and the sum of their run costs must fit.
+    let mut work = 0.0;
+    for i in 0..opts.points {
+        let v = opts.from + (opts.to - opts.from) * i as f64 / (opts.points - 1) as f64;
+        let c = apply(cfg, opts.param, v)?;
+        c.validate().map_err(|e| at_value(e, v))?;
+        work += crate::simulate::run_cost(&c).0;
+        if work.is_nan() || work > MAX_SWEEP_WORK {
+            return Err(WingbeatError::ResourceCap {
+                field: "sweep (points × each run's modes × steps per flap period, and samples)"
+                    .into(),
+                requested: format!(
+                    "more than {} step equivalents by point {} of {} ({} = {})",
+                    crate::error::num(MAX_SWEEP_WORK),
+                    i + 1,
+                    opts.points,
+                    serde_json::to_value(opts.param)
+                        .ok()
+                        .and_then(|n| n.as_str().map(str::to_string))
+                        .unwrap_or_default(),
+                    crate::error::num(v)
+                ),
+                cap: format!("{} step equivalents", crate::error::num(MAX_SWEEP_WORK)),
+                why: "computing time; use fewer points, a shorter duration or a lower sample rate, or keep the flap frequency up".into(),
+            });
+        }
+    }
     let mut points = Vec::with_capacity(opts.points);
     for i in 0..opts.points {
         let v = opts.from + (opts.to - opts.from) * i as f64 / (opts.points - 1) as f64;
         let c = apply(cfg, opts.param, v)?;
-        let r = simulate(&c).map_err(|e| match e {
-            WingbeatError::InvalidInput {
-                field,
-                value,
-                allowed,
-            } => WingbeatError::InvalidInput {
-                field: format!("{field} (sweep value {v})"),
-                value,
-                allowed,
-            },
-            other => other,
-        })?;
+        let r = simulate(&c).map_err(|e| at_value(e, v))?;
         let modes = r
             .modes
             .iter()

@@ -45,8 +45,9 @@ enum Command {
     ///
     /// When a summary is null (JSON has no NaN, so NaN is written as null):
     /// `floquet.beat_period_s` is null when the effective frequency coincides with the
-    /// nearest flap harmonic n_b·f_d (|f_eff − n_b f_d| ≤ 1e-9 · max(f_eff, 1 Hz): no beat);
-    /// `floquet.beat_period_vs_2fd_s` likewise against 2 f_d; `floquet.averaged_freq_hz` is
+    /// nearest flap harmonic n_b·f_d (|f_eff − n_b f_d| ≤ 1e-9 · max(f_eff, 1 Hz): no beat),
+    /// and for an unstable mode (`floquet.stable` false, a multiplier with |λ| > 1: the
+    /// response grows instead of beating); `floquet.beat_period_vs_2fd_s` likewise against 2 f_d; `floquet.averaged_freq_hz` is
     /// null when ω² minus the mean stiffness coefficient is not positive (no real naive
     /// estimate). `strain` is absent when no mode carries modal strains, and `strain_points`
     /// unless more than one point is named.
@@ -65,7 +66,7 @@ enum Command {
     /// the total response, including free vibration from nonzero initial conditions), the
     /// Floquet effective frequency, the beat period and the peak |q_total|. `beat_period_s` is
     /// null (empty in CSV) when the effective frequency coincides with the nearest flap
-    /// harmonic (see `simulate --help`).
+    /// harmonic or the mode is unstable (see `simulate --help`).
     Sweep(SweepArgs),
     /// Every claim of the paper's §3–4: what it says, what wingbeat computes, whether it holds.
     Reproduce(ReproduceArgs),
@@ -279,8 +280,27 @@ struct ReproduceArgs {
 }
 
 /// Parses the command line and runs; returns what to print.
+/// The command line: every option that takes a value accepts a negative number
+/// (`--camber -0.1`), so that the range check, not the parser, answers.
+fn command() -> clap::Command {
+    fn allow_negative(c: clap::Command) -> clap::Command {
+        c.mut_args(|a| {
+            if a.get_action().takes_values() && !a.is_positional() {
+                a.allow_negative_numbers(true)
+            } else {
+                a
+            }
+        })
+        .mut_subcommands(allow_negative)
+    }
+    allow_negative(<Cli as clap::CommandFactory>::command())
+}
+
 pub fn run() -> Result<String> {
-    let cli = match Cli::try_parse() {
+    let parsed = command()
+        .try_get_matches()
+        .and_then(|m| <Cli as clap::FromArgMatches>::from_arg_matches(&m));
+    let cli = match parsed {
         Ok(c) => c,
         Err(e) => {
             use clap::error::ErrorKind;
@@ -307,22 +327,43 @@ pub fn run() -> Result<String> {
     }
 }
 
+/// Largest input file read, bytes.
+const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
+
+/// Reads a whole input file, at most [`MAX_FILE_BYTES`]: the cap is checked while reading, so
+/// it holds for devices and pipes (`/dev/zero`, `<(…)`) as for regular files.
 fn read_file(path: &std::path::Path) -> Result<String> {
-    let meta = std::fs::metadata(path).map_err(|e| WingbeatError::Parse {
+    use std::io::Read;
+    let parse = |e: std::io::Error| WingbeatError::Parse {
         what: path.display().to_string(),
         message: e.to_string(),
-    })?;
-    if meta.len() > 64 * 1024 * 1024 {
-        return Err(WingbeatError::ResourceCap {
-            field: path.display().to_string(),
-            requested: format!("{} bytes", meta.len()),
-            cap: "64 MiB".into(),
-            why: "input files are read whole".into(),
-        });
+    };
+    let cap = |n: u64| WingbeatError::ResourceCap {
+        field: path.display().to_string(),
+        requested: if n > MAX_FILE_BYTES {
+            format!("{n} bytes")
+        } else {
+            format!("more than {MAX_FILE_BYTES} bytes")
+        },
+        cap: "64 MiB".into(),
+        why: "input files are read whole".into(),
+    };
+    let file = std::fs::File::open(path).map_err(parse)?;
+    if let Ok(meta) = file.metadata() {
+        if meta.is_file() && meta.len() > MAX_FILE_BYTES {
+            return Err(cap(meta.len()));
+        }
     }
-    std::fs::read_to_string(path).map_err(|e| WingbeatError::Parse {
+    let mut bytes = Vec::new();
+    file.take(MAX_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(parse)?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(cap(0));
+    }
+    String::from_utf8(bytes).map_err(|e| WingbeatError::Parse {
         what: path.display().to_string(),
-        message: e.to_string(),
+        message: format!("not UTF-8 text: {e}"),
     })
 }
 

@@ -2,10 +2,10 @@
 //! panels need in one `analyze` call), envelopes, plot decimation, sweeps, the
 //! initial-condition map and the resonance map.
 
-use super::helpers::{self, check_series, opt_or_nan};
+use super::helpers::{self, opt_or_nan};
 use super::marshal::{
-    config_from, err, f64a, from_js, obj_with, progress_fn, required_js, set, sim_js, spectrum_js,
-    to_js,
+    config_from, err, f64a, from_js, obj_with, progress_fn, required_js, series_from_js, set,
+    sim_js, spectrum_js, to_js,
 };
 use crate::analysis::angles::angles_on;
 use crate::analysis::beat;
@@ -26,31 +26,38 @@ use wasm_bindgen::prelude::*;
 /// `flap_hz` when given.
 #[wasm_bindgen(unchecked_return_type = "Spectrum")]
 pub fn psd(
-    series: &[f64],
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] series: JsValue,
     sample_rate_hz: f64,
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
     flap_hz: Option<f64>,
 ) -> Result<JsValue, JsError> {
     let opts: WelchOptions = from_js(opts, "psd")?;
-    check_series("psd.series", series).map_err(err)?;
+    let series = series_from_js(&series, "psd.series", crate::config::MAX_SAMPLES)?;
     if let Some(f) = flap_hz {
         crate::error::check_positive("psd.flap_hz", f, 1e9, "Hz").map_err(err)?;
     }
-    spectrum_js(&welch(series, sample_rate_hz, &opts, flap_hz).map_err(err)?)
+    spectrum_js(&welch(&series, sample_rate_hz, &opts, flap_hz).map_err(err)?)
 }
 
 /// Envelope |analytic signal| of a series (FFT Hilbert transform), used for the beat.
 #[wasm_bindgen]
-pub fn envelope(series: &[f64]) -> Result<Float64Array, JsError> {
-    check_series("envelope.series", series).map_err(err)?;
-    Ok(Float64Array::from(&beat::envelope(series)[..]))
+pub fn envelope(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] series: JsValue,
+) -> Result<Float64Array, JsError> {
+    let series = series_from_js(&series, "envelope.series", crate::config::MAX_SAMPLES)?;
+    let e = beat::checked_envelope(&series, "envelope.series").map_err(err)?;
+    Ok(Float64Array::from(&e[..]))
 }
 
 /// Min/max decimation for plotting: returns `{ index: Float64Array, value: Float64Array }`.
 #[wasm_bindgen(js_name = decimateMinMax)]
-pub fn decimate_min_max(series: &[f64], buckets: usize) -> Result<JsValue, JsError> {
-    check_series("decimate.series", series).map_err(err)?;
-    let (idx, v) = helpers::decimate_minmax(series, buckets.min(1 << 20));
+pub fn decimate_min_max(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] series: JsValue,
+    buckets: f64,
+) -> Result<JsValue, JsError> {
+    let series = series_from_js(&series, "decimate.series", crate::config::MAX_SAMPLES)?;
+    let buckets = helpers::check_int("decimate.buckets", buckets, 0, 1 << 20).map_err(err)?;
+    let (idx, v) = helpers::decimate_minmax(&series, buckets);
     let idx: Vec<f64> = idx.into_iter().map(|i| i as f64).collect();
     Ok(obj_with(&[("index", &idx), ("value", &v)])?.into())
 }
@@ -68,15 +75,22 @@ fn compute(cfg: &SimConfig, which: Option<usize>) -> Result<Computed, JsError> {
     Ok(Computed { sim, forces })
 }
 
-fn check_mode(cfg: &SimConfig, mode: Option<usize>) -> Result<(), JsError> {
-    match mode {
-        Some(k) if k >= cfg.modes.len() => Err(err(WingbeatError::invalid(
-            "mode",
-            k,
-            format!("a mode index in [0, {}]", cfg.modes.len().saturating_sub(1)),
-        ))),
-        _ => Ok(()),
-    }
+/// The optional mode index a caller passed (a JS number): an integer in [0, modes − 1], never
+/// coerced.
+fn check_mode(cfg: &SimConfig, mode: Option<f64>) -> Result<Option<usize>, JsError> {
+    mode.map(|k| {
+        helpers::check_int("mode", k, 0, cfg.modes.len().saturating_sub(1)).map_err(|_| {
+            err(WingbeatError::invalid(
+                "mode",
+                k,
+                format!(
+                    "an integer mode index in [0, {}]",
+                    cfg.modes.len().saturating_sub(1)
+                ),
+            ))
+        })
+    })
+    .transpose()
 }
 
 fn spectra_js(c: &Computed, fs: f64, opts: &WelchOptions) -> Result<Array, JsError> {
@@ -108,13 +122,13 @@ fn spectra_js(c: &Computed, fs: f64, opts: &WelchOptions) -> Result<Array, JsErr
 fn live_inputs(
     cfg: JsValue,
     opts: JsValue,
-    mode: Option<usize>,
-) -> Result<(SimConfig, WelchOptions), JsError> {
+    mode: Option<f64>,
+) -> Result<(SimConfig, WelchOptions, Option<usize>), JsError> {
     let cfg = config_from(cfg)?;
     let opts: WelchOptions = from_js(opts, "psd")?;
     opts.validate().map_err(err)?;
-    check_mode(&cfg, mode)?;
-    Ok((cfg, opts))
+    let mode = check_mode(&cfg, mode)?;
+    Ok((cfg, opts, mode))
 }
 
 /// PSDs, per mode, of the Euler, centrifugal and Coriolis forces, of the stiffness force
@@ -125,9 +139,9 @@ fn live_inputs(
 pub fn spectra(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
-    mode: Option<usize>,
+    mode: Option<f64>,
 ) -> Result<JsValue, JsError> {
-    let (cfg, opts) = live_inputs(cfg, opts, mode)?;
+    let (cfg, opts, mode) = live_inputs(cfg, opts, mode)?;
     Ok(spectra_js(&compute(&cfg, mode)?, cfg.sample_rate_hz, &opts)?.into())
 }
 
@@ -145,9 +159,9 @@ pub fn spectra(
 pub fn analyze(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
-    mode: Option<usize>,
+    mode: Option<f64>,
 ) -> Result<JsValue, JsError> {
-    let (cfg, opts) = live_inputs(cfg, opts, mode)?;
+    let (cfg, opts, mode) = live_inputs(cfg, opts, mode)?;
     let c = compute(&cfg, mode)?;
     let o = Object::new();
     set(&o, "sim", &sim_js(&c.sim, cfg.sample_rate_hz)?)?;

@@ -11,6 +11,12 @@ use crate::error::{Result, WingbeatError};
 /// cap keeps a run near 200 MB.
 pub const WEB_MAX_SAMPLE_VALUES: usize = 2_000_000;
 
+/// Most work one run may take in the browser ([`crate::simulate::run_cost`], step
+/// equivalents): a fifth of the native [`crate::simulate::MAX_RUN_WORK`], about 1 s natively
+/// and 1.5–2 s in wasm, since `analyze` runs on the page's thread. The lab's own range (flap
+/// 5–60 Hz, up to 8 FE modes of a wing) stays far below it.
+pub const WEB_MAX_RUN_WORK: f64 = 1.0e6;
+
 /// Checks the web API's own resource caps (after the core's `validate`, which checks the rest).
 pub fn check_web_caps(cfg: &SimConfig) -> Result<()> {
     let n = cfg.duration_s * cfg.sample_rate_hz + 1.0;
@@ -23,6 +29,7 @@ pub fn check_web_caps(cfg: &SimConfig) -> Result<()> {
             why: "wasm32 memory: running out aborts the page's wasm instance".into(),
         });
     }
+    crate::simulate::check_run_cost(cfg, WEB_MAX_RUN_WORK, "run in the browser")?;
     Ok(())
 }
 
@@ -117,6 +124,20 @@ pub fn fast_envelope(x: &[f64]) -> Vec<f64> {
 /// `None` as NaN, for typed-array columns.
 pub fn opt_or_nan(v: Option<f64>) -> f64 {
     v.unwrap_or(f64::NAN)
+}
+
+/// An integer argument passed as a JS number (an index, a count): refused, naming `field`,
+/// unless it is an integer in `[lo, hi]` — never rounded, wrapped or clamped (1.5, −1, NaN,
+/// 2³² and ±Infinity are errors, not 1, 4294967295 or 0).
+pub fn check_int(field: &str, v: f64, lo: usize, hi: usize) -> Result<usize> {
+    if !(v.is_finite() && v.fract() == 0.0 && v >= lo as f64 && v <= hi as f64) {
+        return Err(WingbeatError::invalid(
+            field,
+            v,
+            format!("an integer in [{lo}, {hi}]"),
+        ));
+    }
+    Ok(v as usize)
 }
 
 /// The mode count a caller passed as a JS number: an integer in [1, MAX_MODES].

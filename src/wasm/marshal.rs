@@ -35,13 +35,21 @@ pub(crate) fn parse_js<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T,
 
 /// [`parse_js`] with the error as a plain message (for results that report rather than throw).
 pub(crate) fn parse_js_text<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T, String> {
+    if v.is_function() {
+        return Err(format!(
+            "invalid value for `{what}`: a function (expected a plain object, array or number)"
+        ));
+    }
     let text: String = js_sys::JSON::stringify(&v)
         .map_err(|_| {
             format!(
                 "invalid value for `{what}`: not JSON-serialisable (cyclic, BigInt or a throwing getter)"
             )
         })?
-        .into();
+        .as_string()
+        .ok_or_else(|| {
+            format!("invalid value for `{what}`: not JSON-serialisable (a symbol or undefined)")
+        })?;
     let mut de = serde_json::Deserializer::from_str(&text);
     serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
@@ -58,6 +66,39 @@ pub(crate) fn parse_js_text<T: DeserializeOwned>(v: JsValue, what: &str) -> Resu
         };
         format!("invalid value for `{place}`: {inner}{hint}")
     })
+}
+
+/// Reads a numeric series passed from JS (a `Float64Array` or an array of numbers), checking
+/// its length against `cap` *before* anything is allocated (an object such as
+/// `{ length: 2e9 }` is refused by name instead of aborting the instance), then that it is
+/// non-empty and finite ([`super::helpers::check_series`]).
+pub(crate) fn series_from_js(v: &JsValue, field: &str, cap: usize) -> Result<Vec<f64>, JsError> {
+    let too_long = |n: f64| {
+        err(WingbeatError::invalid(
+            field,
+            format!("{n} samples"),
+            format!("1 to {cap} samples"),
+        ))
+    };
+    let f = if v.is_instance_of::<Float64Array>() {
+        v.clone().unchecked_into::<Float64Array>()
+    } else if Array::is_array(v) {
+        let n = Array::from(v).length();
+        if n as usize > cap {
+            return Err(too_long(f64::from(n)));
+        }
+        Float64Array::new(v)
+    } else {
+        return Err(JsError::new(&format!(
+            "invalid value for `{field}`: not a Float64Array or an array of numbers"
+        )));
+    };
+    if f.length() as usize > cap {
+        return Err(too_long(f64::from(f.length())));
+    }
+    let x = f.to_vec();
+    super::helpers::check_series(field, &x).map_err(err)?;
+    Ok(x)
 }
 
 /// Deserialises options that have no defaults: `undefined`/`null` is an error that lists the

@@ -2,7 +2,7 @@
 //! parameter table and named overrides), the simulation itself, the force terms, the kinematic angles and the paper-claims report.
 
 use super::helpers;
-use super::helpers::check_series;
+use super::marshal::series_from_js;
 use super::marshal::{config_from, err, from_js, obj_with, sim_js, to_js};
 use crate::config::SimConfig;
 use crate::params::apply_overrides as core_apply_overrides;
@@ -102,13 +102,13 @@ pub fn force_series(
 #[wasm_bindgen(js_name = anglesAt)]
 pub fn angles_at(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
-    times: &[f64],
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] times: JsValue,
 ) -> Result<Float64Array, JsError> {
     let cfg = config_from(cfg)?;
-    check_series("anglesAt.times", times).map_err(err)?;
+    let times = series_from_js(&times, "anglesAt.times", crate::config::MAX_SAMPLES)?;
     let kin = cfg.kinematics.compile();
     let mut out = Vec::with_capacity(3 * times.len());
-    for &t in times {
+    for &t in &times {
         let s = kin.state(t);
         out.extend_from_slice(&[s.alpha, s.beta, s.gamma]);
     }

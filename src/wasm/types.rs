@@ -142,7 +142,7 @@ export interface ResonanceOptions { from_hz: number; to_hz: number; points: numb
 /** One mode's resonance map; arrays row-major [alpha0][flap_hz] (one row without alpha0). */
 export interface ResonanceModeColumns {
   name: string; freq_hz: number; effective_freq_hz: Float64Array; max_modulus: Float64Array;
-  /** NaN where the effective frequency coincides with n·f_d. */ beat_period_s: Float64Array;
+  /** NaN where the effective frequency coincides with n·f_d and where the mode is unstable (|λ| > 1: growth, not a beat). */ beat_period_s: Float64Array;
   /** The flap harmonic n the beat is measured against. */ beat_harmonic: Uint32Array;
   /** 1 = Floquet-stable, 0 = parametric resonance (max_modulus > 1). */ stable: Uint8Array;
 }
