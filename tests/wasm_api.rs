@@ -281,7 +281,7 @@ fn analyze_returns_the_angles_on_the_simulation_grid() {
         [("duration", 0.4), ("alpha_phase", 0.3)],
     )
     .unwrap();
-    let js = wasm::analyze(to_js(&cfg), JsValue::UNDEFINED, Some(0)).unwrap();
+    let js = wasm::analyze(to_js(&cfg), JsValue::UNDEFINED, Some(0.0)).unwrap();
     let t = f64s(&js, "sim.t");
     let core = angle_series(&cfg).unwrap();
     let kin = cfg.kinematics.compile();
@@ -294,7 +294,9 @@ fn analyze_returns_the_angles_on_the_simulation_grid() {
         assert_eq!(&got, want, "{name}");
     }
     // The same numbers `anglesAt` gives for the same times.
-    let at = wasm::angles_at(to_js(&cfg), &t).unwrap().to_vec();
+    let at = wasm::angles_at(to_js(&cfg), wasm_common::fa(&t))
+        .unwrap()
+        .to_vec();
     let alpha = f64s(&js, "angles.alpha");
     for (i, &ti) in t.iter().enumerate().step_by(101) {
         assert_eq!(at[3 * i], alpha[i]);
@@ -639,7 +641,9 @@ fn kinematics_from_csv_matches_core() {
         kinematics: k,
         ..SimConfig::paper()
     };
-    let at = wasm::angles_at(to_js(&cfg), &[0.01]).unwrap().to_vec();
+    let at = wasm::angles_at(to_js(&cfg), wasm_common::fa(&[0.01]))
+        .unwrap()
+        .to_vec();
     close("alpha(T/4)", at[0], 45f64.to_radians());
     for (opts, want) in [
         (
@@ -731,4 +735,94 @@ fn modes_from_json_reads_the_exported_document() {
     let broken = text.replacen("\"triangles\":[[", "\"triangles\":[[9999999,", 1);
     let m = message(wasm::modes_from_json(&broken));
     assert!(m.contains("modes JSON: fe"), "{m}");
+}
+
+// ---- Issue 13: no coercion, no trap, no non-finite result, no key ignored ----
+
+#[wasm_bindgen_test]
+fn issue13_integer_arguments_are_never_coerced() {
+    let cfg = to_js(&SimConfig {
+        duration_s: 0.2,
+        ..SimConfig::paper()
+    });
+    for k in [1.5, -1.0, f64::NAN, 4294967296.0, f64::INFINITY] {
+        let m = message(wasm::analyze(cfg.clone(), JsValue::UNDEFINED, Some(k)));
+        assert!(m.contains("`mode`") && m.contains("integer"), "{k}: {m}");
+        assert!(!m.contains("4294967295"), "{m}");
+        let m = message(wasm::spectra(cfg.clone(), JsValue::UNDEFINED, Some(k)));
+        assert!(m.contains("`mode`"), "{k}: {m}");
+    }
+    let x = wasm_common::fa(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+    for b in [-1.0, f64::NAN, 1e20, 2.5] {
+        let m = message(wasm::decimate_min_max(x.clone(), b));
+        assert!(m.contains("decimate.buckets"), "{b}: {m}");
+    }
+}
+
+#[wasm_bindgen_test]
+fn issue13_functions_and_fake_arrays_are_refused_by_name() {
+    let f: JsValue = js_sys::Function::new_no_args("return 1").into();
+    let m = message(wasm::analyze(f.clone(), JsValue::UNDEFINED, None));
+    assert!(
+        m.contains("a function") && !m.contains("unwrap_throw"),
+        "{m}"
+    );
+    let m = message(wasm::simulate(f.clone()));
+    assert!(m.contains("a function"), "{m}");
+    // `{ length: 2e9 }` is not allocated: refused by name.
+    let fake = json(r#"{"length": 2000000000}"#);
+    let m = message(wasm::psd(fake.clone(), 100.0, JsValue::UNDEFINED, None));
+    assert!(m.contains("psd.series"), "{m}");
+    let m = message(wasm::envelope(fake));
+    assert!(m.contains("envelope.series"), "{m}");
+    let m = message(wasm::psd(f, 100.0, JsValue::UNDEFINED, None));
+    assert!(m.contains("psd.series"), "{m}");
+}
+
+#[wasm_bindgen_test]
+fn issue13_psd_envelope_and_ic_map_are_finite_or_refused() {
+    let x: Vec<f64> = (0..256).map(|i| (i as f64 * 0.3).sin()).collect();
+    let m = message(wasm::psd(
+        wasm_common::fa(&x),
+        5e-324,
+        JsValue::UNDEFINED,
+        None,
+    ));
+    assert!(m.contains("psd.sample_rate_hz"), "{m}");
+    let big: Vec<f64> = x.iter().map(|v| v * 1e308).collect();
+    match wasm::psd(wasm_common::fa(&big), 100.0, JsValue::UNDEFINED, None) {
+        Ok(s) => assert!(f64s(&s, "psd").iter().all(|p| p.is_finite())),
+        Err(e) => {
+            let m = message::<()>(Err(e));
+            assert!(m.contains("psd.series"), "{m}");
+        }
+    }
+    match wasm::envelope(wasm_common::fa(&big)) {
+        Ok(e) => assert!(e.to_vec().iter().all(|v| v.is_finite())),
+        Err(e) => {
+            let m = message::<()>(Err(e));
+            assert!(m.contains("envelope.series"), "{m}");
+        }
+    }
+    let cfg = to_js(&SimConfig {
+        duration_s: 0.2,
+        ..SimConfig::paper()
+    });
+    let m = message(wasm::ic_map(
+        cfg,
+        json(r#"{"n_q": 3, "n_qdot": 3, "q_range": [-1e308, 1e308]}"#),
+    ));
+    assert!(m.contains("ic_map.q_range") && m.contains("1e308"), "{m}");
+}
+
+#[wasm_bindgen_test]
+fn issue13_unknown_nested_keys_are_refused() {
+    let m = message(wasm::simulate(json(
+        r#"{"modes":[{"freq_hz":62.5,"a":[7.5e-6,9.3e-7],"damping":0.05}]}"#,
+    )));
+    assert!(m.contains("modes[0].damping"), "{m}");
+    let m = message(wasm::modes_from_json(
+        r#"{"modes":[{"freq_hz":60,"a":[1e-4,0],"damping":0.05}]}"#,
+    ));
+    assert!(m.contains("damping"), "{m}");
 }

@@ -79,6 +79,11 @@ pub fn close_all(name: &str, got: &[f64], want: &[f64], tol: f64) {
     }
 }
 
+/// A series as the JS side passes it (a `Float64Array`).
+pub fn fa(x: &[f64]) -> JsValue {
+    Float64Array::from(x).into()
+}
+
 pub fn to_js<T: serde::Serialize>(v: &T) -> JsValue {
     v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
         .unwrap()
@@ -199,7 +204,7 @@ pub fn analyze_matches_core() {
         segment_len: 1024,
         ..WelchOptions::default()
     };
-    let js = wasm::analyze(to_js(&cfg), to_js(&opts), Some(1)).unwrap();
+    let js = wasm::analyze(to_js(&cfg), to_js(&opts), Some(1.0)).unwrap();
     assert!(get(&js, "spectra.0").is_null(), "mode 1 not asked for");
     assert!(get(&js, "forces.0").is_null());
     assert!(get(&js, "envelope.0").is_null());
@@ -278,7 +283,7 @@ pub fn analyze_matches_core() {
         &want.psd,
         TOL,
     );
-    let full = wasm::envelope(cor).unwrap().to_vec();
+    let full = wasm::envelope(fa(cor)).unwrap().to_vec();
     close_all("envelope()", &full, &envelope(cor), TOL);
 }
 
@@ -288,7 +293,7 @@ pub fn coriolis_force_peaks_at_twice_the_flap_frequency() {
         segment_len: 4000,
         ..WelchOptions::default()
     };
-    let js = wasm::spectra(to_js(&cfg), to_js(&opts), Some(0)).unwrap();
+    let js = wasm::spectra(to_js(&cfg), to_js(&opts), Some(0.0)).unwrap();
     let f = f64s(&js, "0.coriolis.freq_hz");
     let p = f64s(&js, "0.coriolis.psd");
     // Largest non-DC bin (the Coriolis force also has a large mean: bin 0).
@@ -297,7 +302,7 @@ pub fn coriolis_force_peaks_at_twice_the_flap_frequency() {
     assert!(p[0] > 0.1 * p[i], "DC part visible with detrend none");
     // γ0 = 0: no Coriolis force at all.
     let c0 = wingbeat::analysis::sweep::apply(&cfg, SweepParam::Gamma0, 0.0).unwrap();
-    let js0 = wasm::spectra(to_js(&c0), to_js(&opts), Some(0)).unwrap();
+    let js0 = wasm::spectra(to_js(&c0), to_js(&opts), Some(0.0)).unwrap();
     assert!(f64s(&js0, "0.coriolis.psd").iter().all(|v| *v == 0.0));
 }
 
@@ -307,7 +312,7 @@ pub fn psd_matches_core() {
         segment_len: 512,
         ..WelchOptions::default()
     };
-    let js = wasm::psd(&x, 1000.0, to_js(&opts), Some(8.0)).unwrap();
+    let js = wasm::psd(fa(&x), 1000.0, to_js(&opts), Some(8.0)).unwrap();
     let want = welch(&x, 1000.0, &opts, Some(8.0)).unwrap();
     close_all("psd", &f64s(&js, "psd"), &want.psd, TOL);
     close(
@@ -402,9 +407,9 @@ pub fn defaults_limits_reproduce() {
     assert_eq!(num(&l, "web_max_sample_values"), 2_000_000.0);
     assert!(wasm::validate_config(JsValue::UNDEFINED).is_ok());
     let x = [1.0, 5.0, 2.0, 0.0, 3.0, 3.0];
-    let d = wasm::decimate_min_max(&x, 3).unwrap();
+    let d = wasm::decimate_min_max(fa(&x), 3.0).unwrap();
     assert_eq!(f64s(&d, "value"), x.to_vec());
-    let d = wasm::decimate_min_max(&x, 1).unwrap();
+    let d = wasm::decimate_min_max(fa(&x), 1.0).unwrap();
     assert_eq!(f64s(&d, "value"), vec![5.0, 0.0]);
     assert_eq!(f64s(&d, "index"), vec![1.0, 3.0]);
 }
@@ -487,7 +492,7 @@ pub fn bad_input_names_the_field() {
     assert!(m.contains("ic_map.mode"), "{m}");
     let m = message(wasm::ic_map(cfg.clone(), bad(r#"{"n_q": 1.5}"#)));
     assert!(m.contains("ic_map.n_q"), "{m}");
-    let m = message(wasm::analyze(cfg.clone(), JsValue::UNDEFINED, Some(9)));
+    let m = message(wasm::analyze(cfg.clone(), JsValue::UNDEFINED, Some(9.0)));
     assert!(m.contains("mode"), "{m}");
     let m = message(wasm::analyze(
         cfg.clone(),
@@ -498,15 +503,20 @@ pub fn bad_input_names_the_field() {
     let m = message(wasm::analyze(cfg, bad(r#"{"detrend": "cubic"}"#), None));
     assert!(m.contains("psd.detrend"), "{m}");
     let m = message(wasm::psd(
-        &[1.0, 2.0, f64::NAN, 3.0],
+        fa(&[1.0, 2.0, f64::NAN, 3.0]),
         100.0,
         JsValue::UNDEFINED,
         None,
     ));
     assert!(m.contains("psd.series[2]"), "{m}");
-    let m = message(wasm::psd(&[1.0; 64], f64::NAN, JsValue::UNDEFINED, None));
+    let m = message(wasm::psd(
+        fa(&[1.0; 64]),
+        f64::NAN,
+        JsValue::UNDEFINED,
+        None,
+    ));
     assert!(m.contains("psd.sample_rate_hz"), "{m}");
-    let m = message(wasm::envelope(&[]));
+    let m = message(wasm::envelope(fa(&[])));
     assert!(m.contains("envelope.series"), "{m}");
 }
 
@@ -617,7 +627,7 @@ pub fn angles_match_core() {
     let cfg = short_paper();
     let kin = cfg.kinematics.compile();
     let times = [0.0, 0.0013, 0.01, 0.037, 0.4];
-    let got = wasm::angles_at(to_js(&cfg), &times).unwrap().to_vec();
+    let got = wasm::angles_at(to_js(&cfg), fa(&times)).unwrap().to_vec();
     assert_eq!(got.len(), 15);
     for (i, &t) in times.iter().enumerate() {
         let s = kin.state(t);
@@ -628,7 +638,7 @@ pub fn angles_match_core() {
     // A quarter period (0.01 s at 25 Hz) puts every sinusoid at its amplitude.
     close("alpha(T/4)", got[6], 0.8, 1e-12);
     close("gamma(T/4)", got[8], 0.2, 1e-12);
-    let m = message(wasm::angles_at(to_js(&cfg), &[0.0, f64::NAN]));
+    let m = message(wasm::angles_at(to_js(&cfg), fa(&[0.0, f64::NAN])));
     assert!(m.contains("anglesAt.times[1]"), "{m}");
 }
 
