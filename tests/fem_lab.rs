@@ -225,3 +225,53 @@ fn modes_document_carries_the_modes_and_the_mesh_size() {
     let fe_back: FemModes = serde_json::from_value(v).unwrap();
     assert_eq!(fe_back.freq_hz, fe.freq_hz);
 }
+
+/// The mesher is deterministic: the same input gives the same nodes and triangles, call after
+/// call (spade's bulk loader iterated hash sets, whose order changes from one set to the
+/// next, so the triangulation and with it the node count used to vary between runs).
+#[test]
+fn meshing_the_same_outline_twice_gives_the_same_mesh() {
+    let tapered = parse_planform_csv(
+        &std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/www/examples/planform-tapered.csv"
+        ))
+        .unwrap(),
+    )
+    .unwrap();
+    let cases = [
+        (
+            "tapered, automatic size",
+            tapered.clone(),
+            None,
+            Clamp::Root,
+        ),
+        ("tapered, 0.53 mm", tapered, Some(0.53), Clamp::Root),
+        (
+            "default wing, strip",
+            manduca_planform(),
+            Some(1.0),
+            Clamp::Strip { x_mm: 3.0 },
+        ),
+        ("notched", outlines()[2].1.clone(), None, Clamp::Root),
+    ];
+    for (name, planform, h, clamp) in cases {
+        let input = FemInput {
+            planform_mm: planform,
+            mesh_size_mm: h,
+            clamp,
+            ..FemInput::default()
+        };
+        let (_, first, _) = mesh_input(&input).unwrap();
+        for _ in 0..4 {
+            let (_, again, _) = mesh_input(&input).unwrap();
+            assert_eq!(again.nodes.len(), first.nodes.len(), "{name}");
+            assert!(again.nodes == first.nodes, "{name}: node positions differ");
+            assert!(
+                again.triangles == first.triangles,
+                "{name}: triangles differ"
+            );
+        }
+        println!("{name}: {} nodes, repeatable", first.nodes.len());
+    }
+}
