@@ -830,31 +830,7 @@ impl FemModes {
     /// Locates (x, y) in mm: (triangle, barycentric weights, inside?). Outside points map to
     /// the nearest triangle with clamped weights.
     fn locate(&self, x_mm: f64, y_mm: f64) -> Option<(usize, [f64; 3], bool)> {
-        let (x, y) = (x_mm * 1e-3, y_mm * 1e-3);
-        let mut best: Option<(usize, [f64; 3], f64)> = None;
-        for (ti, t) in self.triangles.iter().enumerate() {
-            let (a, b, c) = (self.nodes[t[0]], self.nodes[t[1]], self.nodes[t[2]]);
-            let det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
-            if det == 0.0 {
-                continue;
-            }
-            let l1 = ((b[0] - x) * (c[1] - y) - (c[0] - x) * (b[1] - y)) / det;
-            let l2 = ((c[0] - x) * (a[1] - y) - (a[0] - x) * (c[1] - y)) / det;
-            let l3 = 1.0 - l1 - l2;
-            let out = (-l1).max(-l2).max(-l3).max(0.0);
-            if best.is_none_or(|bst| out < bst.2) {
-                best = Some((ti, [l1, l2, l3], out));
-            }
-            if out == 0.0 {
-                break;
-            }
-        }
-        best.map(|(ti, l, out)| {
-            let mut lc = l.map(|v| v.max(0.0));
-            let s: f64 = lc.iter().sum();
-            lc.iter_mut().for_each(|v| *v /= s);
-            (ti, lc, out <= 1e-9)
-        })
+        crate::analysis::strain::locate_in_mesh(&self.nodes, &self.triangles, x_mm, y_mm)
     }
 
     /// Top-surface modal strain [ε_x, ε_y, γ_xy] of mode `mode` (0-based) at (x, y) in mm,
@@ -886,14 +862,9 @@ impl FemModes {
     }
 
     fn interp(&self, mode: usize, ti: usize, l: [f64; 3]) -> [f64; 3] {
-        let t = self.triangles[ti];
-        let mut e = [0.0; 3];
-        for c in 0..3 {
-            for (k, ek) in e.iter_mut().enumerate() {
-                *ek += l[c] * self.strain_nodes[mode][t[c]][k];
-            }
-        }
-        e
+        crate::analysis::strain::interpolate_strain(self.triangles[ti], l, mode, |k, i| {
+            self.strain_nodes[k][i]
+        })
     }
 
     /// [`FemModes::to_modes`], strict: every point must lie inside the meshed planform, else
