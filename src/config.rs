@@ -100,6 +100,29 @@ impl SimConfig {
                 why: "memory for the output series".into(),
             });
         }
+        let points: std::collections::HashSet<&str> = self
+            .modes
+            .iter()
+            .flat_map(|m| m.strains.iter().map(|s| s.point.as_str()))
+            .collect();
+        if points.len() > crate::model::MAX_STRAIN_POINTS {
+            return Err(WingbeatError::invalid(
+                "modes[].strains",
+                format!("{} distinct points", points.len()),
+                format!(
+                    "at most {} strain points in one run",
+                    crate::model::MAX_STRAIN_POINTS
+                ),
+            ));
+        }
+        if (n + 1.0) * 3.0 * points.len() as f64 > MAX_SAMPLE_VALUES as f64 {
+            return Err(WingbeatError::ResourceCap {
+                field: "samples × strain points × 3".into(),
+                requested: format!("{:.0}", (n + 1.0) * 3.0 * points.len() as f64),
+                cap: format!("{MAX_SAMPLE_VALUES}"),
+                why: "memory for the strain series".into(),
+            });
+        }
         if n < 1.0 {
             return Err(WingbeatError::invalid(
                 "duration_s × sample_rate_hz",

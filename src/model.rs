@@ -88,6 +88,9 @@ pub struct Mode {
 
 /// Cap on the number of modes one model may carry.
 pub const MAX_MODES: usize = 64;
+/// Most strain points one mode may carry (and one run may name). Each point adds three output
+/// series as long as the run, so the points also count towards the run's sample-value cap.
+pub const MAX_STRAIN_POINTS: usize = 256;
 /// Largest natural frequency accepted, Hz.
 pub const MAX_FREQ_HZ: f64 = 1.0e5;
 
@@ -109,6 +112,13 @@ impl Mode {
         check_range(&f("zeta"), self.zeta, 0.0, 10.0, "(damping ratio)")?;
         for (i, c) in self.a.iter().enumerate() {
             check_range(&f(&format!("a[{i}]")), *c, -1.0e3, 1.0e3, "kg^0.5 m")?;
+        }
+        if self.strains.len() > MAX_STRAIN_POINTS {
+            return Err(WingbeatError::invalid(
+                f("strains"),
+                format!("{} points", self.strains.len()),
+                format!("at most {MAX_STRAIN_POINTS} strain points per mode"),
+            ));
         }
         for (j, s) in self.strains.iter().enumerate() {
             for (name, v) in [

@@ -328,3 +328,32 @@ fn issue13_ic_map_ranges_are_bounded() {
     .unwrap();
     assert!(m.coriolis_percent.iter().all(|v| v.is_finite()));
 }
+
+#[test]
+fn issue13_strain_points_are_capped_and_linear() {
+    use wingbeat::model::{ModalStrain, MAX_STRAIN_POINTS};
+    let point = |j: usize| ModalStrain {
+        point: format!("S{j}"),
+        eps_x: j as f64,
+        eps_y: 1.0,
+        gamma_xy: -(j as f64),
+    };
+    let mut cfg = SimConfig::paper();
+    cfg.duration_s = 0.05;
+    cfg.modes[0].strains = (0..100_000).map(point).collect();
+    let t0 = Instant::now();
+    let e = simulate(&cfg).unwrap_err().to_string();
+    assert!(t0.elapsed() < Duration::from_secs(5));
+    assert!(e.contains("modes[0].strains") && e.contains("256"), "{e}");
+    // At the cap: every point's series is Σ_k ε_k q_k, in the order first named.
+    cfg.modes[0].strains = (0..MAX_STRAIN_POINTS).map(point).collect();
+    cfg.modes[1].strains = (0..MAX_STRAIN_POINTS).rev().map(point).collect();
+    let r = simulate(&cfg).unwrap();
+    assert_eq!(r.strain_points.len(), MAX_STRAIN_POINTS);
+    for (j, s) in r.strain_points.iter().enumerate() {
+        assert_eq!(s.point, format!("S{j}"));
+        let i = 100;
+        let want = j as f64 * (r.modes[0].q.total[i] + r.modes[1].q.total[i]);
+        assert!((s.eps_x[i] - want).abs() <= 1e-12 * want.abs().max(1e-30));
+    }
+}
