@@ -1,8 +1,8 @@
 //! The shell finite-element side of the wasm API (paper §3.1): `feModes`.
 
-use super::marshal::{err, f64a, from_js, set, to_js};
+use super::marshal::{err, fe_arrays_js, from_js, to_js};
 use crate::fem::{FemInput, BROWSER_MAX_NODES};
-use js_sys::{Object, Uint32Array};
+use js_sys::Object;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
@@ -99,26 +99,6 @@ pub fn fe_modes(
         modes_json,
     })?
     .unchecked_into();
-    set(&o, "freq_hz", &f64a(&fe.freq_hz))?;
-    set(&o, "residuals", &f64a(&fe.residuals))?;
-    let nodes: Vec<f64> = fe.nodes.iter().flatten().copied().collect();
-    set(&o, "nodes", &f64a(&nodes))?;
-    let tris: Vec<u32> = fe
-        .triangles
-        .iter()
-        .flatten()
-        .map(|&i| u32::try_from(i).unwrap_or(u32::MAX))
-        .collect();
-    set(&o, "triangles", &Uint32Array::from(&tris[..]).into())?;
-    let shapes: Vec<f64> = fe.shapes.iter().flatten().copied().collect();
-    set(&o, "shapes", &f64a(&shapes))?;
-    let strains: Vec<f64> = fe
-        .strain_nodes
-        .iter()
-        .flatten()
-        .flatten()
-        .copied()
-        .collect();
-    set(&o, "strain_nodes", &f64a(&strains))?;
+    fe_arrays_js(&o, &fe)?;
     Ok(o.into())
 }
