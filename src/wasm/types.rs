@@ -42,7 +42,9 @@ export interface FloquetResult {
   multipliers: [number, number][]; monodromy: [[number, number], [number, number]];
   stable: boolean; max_modulus: number; growth_rate_per_s: number; homogeneous_period_s: number;
   characteristic_freq_hz: number; dominant_harmonic: number; effective_freq_hz: number;
-  averaged_freq_hz: number; beat_harmonic: number; beat_period_s: number | null;
+  averaged_freq_hz: number; beat_harmonic: number;
+  /** null when f_eff coincides with n·f_d, and for an unstable mode (|λ| > 1: growth, not a beat). */
+  beat_period_s: number | null;
   beat_period_vs_2fd_s: number | null;
 }
 export interface Accuracy { method: string; period_error_estimate: number; periods: number; run_error_bound: number }
