@@ -538,16 +538,20 @@ fn cmd_simulate(a: SimulateArgs) -> Result<String> {
     match a.format {
         Format::Csv => Ok(csv_of(&r)),
         Format::Json => {
-            let mut v = serde_json::to_value(&r).map_err(|e| WingbeatError::NonFinite {
-                what: "JSON output".into(),
-                detail: e.to_string(),
-            })?;
-            if a.repeat > 1 {
-                times.sort_by(f64::total_cmp);
-                v["timing_ms"] =
-                    json!({"median": times[times.len() / 2], "min": times[0], "runs": times.len()});
+            // Written straight from the result (no intermediate `serde_json::Value`, which
+            // took about 3× the memory of the text: issue 13).
+            #[derive(serde::Serialize)]
+            struct Out<'a> {
+                #[serde(flatten)]
+                r: &'a SimResult,
+                #[serde(skip_serializing_if = "Option::is_none")]
+                timing_ms: Option<serde_json::Value>,
             }
-            to_json(&v)
+            let timing_ms = (a.repeat > 1).then(|| {
+                times.sort_by(f64::total_cmp);
+                json!({"median": times[times.len() / 2], "min": times[0], "runs": times.len()})
+            });
+            to_json(&Out { r: &r, timing_ms })
         }
     }
 }
