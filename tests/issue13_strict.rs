@@ -357,3 +357,35 @@ fn issue13_strain_points_are_capped_and_linear() {
         assert!((s.eps_x[i] - want).abs() <= 1e-12 * want.abs().max(1e-30));
     }
 }
+
+#[test]
+fn issue13_shares_of_a_response_grown_past_1e200() {
+    // The instability experiment run long: q_total of mode 1 reaches about 4e212.
+    let base = wingbeat::analysis::sweep::apply(&SimConfig::paper(), SweepParam::Alpha0, 0.87)
+        .and_then(|c| wingbeat::analysis::sweep::apply(&c, SweepParam::FlapHz, 29.5))
+        .unwrap();
+    let run = |d: f64| {
+        let mut c = base.clone();
+        c.duration_s = d;
+        c.sample_rate_hz = 500.0;
+        simulate(&c).unwrap()
+    };
+    let (short, long) = (run(100.0), run(400.0));
+    let peak = long.modes[0]
+        .q
+        .total
+        .iter()
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    assert!(peak > 1e200 && peak.is_finite(), "{peak}");
+    let (a, b) = (
+        short.modes[0].contribution_percent,
+        long.modes[0].contribution_percent,
+    );
+    for (x, y) in [
+        (a.euler, b.euler),
+        (a.centrifugal, b.centrifugal),
+        (a.coriolis, b.coriolis),
+    ] {
+        assert!(y > 0.0 && (x - y).abs() <= 1e-6 * x, "{x} vs {y}");
+    }
+}
