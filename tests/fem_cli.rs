@@ -1,0 +1,78 @@
+//! `wingbeat modes` on an outline that is not the default one (docs/fem.md, "Worked example"):
+//! the automatic mesh size is printed and stored, the strain point lies inside the wing, the
+//! strip clamp's edge is a node row, and `simulate --modes` reads the document back.
+#![cfg(feature = "cli")]
+
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_wingbeat"))
+        .args(args)
+        .output()
+        .expect("wingbeat runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn modes_on_a_slender_outline_with_the_automatic_size() {
+    let dir = std::env::temp_dir().join(format!("wingbeat-fem-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("slender.csv");
+    std::fs::write(
+        &csv,
+        "# synthetic slender wing (not a specimen), mm\nx_mm,y_mm\n0,0\n0,-8\n40,-6\n42,-2\n40,0\n",
+    )
+    .unwrap();
+    let csv_s = csv.to_str().unwrap();
+    let (code, out, err) = run(&[
+        "modes",
+        "--planform",
+        csv_s,
+        "--camber",
+        "0.05",
+        "--clamp",
+        "strip:2",
+        "--n-modes",
+        "2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("mesh size 0.57 mm (automatic)"), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["mesh_size_mm"], 0.57);
+    // P: one eighth of the free span (2 … 42 mm) out from the strip's edge, at mid-chord
+    let s = &v["modes"][0]["strains"][0];
+    assert_eq!(s["point"], "P");
+    assert!(s["eps_x"].as_f64().unwrap().abs() > 1.0, "{s}");
+    let f1 = v["freq_hz"][0].as_f64().unwrap();
+    assert!((f1 - 178.4).abs() < 0.1, "f1 = {f1}");
+    let on_line = v["clamped_nodes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|i| {
+            let x = v["nodes"][i.as_u64().unwrap() as usize][0]
+                .as_f64()
+                .unwrap();
+            (x * 1e3 - 2.0).abs() < 1e-9
+        })
+        .count();
+    assert!(on_line >= 8, "{on_line} clamped nodes on x = 2 mm");
+    let json = dir.join("slender.json");
+    std::fs::write(&json, &out).unwrap();
+    let (code, sim, err) = run(&[
+        "simulate",
+        "--modes",
+        json.to_str().unwrap(),
+        "--duration",
+        "0.1",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let r: serde_json::Value = serde_json::from_str(&sim).unwrap();
+    assert_eq!(r["modes"].as_array().unwrap().len(), 2);
+    assert_eq!(r["modes"][0]["freq_hz"].as_f64().unwrap(), f1);
+    let _ = std::fs::remove_dir_all(&dir);
+}
