@@ -43,6 +43,11 @@ pub fn limits() -> Result<JsValue, JsError> {
         max_resonance_work: f64,
         max_strain_field_work: f64,
         max_outline_points: usize,
+        web_max_run_work: f64,
+        max_sweep_work: f64,
+        min_flap_hz: f64,
+        max_flap_hz: f64,
+        max_strain_points: usize,
     }
     to_js(&Limits {
         max_duration_s: crate::config::MAX_DURATION_S,
@@ -57,6 +62,11 @@ pub fn limits() -> Result<JsValue, JsError> {
         max_resonance_work: crate::analysis::resonance::MAX_WORK,
         max_strain_field_work: crate::analysis::strain::MAX_STRAIN_FIELD_WORK,
         max_outline_points: crate::fem::geometry::MAX_OUTLINE_POINTS,
+        web_max_run_work: helpers::WEB_MAX_RUN_WORK,
+        max_sweep_work: crate::analysis::sweep::MAX_SWEEP_WORK,
+        min_flap_hz: crate::kinematics::MIN_FLAP_HZ,
+        max_flap_hz: crate::kinematics::MAX_FLAP_HZ,
+        max_strain_points: crate::model::MAX_STRAIN_POINTS,
     })
 }
 

@@ -127,6 +127,8 @@ export interface Limits {
   max_resonance_points: number; max_resonance_alpha0_values: number; max_resonance_work: number;
   /** strainField's peak cap (nodes × samples × modes) and the most outline points accepted. */
   max_strain_field_work: number; max_outline_points: number;
+  /** Work budget (issue 13, docs/limits.md): one browser run and one sweep, in step equivalents; the flap frequency range, Hz; strain points per run. */
+  web_max_run_work: number; max_sweep_work: number; min_flap_hz: number; max_flap_hz: number; max_strain_points: number;
 }
 /** Key of one of the lab's numeric parameters (core `params`). */
 export type ParamKey =
