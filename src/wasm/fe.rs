@@ -1,8 +1,7 @@
 //! The shell finite-element side of the wasm API (paper §3.1): `feModes`.
 
-use super::marshal::{err, fe_arrays_js, from_js, to_js};
+use super::marshal::{err, fe_js, from_js};
 use crate::fem::{FemInput, BROWSER_MAX_NODES};
-use js_sys::Object;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
@@ -56,19 +55,7 @@ pub fn fe_modes(
         .model_modes(zeta, &[("P".to_string(), px, py)], "opts.strain_point_mm")
         .map_err(err)?;
     #[derive(Serialize)]
-    struct Meta<'a> {
-        planform_note: &'a str,
-        a: &'a [[f64; 2]],
-        b: &'a [[f64; 2]],
-        mass_kg: f64,
-        centre_of_mass_m: [f64; 3],
-        kinds: &'a [String],
-        mass_orthonormality_error: f64,
-        n_dofs: usize,
-        n_nodes: usize,
-        n_triangles: usize,
-        n_modes: usize,
-        mesh_size_mm: f64,
+    struct Extra<'a> {
         max_nodes: usize,
         strain_point_mm: [f64; 2],
         modes: &'a [crate::model::Mode],
@@ -80,25 +67,14 @@ pub fn fe_modes(
     } else {
         None
     };
-    let o: Object = to_js(&Meta {
-        planform_note: &fe.planform_note,
-        a: &fe.a,
-        b: &fe.b,
-        mass_kg: fe.mass_kg,
-        centre_of_mass_m: fe.centre_of_mass_m,
-        kinds: &fe.kinds,
-        mass_orthonormality_error: fe.mass_orthonormality_error,
-        n_dofs: fe.n_dofs,
-        n_nodes: fe.nodes.len(),
-        n_triangles: fe.triangles.len(),
-        n_modes: fe.freq_hz.len(),
-        mesh_size_mm: fe.mesh_size_mm,
-        max_nodes: input.max_nodes.unwrap_or(BROWSER_MAX_NODES),
-        strain_point_mm: [px, py],
-        modes: &modes,
-        modes_json,
-    })?
-    .unchecked_into();
-    fe_arrays_js(&o, &fe)?;
+    let o = fe_js(
+        &fe,
+        &Extra {
+            max_nodes: input.max_nodes.unwrap_or(BROWSER_MAX_NODES),
+            strain_point_mm: [px, py],
+            modes: &modes,
+            modes_json,
+        },
+    )?;
     Ok(o.into())
 }

@@ -231,6 +231,49 @@ pub(crate) fn spectrum_js(s: &Spectrum) -> Result<JsValue, JsError> {
     Ok(o.into())
 }
 
+/// The small fields every FE result carries (`feModes` and `modesFromJson`'s `fe`), one
+/// list for both; `extra` adds the caller's own fields (flattened into the same object).
+#[derive(Serialize)]
+struct FeMeta<'a, E: Serialize> {
+    planform_note: &'a str,
+    a: &'a [[f64; 2]],
+    b: &'a [[f64; 2]],
+    mass_kg: f64,
+    centre_of_mass_m: [f64; 3],
+    kinds: &'a [String],
+    mass_orthonormality_error: f64,
+    n_dofs: usize,
+    n_nodes: usize,
+    n_triangles: usize,
+    n_modes: usize,
+    mesh_size_mm: f64,
+    #[serde(flatten)]
+    extra: &'a E,
+}
+
+/// `fe` as a JS object: its metadata plus `extra`'s fields, then the long arrays
+/// ([`fe_arrays_js`]).
+pub(crate) fn fe_js<E: Serialize>(fe: &crate::fem::FemModes, extra: &E) -> Result<Object, JsError> {
+    let o: Object = to_js(&FeMeta {
+        planform_note: &fe.planform_note,
+        a: &fe.a,
+        b: &fe.b,
+        mass_kg: fe.mass_kg,
+        centre_of_mass_m: fe.centre_of_mass_m,
+        kinds: &fe.kinds,
+        mass_orthonormality_error: fe.mass_orthonormality_error,
+        n_dofs: fe.n_dofs,
+        n_nodes: fe.nodes.len(),
+        n_triangles: fe.triangles.len(),
+        n_modes: fe.freq_hz.len(),
+        mesh_size_mm: fe.mesh_size_mm,
+        extra,
+    })?
+    .unchecked_into();
+    fe_arrays_js(&o, fe)?;
+    Ok(o)
+}
+
 /// Sets the long arrays of an FE result on `o`, in `feModes`' layout: `freq_hz`, `residuals`,
 /// `nodes` (x, y, z per node, m), `triangles` (`Uint32Array`), `shapes` (mode-major) and
 /// `strain_nodes` (`[(k·n_nodes + i)·3 + c]`).

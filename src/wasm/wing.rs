@@ -304,40 +304,17 @@ pub fn modes_from_json(text: &str) -> Result<JsValue, JsError> {
     set(&o, "modes", &to_js(&doc.modes)?)?;
     if let Some(fe) = &doc.fe {
         #[derive(serde::Serialize)]
-        struct Meta<'a> {
-            planform_note: &'a str,
-            a: &'a [[f64; 2]],
-            b: &'a [[f64; 2]],
-            mass_kg: f64,
-            centre_of_mass_m: [f64; 3],
-            kinds: &'a [String],
-            mass_orthonormality_error: f64,
-            n_dofs: usize,
-            n_nodes: usize,
-            n_triangles: usize,
-            n_modes: usize,
-            mesh_size_mm: f64,
+        struct Extra<'a> {
             clamped_nodes: &'a [usize],
             material: &'a crate::fem::ShellMaterial,
         }
-        let f: Object = to_js(&Meta {
-            planform_note: &fe.planform_note,
-            a: &fe.a,
-            b: &fe.b,
-            mass_kg: fe.mass_kg,
-            centre_of_mass_m: fe.centre_of_mass_m,
-            kinds: &fe.kinds,
-            mass_orthonormality_error: fe.mass_orthonormality_error,
-            n_dofs: fe.n_dofs,
-            n_nodes: fe.nodes.len(),
-            n_triangles: fe.triangles.len(),
-            n_modes: fe.freq_hz.len(),
-            mesh_size_mm: fe.mesh_size_mm,
-            clamped_nodes: &fe.clamped_nodes,
-            material: &fe.material,
-        })?
-        .unchecked_into();
-        super::marshal::fe_arrays_js(&f, fe)?;
+        let f = super::marshal::fe_js(
+            fe,
+            &Extra {
+                clamped_nodes: &fe.clamped_nodes,
+                material: &fe.material,
+            },
+        )?;
         set(&o, "fe", &f)?;
     }
     Ok(o.into())
