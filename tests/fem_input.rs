@@ -67,6 +67,22 @@ fn input_json_round_trip_and_clamp_parse() {
     assert!(Clamp::parse("strip:abc").is_err());
 }
 
+/// Issue 13: an unknown field inside the clamp (or anywhere in the FE input) is refused, not
+/// ignored.
+#[test]
+fn issue13_unknown_clamp_and_input_fields_are_refused() {
+    for bad in [
+        r#"{"clamp": {"strip": {"x_mm": 1.0, "extra": 2}}}"#,
+        r#"{"clamp": {"strip": {"x": 1.0}}}"#,
+        r#"{"clamp": "pinned"}"#,
+        r#"{"material": {"e_pa": 1e9, "youngs": 1}}"#,
+        r#"{"camber": 0.1, "chamber": 0.2}"#,
+    ] {
+        let e = serde_json::from_str::<FemInput>(bad).expect_err(bad);
+        assert!(e.to_string().contains("unknown"), "{bad}: {e}");
+    }
+}
+
 #[test]
 fn bad_outlines_are_rejected() {
     let bowtie = vec![[0.0, 0.0], [10.0, -10.0], [10.0, 0.0], [0.0, -10.0]];

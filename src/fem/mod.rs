@@ -95,9 +95,10 @@ impl ShellMaterial {
     }
 }
 
-/// Root boundary condition (how the wing is held; f2/f1 depends strongly on it).
+/// Root boundary condition (how the wing is held; f2/f1 depends strongly on it). Unknown
+/// fields inside a variant (`{"strip": {"x_mm": 1, "extra": 2}}`) are errors.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum Clamp {
     /// Clamp (all 6 DOFs) the nodes on the outline's root edge(s) lying on x = 0.
     Root,
