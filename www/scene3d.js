@@ -359,6 +359,26 @@ export function robust(values, p = 0.98) {
 export const RANGE_QUANTILE = 0.9;
 
 /**
+ * The strain [ε_x, ε_y, γ_xy] at node i for the modal state q (first m modes):
+ * Σ_k strainNodes[(k·n + i)·3 + c] q_k, written into `out` (a reused 3-array) and returned.
+ * @param {ArrayLike<number>} strainNodes @param {number} nNodes @param {number} m
+ * @param {number} i @param {ArrayLike<number>} q @param {Float64Array} out
+ */
+function strainAt(strainNodes, nNodes, m, i, q, out) {
+  let ex = 0, ey = 0, g = 0;
+  for (let k = 0; k < m; k++) {
+    const o = (k * nNodes + i) * 3;
+    ex += strainNodes[o] * q[k];
+    ey += strainNodes[o + 1] * q[k];
+    g += strainNodes[o + 2] * q[k];
+  }
+  out[0] = ex;
+  out[1] = ey;
+  out[2] = g;
+  return out;
+}
+
+/**
  * The colour range of a run per component: { 1: ε_x, 2: ε_y, 3: γ_xy, 4: |ε| } (limits for
  * WingView.set_strain_range), each the robust (q-quantile over nodes, RANGE_QUANTILE by
  * default) maximum over time of the nodal |strain|. With more than two modes the maximum is over
@@ -368,15 +388,11 @@ export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE, maxSam
   const states = extremeStates(qs, maxSamples);
   const m = Math.min(qs.length, Math.floor(strainNodes.length / (3 * nNodes)));
   const mx = [new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes)];
+  const e = new Float64Array(3);
   for (let i = 0; i < nNodes; i++) {
     for (const q of states) {
-      let ex = 0, ey = 0, g = 0;
-      for (let k = 0; k < m; k++) {
-        const o = (k * nNodes + i) * 3;
-        ex += strainNodes[o] * q[k];
-        ey += strainNodes[o + 1] * q[k];
-        g += strainNodes[o + 2] * q[k];
-      }
+      strainAt(strainNodes, nNodes, m, i, q, e);
+      const ex = e[0], ey = e[1], g = e[2];
       const mag = Math.sqrt(ex * ex + ey * ey + 0.5 * g * g);
       if (Math.abs(ex) > mx[0][i]) mx[0][i] = Math.abs(ex);
       if (Math.abs(ey) > mx[1][i]) mx[1][i] = Math.abs(ey);
@@ -558,16 +574,12 @@ export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSam
     return out;
   }
   const states = extremeStates(qs, maxSamples);
+  const e = new Float64Array(3);
   for (let i = 0; i < nNodes; i++) {
     let acc = 0;
     for (const q of states) {
-      let ex = 0, ey = 0, g = 0;
-      for (let k = 0; k < m; k++) {
-        const o = (k * nNodes + i) * 3;
-        ex += strainNodes[o] * q[k];
-        ey += strainNodes[o + 1] * q[k];
-        g += strainNodes[o + 2] * q[k];
-      }
+      strainAt(strainNodes, nNodes, m, i, q, e);
+      const ex = e[0], ey = e[1], g = e[2];
       const v = c === 0 ? ex : c === 1 ? ey : c === 2 ? g : vonMisesStrain(ex, ey, g);
       acc = Math.max(acc, Math.abs(v));
     }
