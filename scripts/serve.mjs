@@ -2,7 +2,10 @@
 // A tiny static file server for the lab (no dependencies): 127.0.0.1 only, GET/HEAD only,
 // no directory listings, no path traversal, correct MIME types (application/wasm matters for
 // WebAssembly.instantiateStreaming). Plain static hosting: no COOP/COEP headers are needed.
-//   node scripts/serve.mjs [root=www] [port=$PORT|8080]   (port 0 = any free port)
+//   node scripts/serve.mjs [root=www] [port=$PORT|8080] [--cors]   (port 0 = any free port)
+// --cors (or startServer(root, port, { cors: true })) adds `Access-Control-Allow-Origin: *`,
+// what a lab host must send when course pages on other origins load lab.js, its modules, the
+// worker, the wasm and the stylesheets (docs/embedding.md, the element section).
 import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -22,12 +25,24 @@ const MIME = {
   '.txt': 'text/plain; charset=utf-8',
 };
 
-/** Starts a server for `root` on 127.0.0.1:`port`; resolves to { server, url }. */
-export function startServer(root, port = 0) {
+/**
+ * Starts a server for `root` on 127.0.0.1:`port`; resolves to { server, url }.
+ * @param {string} root
+ * @param {number} [port]
+ * @param {{ cors?: boolean }} [opts] cors: every response allows any origin (GET/HEAD)
+ */
+export function startServer(root, port = 0, opts = {}) {
+  /** @type {Record<string, string>} */
+  const cors = opts.cors ? { 'Access-Control-Allow-Origin': '*' } : {};
   const base = path.resolve(root);
   const server = http.createServer((req, res) => {
     if (req.method !== 'GET' && req.method !== 'HEAD') {
-      res.writeHead(405, { Allow: 'GET, HEAD' });
+      if (req.method === 'OPTIONS' && opts.cors) {
+        res.writeHead(204, { ...cors, 'Access-Control-Allow-Methods': 'GET, HEAD', 'Access-Control-Max-Age': '600' });
+        res.end();
+        return;
+      }
+      res.writeHead(405, { Allow: 'GET, HEAD', ...cors });
       res.end();
       return;
     }
@@ -35,20 +50,20 @@ export function startServer(root, port = 0) {
     try {
       rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
     } catch {
-      res.writeHead(400);
+      res.writeHead(400, cors);
       res.end('bad request');
       return;
     }
     if (rel.endsWith('/')) rel += 'index.html';
     const file = path.resolve(base, '.' + rel);
     if (file !== base && !file.startsWith(base + path.sep)) {
-      res.writeHead(403);
+      res.writeHead(403, cors);
       res.end('forbidden');
       return;
     }
     fs.stat(file, (err, st) => {
       if (err || !st.isFile()) {
-        res.writeHead(404, { 'Content-Type': 'text/plain; charset=utf-8' });
+        res.writeHead(404, { 'Content-Type': 'text/plain; charset=utf-8', ...cors });
         res.end('not found');
         return;
       }
@@ -57,6 +72,7 @@ export function startServer(root, port = 0) {
         'Content-Length': st.size,
         'Cache-Control': 'no-cache',
         'X-Content-Type-Options': 'nosniff',
+        ...cors,
       });
       if (req.method === 'HEAD') {
         res.end();
@@ -75,15 +91,18 @@ export function startServer(root, port = 0) {
 }
 
 if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
-  const root = process.argv[2] || 'www';
-  const port = Number(process.argv[3] ?? process.env.PORT ?? 8080);
+  const args = process.argv.slice(2);
+  const cors = args.includes('--cors');
+  const pos = args.filter((a) => !a.startsWith('--'));
+  const root = pos[0] || 'www';
+  const port = Number(pos[1] ?? process.env.PORT ?? 8080);
   if (!fs.existsSync(path.join(root, 'pkg', 'wingbeat.js'))) {
     console.error(`serve: ${root}/pkg/wingbeat.js is missing; run "npm start" (or scripts/build-web.sh ${root}) first`);
     process.exit(1);
   }
-  startServer(root, port)
-    .catch(() => startServer(root, 0))
+  startServer(root, port, { cors })
+    .catch(() => startServer(root, 0, { cors }))
     .then(({ url }) => {
-      console.log(`wingbeat lab: ${url}  (embed demo: ${url}embed-demo.html; Ctrl-C stops)`);
+      console.log(`wingbeat lab: ${url}  (embed demo: ${url}embed-demo.html${cors ? '; CORS: any origin' : ''}; Ctrl-C stops)`);
     });
 }

@@ -1,6 +1,7 @@
 // @ts-check
 // DOM helpers for the lab's views: element creation, rich-text labels (sub/superscripts from
-// www/format.js markup), the stylesheet loader, input-kind detection and visually hidden text.
+// www/format.js markup), the shadow root's stylesheets, the focused element inside a shadow
+// root, input-kind detection and visually hidden text.
 import { parseRich } from './format.js';
 
 const HERE = new URL('.', import.meta.url);
@@ -67,14 +68,37 @@ export function isTouch() {
   return typeof matchMedia === 'function' && matchMedia('(pointer: coarse)').matches;
 }
 
-/** Adds the lab's stylesheets once per document. */
-export function ensureStyles() {
-  for (const href of ['vendor/uPlot.min.css', 'style.css']) {
-    const url = new URL(href, HERE).href;
-    if (![...document.querySelectorAll('link[rel=stylesheet]')].some((l) => /** @type {HTMLLinkElement} */ (l).href === url)) {
-      document.head.append(el('link', { rel: 'stylesheet', href: url }));
-    }
-  }
+/** The element's stylesheets, relative to this file (so they load from the lab's origin). */
+export const STYLESHEETS = ['vendor/uPlot.min.css', 'style.css'];
+
+/**
+ * Puts the lab's stylesheets into a shadow root as <link> elements (a cross-origin stylesheet
+ * needs no CORS this way, and url()s in it resolve against its own URL), after a tiny inline
+ * sheet that makes the host a block and keeps `.wl-root` invisible until both have loaded, so
+ * the first paint is never unstyled. Resolves when they have loaded or failed.
+ * @param {ShadowRoot} root
+ * @returns {Promise<void>}
+ */
+export function shadowStyles(root) {
+  const base = el('style', { text: ':host { display: block; } :host([hidden]) { display: none; } .wl-root[data-css=loading] { visibility: hidden; }' });
+  root.append(base);
+  return Promise.all(STYLESHEETS.map((href) => new Promise((resolve) => {
+    const link = el('link', { rel: 'stylesheet', href: new URL(href, HERE).href });
+    link.addEventListener('load', resolve, { once: true });
+    link.addEventListener('error', resolve, { once: true });
+    root.append(link);
+  }))).then(() => undefined);
+}
+
+/**
+ * The focused element within the tree that holds `node` (its shadow root or the document):
+ * inside a shadow root `document.activeElement` is only the host.
+ * @param {Node} node
+ * @returns {Element | null}
+ */
+export function activeIn(node) {
+  const r = /** @type {Document | ShadowRoot} */ (node.getRootNode());
+  return r && 'activeElement' in r ? r.activeElement : document.activeElement;
 }
 
 /** A labelled <select> from [value, text] pairs. */

@@ -57,8 +57,20 @@ export function loadWasm() {
   return shared;
 }
 
+/** @type {string | null} the same-origin Blob URL that imports worker.js (made once) */
+let bootstrapUrl = null;
+/**
+ * The study worker. Same origin: worker.js itself. When this module was loaded from another
+ * origin (a course page using the lab's files from the lab's host, which must send CORS
+ * headers), `new Worker(url)` would be refused, so the worker starts from a same-origin Blob
+ * whose only line imports worker.js by its absolute URL; worker.js then loads the wasm relative
+ * to its own URL (import.meta.url), i.e. from the lab's host.
+ */
 function defaultWorker() {
-  return new Worker(new URL('worker.js', HERE), { type: 'module' });
+  const url = new URL('worker.js', HERE);
+  if (typeof location === 'undefined' || url.origin === location.origin) return new Worker(url, { type: 'module' });
+  if (!bootstrapUrl) bootstrapUrl = URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};\n`], { type: 'text/javascript' }));
+  return new Worker(bootstrapUrl, { type: 'module' });
 }
 
 const now = () => (typeof performance !== 'undefined' ? performance.now() : Date.now());

@@ -1,5 +1,8 @@
 // @ts-check
-// <wing-lab>: the wingbeat browser lab as a custom element (light DOM, no framework).
+// <wing-lab>: the wingbeat browser lab as a custom element (no framework). It renders into an
+// OPEN shadow root (lab.shadowRoot) with its own stylesheets (style.css, vendor/uPlot.min.css,
+// loaded from lab.js's own URL), so no style leaks out into the host page and the page's
+// styles do not reach inside; the host page sizes and places the element like any block.
 //
 //   <script type="module" src="lab.js"></script>
 //   <wing-lab gamma0="0.1" flap_hz="25" panels="controls,numbers,spectrum"></wing-lab>
@@ -14,7 +17,8 @@
 //                FE wing, studies, cancel
 //   decimate.js  the one min/max decimation (plots and worker)
 //   format.js    numbers, units and rich-label markup (f_d, kg^½·m → sub/superscripts)
-//   dom.js       el(), rich(), stylesheet loader, touch detection
+//   dom.js       el(), rich(), the shadow root's stylesheets, activeIn(), touch detection
+//   layout.js    the grid from the element's own width and the panels shown (pure)
 //   plot.js      uPlot wrapper: HTML axis titles, keyboard legend toggles, markers, a11y summary
 //   export.js    CSV, PNG (2×) and SVG figures from one drawing routine
 //   beat.js      the beat period, the three-beat window, the force shares (pure)
@@ -26,23 +30,29 @@
 //                changes, keeps the URL in sync, exports.
 // Adding a panel (e.g. views/experiments.js, views/resonance.js): add its name to PANELS in
 // state.js, import it into VIEWS below, put it in LAYOUT (visual order = tab order), and give
-// `section.wl-<name>` a grid area in style.css ([data-layout=wide|medium|narrow] rules).
+// it a place in layout.js's TEMPLATES (the grid is computed there from the panels shown).
 // The view gets ctx = { store, engine, section, uid, id(s), registerPlot(name, plot),
 // registerExport(name, { csv, figure, table, canvas }), exportButtons(name, label, kinds),
 // toCSV, emit(type, detail), notice(text), setParams(patch) }.
 //
 // Attributes: every URL parameter of www/state.js (alpha0, beta0, gamma0, flap_hz, zeta,
 // alpha_phase, beta_phase, gamma_phase, duration, modes, mode, detrend, panels), plus
-// `sync-url` (state read from and written to the page's query string) and `embed` (compact).
+// `sync-url` (state read from and written to the page's query string), `embed` (compact, one
+// column) and `layout` (wide | medium | narrow: a fixed layout instead of the width's). They are
+// read when the element connects; later changes apply too (observedAttributes).
 // Several labs on one page are independent: each has its own store, engine and worker; they
-// share the (stateless) wasm module. Assets resolve relative to this file.
-// Test hooks: data-renders, data-layout, events wl-ready / wl-rendered / wl-study, and the
-// properties state, analysis, plots, studies, wing3d, timeCursor, fe, config(), modeIndex().
+// share the (stateless) wasm module. Assets resolve relative to this file, also when it is
+// loaded from another origin (the lab's host must then send CORS headers; the worker starts
+// from a same-origin Blob that imports worker.js, see engine.js).
+// Test hooks: data-renders, data-layout (on the host), events wl-ready / wl-rendered / wl-study
+// (bubbling and composed), and the properties state, analysis, plots, studies, wing3d,
+// timeCursor, fe, config(), modeIndex(); inside: lab.shadowRoot.
 import { NUMERIC, ENUMS, WING, parsePairs, parseQuery, toQuery, defaults, paramsOf, describe } from './state.js';
 import { encodeShare, decodeShare, fragmentValue, checkPoints } from './share.js';
 import { createStore } from './store.js';
 import { createEngine } from './engine.js';
-import { el, ensureStyles } from './dom.js';
+import { el, shadowStyles } from './dom.js';
+import { layoutMode, gridLayout, areasCss } from './layout.js';
 import { plain, errorText } from './format.js';
 import { toCSV, download, figurePNG, figureSVG, tablePNG, drawFigure, canvasPainter, context2d } from './export.js';
 import * as controls from './views/controls.js';
@@ -121,7 +131,14 @@ const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ..
 /** The keys that decide which wing is wanted. */
 const WING_KEYS = [...WING.map((w) => w.key), 'outline', 'planform', 'wing'];
 const FIG_W = 900, FIG_H = 560;
+/** Attributes that are not lab parameters. */
+const NOT_PARAMS = ['id', 'class', 'style', 'sync-url', 'embed', 'layout', 'hidden', 'title', 'lang', 'dir', 'slot', 'part', 'tabindex', 'nonce', 'role', 'inert', 'translate', 'is'];
+/** Parameter attributes that apply live when changed after connection (planform= needs a fetch: not live). */
+const LIVE_ATTRS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'panels'];
+const EVENT = { bubbles: true, composed: true };
 let instances = 0;
+/** Labs built so far on this page: the second one on is "lab 2", … in its sections' names. */
+let labsBuilt = 0;
 
 export class WingLab extends HTMLElement {
   // Made in connectedCallback / build(), before anything reads them:
@@ -137,10 +154,20 @@ export class WingLab extends HTMLElement {
   errorEl;
   /** @type {Record<string, HTMLElement>} */
   panels;
+  /** @type {HTMLElement | null} the panels' grid (its template is set by applyLayout) */
+  grid = null;
+  /** the grid's current columns and areas (CSS text) */
+  gridCols = '';
+  gridAreas = '';
+
+  static get observedAttributes() { return ['embed', 'layout', ...LIVE_ATTRS]; }
 
   constructor() {
     super();
+    this.attachShadow({ mode: 'open' });
     this.uid = `wl${++instances}`;
+    /** 1 for the first lab built on the page, 2 for the next, … (accessible names) */
+    this.ordinal = 0;
     this.renders = 0;
     this.raf = 0;
     /** @type {Record<string, View>} */
@@ -178,9 +205,8 @@ export class WingLab extends HTMLElement {
   connectedCallback() {
     if (this.built) return;
     this.built = true;
-    ensureStyles();
-    this.classList.add('wing-lab');
-    const ignore = ['id', 'class', 'style', 'sync-url', 'embed', 'hidden', 'title', 'lang', 'dir'];
+    if (!this.ordinal) this.ordinal = ++labsBuilt;
+    const ignore = NOT_PARAMS;
     const attrs = [...this.attributes].filter((a) => !a.name.startsWith('aria-') && !a.name.startsWith('data-')).map((a) => [a.name, a.value]);
     const fromAttrs = parsePairs(attrs, ignore);
     const params = fromAttrs.state;
@@ -201,7 +227,6 @@ export class WingLab extends HTMLElement {
       rejected.push({ key: 'mode', why: `expected 1 to ${nModes} (the modes of the ${params.modes === 'fe' ? 'FE wing' : 'paper table'})` });
       params.mode = '1';
     }
-    if (this.hasAttribute('embed')) this.classList.add('wl-embed');
     this.store = createStore({ ...params, result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
     this.engine = createEngine();
     this.build();
@@ -232,7 +257,7 @@ export class WingLab extends HTMLElement {
         this.wantWing();
         this.render();
         if (this.store.get().panels.includes('wing3d')) this.views.wing3d.startWhenVisible();
-        this.dispatchEvent(new CustomEvent('wl-ready', { bubbles: true }));
+        this.dispatchEvent(new CustomEvent('wl-ready', EVENT));
       })
       .catch((e) => this.error(`Could not load the wasm module: ${errorText(e)}`));
   }
@@ -243,10 +268,36 @@ export class WingLab extends HTMLElement {
     for (const v of Object.values(this.views)) if (v && v.destroy) v.destroy();
     this.unsub.forEach((f) => f());
     if (this.ro) this.ro.disconnect();
+    this.ro = null;
+    this.grid = null;
+    this.gridCols = this.gridAreas = '';
+    delete this.dataset.layout;
     this.engine.dispose();
     this.built = false;
-    this.replaceChildren();
+    /** @type {ShadowRoot} */ (this.shadowRoot).replaceChildren();
     this.views = {};
+    this.plotReg = {};
+    this.exportsReg = {};
+    this.unsub = [];
+  }
+
+  /**
+   * `embed` and `layout` re-lay the grid; a parameter attribute changed after connection sets
+   * that parameter (an invalid value is ignored with a notice, a removed one goes back to its
+   * default). Before connection the attributes are read by connectedCallback.
+   */
+  attributeChangedCallback(name, old, value) {
+    if (!this.built || !this.store || old === value) return;
+    if (name === 'embed' || name === 'layout') {
+      this.applyLayout();
+      return;
+    }
+    const { state, rejected } = parsePairs(value == null ? [] : [[name, value]], []);
+    if (rejected.length) {
+      this.notice(`Ignored the attribute ${rejected.map((r) => `${r.key} (${r.why})`).join('; ')}.`);
+      return;
+    }
+    this.store.set({ [name]: state[name] });
   }
 
   // ---------- DOM ----------
@@ -268,14 +319,13 @@ export class WingLab extends HTMLElement {
       registerPlot: (name, plot) => { this.plotReg[name] = plot; },
       registerExport: (name, reg) => { this.exportsReg[name] = reg; },
       exportButtons: (name, label, kinds) => this.exportButtons(name, label, kinds),
-      emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })),
+      emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail, ...EVENT })),
       notice: (t) => this.notice(t),
       setParams: (patch) => this.store.set(patch),
     };
-    // Several labs on a page: each names its sections after itself (unique landmarks).
-    const fig = this.closest('figure');
-    const caption = fig && fig.querySelector('figcaption');
-    const labName = this.getAttribute('aria-label') || (caption ? (caption.textContent || '').trim() : '');
+    // Several labs on a page: each names its sections after itself (unique landmarks): its
+    // aria-label, else the caption of the figure it is in, else "lab N" from the second lab on.
+    const labName = this.labName();
     for (const name of LAYOUT) {
       const view = VIEWS[name];
       const named = labName ? { 'aria-label': `${plain(view.title)} — ${labName}` } : { 'aria-labelledby': id(`h-${name}`) };
@@ -288,21 +338,53 @@ export class WingLab extends HTMLElement {
       const reg = this.exportsReg[name];
       if (reg) head.append(this.exportButtons(name, view.title, reg.figure ? ['csv', 'png', 'svg'] : ['csv', 'png']));
     }
+    this.grid = grid;
+    const shadow = /** @type {ShadowRoot} */ (this.shadowRoot);
+    // Invisible (not unstyled) until style.css and uPlot's sheet have loaded: no flash.
+    this.root.dataset.css = 'loading';
+    shadowStyles(shadow).then(() => { delete this.root.dataset.css; });
+    shadow.append(this.root);
     this.applyPanels();
-    this.append(this.root);
-    // Layout follows the element's own width (not the viewport): narrow | medium | wide.
-    const layout = () => {
-      const w = this.getBoundingClientRect().width || this.clientWidth || 1200;
-      const mode = this.classList.contains('wl-embed') && w < 1100 ? 'narrow' : w >= 1100 ? 'wide' : w >= 720 ? 'medium' : 'narrow';
-      if (this.dataset.layout !== mode) {
-        this.dataset.layout = mode;
-        for (const v of Object.values(this.views)) if (v && v.setLayout) v.setLayout(mode);
-      }
-    };
-    layout();
+    // Layout follows the element's own width (not the viewport) and the panels shown.
     if (typeof ResizeObserver === 'function') {
-      this.ro = new ResizeObserver(layout);
+      this.ro = new ResizeObserver(() => this.applyLayout());
       this.ro.observe(this);
+    }
+  }
+
+  /** The lab's own name in its sections' accessible names ('' = plain panel titles). */
+  labName() {
+    const own = (this.getAttribute('aria-label') || '').trim();
+    if (own) return own;
+    const fig = this.closest('figure');
+    const caption = fig && fig.querySelector('figcaption');
+    const text = caption ? (caption.textContent || '').replace(/\s+/g, ' ').trim() : '';
+    if (text) return text;
+    return this.ordinal > 1 ? `lab ${this.ordinal}` : '';
+  }
+
+  /**
+   * Sets data-layout (narrow | medium | wide, from the element's width, `embed` and `layout`)
+   * and the grid for the panels shown; tells the views when the mode changes.
+   */
+  applyLayout() {
+    if (!this.grid) return;
+    const w = this.getBoundingClientRect().width || this.clientWidth || 1200;
+    const mode = layoutMode(w, { embed: this.hasAttribute('embed'), forced: this.getAttribute('layout') });
+    const on = this.store.get().panels;
+    const visible = LAYOUT.filter((p) => on.includes(p));
+    const g = gridLayout(visible, mode);
+    const cols = g.columns.join(' ');
+    const areas = areasCss(g.rows);
+    if (this.gridCols !== cols || this.gridAreas !== areas) {
+      this.grid.style.gridTemplateColumns = cols;
+      this.grid.style.gridTemplateAreas = areas;
+      this.gridCols = cols;
+      this.gridAreas = areas;
+    }
+    if (this.dataset.layout !== mode) {
+      this.dataset.layout = mode;
+      for (const v of Object.values(this.views)) if (v && v.setLayout) v.setLayout(mode);
     }
   }
 
@@ -323,7 +405,11 @@ export class WingLab extends HTMLElement {
 
   applyPanels() {
     const on = this.store.get().panels;
-    for (const [name, sec] of Object.entries(this.panels)) sec.hidden = !on.includes(name);
+    for (const [name, sec] of Object.entries(this.panels)) {
+      sec.hidden = !on.includes(name);
+      sec.style.gridArea = name;
+    }
+    this.applyLayout();
   }
 
   notice(text) {
@@ -417,7 +503,7 @@ export class WingLab extends HTMLElement {
       this.lastTiming = { compute: r.compute_ms, draw: t2 - t1, end: t2 };
       this.store.set({ timing: this.lastTiming });
       this.dataset.renders = String(this.renders);
-      this.dispatchEvent(new CustomEvent('wl-rendered', { detail: this.lastTiming }));
+      this.dispatchEvent(new CustomEvent('wl-rendered', { detail: this.lastTiming, ...EVENT }));
     });
   }
 

@@ -3,7 +3,7 @@
 // phone), then "More parameters" (phases, duration, mode set, selected mode, PSD detrend), the
 // preset, warnings and the compute/draw timing. Reads and writes only the store.
 import { NUMERIC, ENUMS, MAIN_KEYS, FE_LAB_INPUT, defaults, snap } from '../state.js';
-import { el, rich } from '../dom.js';
+import { el, rich, activeIn } from '../dom.js';
 import { fmt, plain, PAPER_UNITS_NOTE } from '../format.js';
 
 export const title = 'Parameters';
@@ -93,7 +93,7 @@ export function mount(ctx) {
     for (const { range, num, p } of Object.values(inputs)) {
       const v = s[p.key];
       if (Number(range.value) !== v) range.value = String(v);
-      if (document.activeElement !== num || Number(num.value) !== v) num.value = String(v);
+      if (activeIn(num) !== num || Number(num.value) !== v) num.value = String(v);
       num.removeAttribute('aria-invalid');
       range.setAttribute('aria-valuetext', valueText(p, v));
     }

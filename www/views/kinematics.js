@@ -6,7 +6,7 @@
 // anglesAt); or edit the mean and the harmonics of each angle by hand. The kinematics in use
 // go to the store (`kin`); the engine puts them into every computation, and the share link
 // carries them in its #s= fragment. "Use the sliders" goes back to the sliders' stroke.
-import { el } from '../dom.js';
+import { el, activeIn } from '../dom.js';
 import { fmt, errorText } from '../format.js';
 
 export const title = 'Kinematics';
@@ -296,7 +296,7 @@ export function mount(ctx) {
       preview(s);
       showInUse(s);
     }),
-    store.subscribe(['flap_hz'], (s) => { if (!lastCsv && document.activeElement !== flapIn) flapIn.value = String(s.flap_hz); }),
+    store.subscribe(['flap_hz'], (s) => { if (!lastCsv && activeIn(flapIn) !== flapIn) flapIn.value = String(s.flap_hz); }),
   ];
   flapIn.value = String(store.get().flap_hz);
   showInUse(store.get());

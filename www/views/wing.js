@@ -8,7 +8,7 @@
 // writes the wing in use in that format (for `wingbeat simulate --modes`).
 // Reads and writes the store; calls ctx.engine for the wasm helpers (never wasm itself).
 import { WING, OUTLINE_IDS, customWing } from '../state.js';
-import { el } from '../dom.js';
+import { el, activeIn } from '../dom.js';
 import { fmt, errorText } from '../format.js';
 import { download } from '../export.js';
 
@@ -371,7 +371,7 @@ export function mount(ctx) {
   const syncParams = () => {
     for (const w of WING) {
       const inp = inputs[w.key];
-      if (document.activeElement !== inp) inp.value = String(clean(draft.params[w.key] * SHOW[w.key].scale));
+      if (activeIn(inp) !== inp) inp.value = String(clean(draft.params[w.key] * SHOW[w.key].scale));
       inp.removeAttribute('aria-invalid');
     }
     matchPreset();

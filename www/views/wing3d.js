@@ -84,7 +84,9 @@ export function mount(ctx) {
   /** @type {ResizeObserver | null} */
   let ro = null;
   const box = el('div', { class: 'wl-wing3d-box', 'data-wing3d': '', 'data-state': 'loading' });
-  if (!document.getElementById('wing3d')) box.id = 'wing3d';
+  // One 3-D view per lab and every lab renders into its own shadow root, so the id is unique
+  // in its tree (tests and host scripts reach it as lab.shadowRoot.getElementById('wing3d')).
+  box.id = 'wing3d';
   const summaryId = `${uid}-w3-sum`;
   const makeCanvas = () => el('canvas', {
     class: 'wl-w3-canvas',
