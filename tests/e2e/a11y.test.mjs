@@ -51,11 +51,12 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     const { page, problems, context } = await openPage(env.browser, env.url, viewport);
     await page.goto(`${env.url}?${experimentQuery('beat')}`);
     await waitRenders(page, 1);
-    await page.waitForFunction(() => document.querySelector('wing-lab [data-panel="experiments"] [data-check]'), null, { timeout: 30000 });
-    const box = 'wing-lab [data-study="resonance"]';
+    await page.waitForFunction(() => __wl.q('[data-panel="experiments"] [data-check]'), null, { timeout: 30000 });
+    const inner = '[data-study="resonance"]';
+    const box = `wing-lab ${inner}`;
     await page.fill(`${box} input[aria-label^="points"]`, '56');
     await page.click(`${box} [data-run="resonance"]`);
-    await page.waitForFunction((s) => Number(document.querySelector(s).dataset.done || 0) >= 1, box, { timeout: 60000 });
+    await page.waitForFunction((s) => Number(__wl.q(s).dataset.done || 0) >= 1, inner, { timeout: 60000 });
     const vs = await scan(page);
     save(`axe-lab-${viewport.width}.json`, vs);
     assert.deepEqual(vs.map((v) => v.rule), [], report(vs));

@@ -1,5 +1,22 @@
 // Shared set-up for the browser end-to-end tests and the perf script: a static server on
 // 127.0.0.1 and Debian's headless Chromium driven by playwright-core (never a downloaded browser).
+//
+// Reaching inside <wing-lab>. The element may render into an open shadow root (lab.shadowRoot)
+// or into light DOM; the tests work with both:
+//  * Playwright's own selectors (page.click, page.fill, page.locator, page.$eval, page.textContent,
+//    page.waitForSelector, ...) pierce open shadow roots: 'wing-lab .wl-x' works as it is.
+//  * Code that runs IN the page (page.evaluate, page.waitForFunction) must not use
+//    document.querySelector / getElementById / document.activeElement for the lab's insides.
+//    openPage() installs `window.__wl` in every frame (labHelpers() does it for other contexts):
+//      __wl.lab(host = 'wing-lab')  the element (host: a CSS selector or the element itself)
+//      __wl.root(host)              its shadow root if it has one, else the element
+//      __wl.q(sel, host)            first match of `sel` inside the lab (sel WITHOUT 'wing-lab ')
+//      __wl.qa(sel, host)           every match inside the lab, as an array
+//      __wl.byId(id, host)          the element with that id inside the lab
+//      __wl.active()                the focused element, followed down through open shadow roots
+//      __wl.axe(sel, host)          an axe-core context item for `sel` inside the lab
+//    The element's own properties and attributes (lab.store, lab.analysis, lab.wing3d,
+//    lab.dataset.renders, ...) are on the host: __wl.lab().store.
 import { chromium } from 'playwright-core';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -29,9 +46,34 @@ export async function setup(root = process.env.LAB_ROOT || 'www') {
   return { server, url, browser, close: async () => { await browser.close(); server.close(); } };
 }
 
+/** Defines window.__wl (see the top of this file) in every page and frame of a browser context. */
+export async function labHelpers(context) {
+  await context.addInitScript(() => {
+    const lab = (host = 'wing-lab') => (typeof host === 'string' ? document.querySelector(host) : host);
+    const root = (host) => {
+      const l = lab(host);
+      return l ? l.shadowRoot || l : null;
+    };
+    /** @type {any} */ (window).__wl = {
+      lab,
+      root,
+      q: (sel, host) => root(host)?.querySelector(sel) ?? null,
+      qa: (sel, host) => [...(root(host)?.querySelectorAll(sel) ?? [])],
+      byId: (id, host) => root(host)?.querySelector(`[id="${CSS.escape(id)}"]`) ?? null,
+      active: () => {
+        let a = document.activeElement;
+        while (a && a.shadowRoot && a.shadowRoot.activeElement) a = a.shadowRoot.activeElement;
+        return a;
+      },
+      axe: (sel, host = 'wing-lab') => (root(host) instanceof ShadowRoot ? { fromShadowDom: [host, sel] } : `${host} ${sel}`),
+    };
+  });
+}
+
 /** A page that records console errors, page errors, failed and off-host requests and dialogs. */
 export async function openPage(browser, url, viewport = { width: 1280, height: 720 }) {
   const context = await browser.newContext({ viewport, acceptDownloads: true });
+  await labHelpers(context);
   const page = await context.newPage();
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
