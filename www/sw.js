@@ -1,0 +1,181 @@
+// @ts-check
+// The lab's service worker (registered by www/offline.js, never by the element): keeps a copy of
+// the site's OWN files so that after one visit the lab works with the network off.
+//   - install: precaches the files the lab needs, including those not fetched yet (the worker,
+//     the wasm module, the views): a list of entry files plus every same-origin module, style
+//     sheet and page they reference (import / import() / new URL(…, import.meta.url), src=,
+//     href=, url()), so a new module is picked up without editing this list.
+//   - fetch: network first for same-origin GETs inside this scope (development never sees stale
+//     files; each answer refreshes the copy), the copy when the network fails or has not answered
+//     in NET_TIMEOUT_MS; cross-origin requests, other methods and range requests are left alone
+//     (never cached).
+//   - activate: deletes this scope's caches of other builds, then takes control of open pages.
+// Cache name: `wingbeat:<scope>:<BUILD>`; `npm run build` (scripts/build-web.sh dist) writes the
+// build stamp into BUILD, so a new download replaces the old copy. A classic script (not a
+// module) so that every browser with service workers can run it. docs/embedding.md, `offline`.
+// Typed against the DOM library (tsconfig.json); the few service-worker types are declared here.
+
+/**
+ * @typedef {Event & { waitUntil(p: Promise<unknown>): void }} ExtendableEvt
+ * @typedef {ExtendableEvt & { request: Request, respondWith(r: Promise<Response> | Response): void }} FetchEvt
+ * @typedef {{
+ *   addEventListener(type: 'install' | 'activate', fn: (e: ExtendableEvt) => void): void,
+ *   addEventListener(type: 'fetch', fn: (e: FetchEvt) => void): void,
+ *   skipWaiting(): Promise<void>, clients: { claim(): Promise<void> }, registration: { scope: string },
+ *   location: Location, caches: CacheStorage, fetch: typeof fetch,
+ * }} SwScope
+ */
+
+(() => {
+  /** Replaced by scripts/build-web.sh dist with the build's stamp. */
+  const BUILD = 'dev';
+  /** How long a request waits for the network before the copy answers (when there is one). */
+  const NET_TIMEOUT_MS = 4000;
+  /** Most files precached (a guard for the reference crawl). */
+  const MAX_FILES = 300;
+  const sw = /** @type {SwScope} */ (/** @type {unknown} */ (self));
+  const SCOPE = sw.registration.scope;
+  const CACHE = `wingbeat:${SCOPE}:${BUILD}`;
+  /** Entry files, relative to the scope. Install fails (and is retried) if one of ESSENTIAL fails. */
+  const ESSENTIAL = ['./', 'index.html', 'main.js', 'lab.js', 'worker.js', 'style.css', 'pkg/wingbeat.js', 'pkg/wingbeat_bg.wasm'];
+  const OPTIONAL = ['page.css', 'offline.js', 'embed-api.js', 'vendor/uPlot.esm.js', 'vendor/uPlot.min.css', 'embed-demo.html',
+    'examples/kinematics-measured.csv', 'examples/planform-narrow.json', 'examples/planform-tapered.csv'];
+
+  /** @param {string} href */
+  const inScope = (href) => href.startsWith(SCOPE) && !href.endsWith('/sw.js');
+
+  /**
+   * Same-origin references in a text file (JS, CSS or HTML), resolved against `base`.
+   * @param {string} text
+   * @param {string} base
+   * @param {string} type
+   */
+  function references(text, base, type) {
+    /** @type {RegExp[]} */
+    const res = [];
+    if (/javascript/.test(type) || /\.m?js$/.test(base)) {
+      res.push(/\bfrom\s*['"]([^'"\n]+)['"]/g, /\bimport\s*\(\s*['"]([^'"\n]+)['"]\s*\)/g, /\bimport\s+['"]([^'"\n]+)['"]/g,
+        /new\s+URL\(\s*['"]([^'"\n]+)['"]\s*,\s*(?:import\.meta\.url|HERE)\s*\)/g);
+    }
+    if (/css/.test(type) || /\.css$/.test(base)) res.push(/url\(\s*['"]?([^'")\s]+)['"]?\s*\)/g, /@import\s+['"]([^'"]+)['"]/g);
+    if (/html/.test(type) || /\.html$|\/$/.test(base)) res.push(/\b(?:src|href)\s*=\s*["']([^"'#?]+)[^"']*["']/g);
+    /** @type {string[]} */
+    const out = [];
+    for (const re of res) {
+      for (const m of text.matchAll(re)) {
+        const ref = m[1];
+        if (/^(?:data|blob|javascript|mailto):/i.test(ref) || ref.includes('${')) continue;
+        try {
+          const u = new URL(ref, base);
+          u.hash = '';
+          u.search = '';
+          if (inScope(u.href)) out.push(u.href);
+        } catch {
+          // not a URL
+        }
+      }
+    }
+    return out;
+  }
+
+  /** Fetches the entry files and everything they reference into the cache. */
+  async function precache() {
+    const cache = await caches.open(CACHE);
+    const must = new Set(ESSENTIAL.map((p) => new URL(p, SCOPE).href));
+    const seen = new Set();
+    let level = [...must, ...OPTIONAL.map((p) => new URL(p, SCOPE).href)];
+    while (level.length && seen.size < MAX_FILES) {
+      const todo = [...new Set(level)].filter((u) => !seen.has(u)).slice(0, MAX_FILES - seen.size);
+      todo.forEach((u) => seen.add(u));
+      const found = await Promise.all(todo.map(async (url) => {
+        try {
+          const res = await fetch(new Request(url, { cache: 'reload', credentials: 'same-origin' }));
+          if (!res.ok || res.redirected || res.type !== 'basic') throw new Error(`HTTP ${res.status}`);
+          const type = res.headers.get('content-type') || '';
+          const refs = /javascript|css|html/.test(type) ? references(await res.clone().text(), url, type) : [];
+          await cache.put(url, res);
+          return refs;
+        } catch (e) {
+          if (must.has(url)) throw new Error(`precache: ${url}: ${e instanceof Error ? e.message : e}`);
+          return [];
+        }
+      }));
+      level = found.flat();
+    }
+  }
+
+  sw.addEventListener('install', (e) => {
+    e.waitUntil(precache().then(() => sw.skipWaiting()));
+  });
+
+  sw.addEventListener('activate', (e) => {
+    e.waitUntil((async () => {
+      for (const name of await caches.keys()) {
+        if (name.startsWith(`wingbeat:${SCOPE}:`) && name !== CACHE) await caches.delete(name);
+      }
+      await sw.clients.claim();
+    })());
+  });
+
+  /**
+   * The cache key of a request: pages without their query (the lab's state lives there and
+   * changes all the time), everything else as it is.
+   * @param {Request} req
+   */
+  function keyOf(req) {
+    const u = new URL(req.url);
+    u.hash = '';
+    if (req.mode === 'navigate') u.search = '';
+    return u.href;
+  }
+
+  /**
+   * Network first, the copy when the network fails (or is slow and a copy exists). `done`
+   * settles when the copy has been refreshed (the event waits for it).
+   * @param {Request} req
+   * @returns {{ response: Promise<Response>, done: Promise<unknown> }}
+   */
+  function networkFirst(req) {
+    const key = keyOf(req);
+    // The copy is used (and refreshed) only while it exists: after an opt-out deleted it
+    // (offline.js), the page this worker still controls must not bring it back.
+    /** @type {Promise<Cache | null>} */
+    const cache = caches.has(CACHE).then((has) => (has ? caches.open(CACHE) : null), () => null);
+    /** @type {Promise<unknown>[]} */
+    const puts = [];
+    const net = fetch(req).then((res) => {
+      if (res.ok && res.type === 'basic' && !res.redirected) {
+        const copy = res.clone();
+        puts.push(cache.then((c) => c && c.put(key, copy)).catch(() => {}));
+      }
+      return res;
+    });
+    const dirPage = req.mode === 'navigate' && key.endsWith('/');
+    /** @type {Promise<Response | undefined>} */
+    const copy = cache.then(async (c) => (c ? (await c.match(key)) || (dirPage ? c.match(`${key}index.html`) : undefined) : undefined)).catch(() => undefined);
+    /** @type {Promise<Response | null>} */
+    const late = new Promise((resolve) => setTimeout(() => copy.then((hit) => resolve(hit || null)), NET_TIMEOUT_MS));
+    const response = (async () => {
+      try {
+        const first = await Promise.race([net, late]);
+        return first || (await net);
+      } catch (err) {
+        const hit = await copy;
+        if (hit) return hit;
+        throw err;
+      }
+    })();
+    const done = net.then(() => Promise.all(puts), () => {});
+    return { response, done };
+  }
+
+  sw.addEventListener('fetch', (e) => {
+    const req = e.request;
+    if (req.method !== 'GET' || req.headers.has('range')) return;
+    const url = new URL(req.url);
+    if (url.origin !== sw.location.origin || !inScope(url.href)) return;
+    const { response, done } = networkFirst(req);
+    e.respondWith(response);
+    e.waitUntil(done);
+  });
+})();
