@@ -17,7 +17,9 @@ after(async () => {
   if (env) await env.close();
 });
 
-const PANEL = 'wing-lab [data-panel="experiments"]';
+const PANEL_IN = '[data-panel="experiments"]'; // inside the lab (page.evaluate: __wl.q)
+const PANEL = `wing-lab ${PANEL_IN}`; // Playwright selectors (they pierce the shadow root)
+const BOX_IN = '[data-study="resonance"]';
 
 async function openExperiment(id, viewport) {
   const o = await openPage(env.browser, env.url, viewport);
@@ -31,11 +33,11 @@ async function openExperiment(id, viewport) {
 async function waitChecks(page, id) {
   const want = { yaw: 2, ic: 1 }[id];
   await page.waitForFunction(([sel, exp, n]) => {
-    const box = document.querySelector(sel);
+    const box = __wl.q(sel);
     if (!box || box.dataset.exp !== exp) return false;
     const checks = box.querySelectorAll('[data-check]');
     return n ? checks.length >= n : checks.length > 0;
-  }, [PANEL, id, want], { timeout: 60000 });
+  }, [PANEL_IN, id, want], { timeout: 60000 });
 }
 
 const checks = (page) => page.$$eval(`${PANEL} [data-check]`, (els) => Object.fromEntries(els.map((e) => [e.dataset.check, e.dataset.holds === 'true'])));
@@ -131,9 +133,9 @@ test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, can
   const { page } = o;
   await page.goto(env.url);
   await waitRenders(page, 1);
-  const box = 'wing-lab [data-study="resonance"]';
+  const box = `wing-lab ${BOX_IN}`;
   await page.click(`${box} [data-run="resonance"]`);
-  await page.waitForFunction((s) => Number(document.querySelector(s).dataset.done || 0) >= 1, box, { timeout: 60000 });
+  await page.waitForFunction((s) => Number(__wl.q(s).dataset.done || 0) >= 1, BOX_IN, { timeout: 60000 });
   const summary = await page.textContent(`${box} [data-summary="resonance"]`);
   // The paper case (α0 = 0.8 rad): mode 1 is unstable in the first tongue (f_eff ≈ f_d) and
   // in a narrow second one near f_eff = 2 f_d; both are read from the wasm result, not assumed.
@@ -175,13 +177,13 @@ test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, can
   await page.click(`${box} [data-run="resonance"]`);
   await page.waitForSelector(`${box} [data-cancel="resonance"]:not([hidden])`);
   await page.click(`${box} [data-cancel="resonance"]`);
-  await page.waitForFunction((s) => /Cancelled/.test(document.querySelector(`${s} .wl-status`).textContent), box);
+  await page.waitForFunction((s) => /Cancelled/.test(__wl.q(`${s} .wl-status`).textContent), BOX_IN);
   assert.equal(await page.isDisabled(`${box} [data-run="resonance"]`), false);
   // A map over the core's work cap is refused at once, with the core's own message.
   await page.fill(`${box} .wl-res-axis2 input[aria-label^="α0 values"]`, '201');
   await page.fill(`${box} input[aria-label^="points"]`, '2001');
   await page.click(`${box} [data-run="resonance"]`);
-  await page.waitForFunction((s) => /Error: .*over the cap/.test(document.querySelector(`${s} .wl-status`).textContent), box, { timeout: 20000 });
+  await page.waitForFunction((s) => /Error: .*over the cap/.test(__wl.q(`${s} .wl-status`).textContent), BOX_IN, { timeout: 20000 });
   assert.deepEqual(o.problems, []);
   await o.context.close();
 });
@@ -195,12 +197,12 @@ test('resonance map with α0 as a second axis draws a heat map; phone layout scr
     await waitChecks(page, 'instability');
     await page.locator(PANEL).scrollIntoViewIfNeeded();
     await page.locator(PANEL).screenshot({ path: path.join(OUT, `experiments-${viewport.width}.png`) });
-    const box = 'wing-lab [data-study="resonance"]';
+    const box = `wing-lab ${BOX_IN}`;
     await page.check(`${box} input[type=checkbox]`);
     await page.fill(`${box} input[aria-label^="points"]`, '111');
     await page.fill(`${box} .wl-res-axis2 input[aria-label^="α0 values"]`, '11');
     await page.click(`${box} [data-run="resonance"]`);
-    await page.waitForFunction((s) => Number(document.querySelector(s).dataset.done || 0) >= 1, box, { timeout: 60000 });
+    await page.waitForFunction((s) => Number(__wl.q(s).dataset.done || 0) >= 1, BOX_IN, { timeout: 60000 });
     const res = await page.evaluate(() => {
       const r = document.querySelector('wing-lab').views.resonance.data();
       return { nx: r.flap_hz.length, ny: r.alpha0 && r.alpha0.length, n: r.modes[0].max_modulus.length };
