@@ -1,5 +1,5 @@
 // DOM helpers (www/dom.js) against a minimal fake document: attributes vs properties, rich
-// labels as <sub>/<sup>, touch detection.
+// labels as <sub>/<sup>, touch detection, the focused element inside a shadow root.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 
@@ -64,4 +64,17 @@ test('srOnly, select, isTouch', () => {
   assert.equal(dom.isTouch(), false);
   globalThis.__coarse = true;
   assert.equal(dom.isTouch(), true);
+});
+
+test('activeIn: the focused element of the tree holding a node (shadow root or document)', () => {
+  const inner = new FakeNode('input');
+  const shadow = { activeElement: inner };
+  const node = new FakeNode('div');
+  node.getRootNode = () => shadow;
+  assert.equal(dom.activeIn(node), inner);
+  const page = new FakeNode('button');
+  globalThis.document.activeElement = page;
+  const loose = new FakeNode('span');
+  loose.getRootNode = () => loose; // not in a document: falls back to document.activeElement
+  assert.equal(dom.activeIn(loose), page);
 });
