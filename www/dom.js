@@ -68,20 +68,29 @@ export function isTouch() {
   return typeof matchMedia === 'function' && matchMedia('(pointer: coarse)').matches;
 }
 
+/** @type {CSSStyleSheet | null} the shadow roots' shared base sheet (made once) */
+let baseSheet = null;
 /** The element's stylesheets, relative to this file (so they load from the lab's origin). */
 export const STYLESHEETS = ['vendor/uPlot.min.css', 'style.css'];
 
 /**
- * Puts the lab's stylesheets into a shadow root as <link> elements (a cross-origin stylesheet
- * needs no CORS this way, and url()s in it resolve against its own URL), after a tiny inline
- * sheet that makes the host a block and keeps `.wl-root` invisible until both have loaded, so
- * the first paint is never unstyled. Resolves when they have loaded or failed.
+ * Puts the lab's stylesheets into a shadow root as <link> elements (url()s in them resolve
+ * against their own URL, on the lab's host), after a tiny base sheet (adopted, so no inline
+ * <style> for a page's CSP to refuse) that makes the host a block and keeps `.wl-root`
+ * invisible until both have loaded, so the first paint is never unstyled. Resolves when they
+ * have loaded or failed.
  * @param {ShadowRoot} root
  * @returns {Promise<void>}
  */
 export function shadowStyles(root) {
-  const base = el('style', { text: ':host { display: block; } :host([hidden]) { display: none; } .wl-root[data-css=loading] { visibility: hidden; }' });
-  root.append(base);
+  const BASE = ':host { display: block; } :host([hidden]) { display: none; } .wl-root[data-css=loading] { visibility: hidden; }';
+  // A constructed sheet (CSSOM) is not an inline <style>, so a page's CSP needs no 'unsafe-inline'.
+  if (!baseSheet && typeof CSSStyleSheet === 'function' && 'replaceSync' in CSSStyleSheet.prototype && 'adoptedStyleSheets' in root) {
+    baseSheet = new CSSStyleSheet();
+    baseSheet.replaceSync(BASE);
+  }
+  if (baseSheet) root.adoptedStyleSheets = [baseSheet];
+  else root.append(el('style', { text: BASE }));
   return Promise.all(STYLESHEETS.map((href) => new Promise((resolve) => {
     const link = el('link', { rel: 'stylesheet', href: new URL(href, HERE).href });
     link.addEventListener('load', resolve, { once: true });

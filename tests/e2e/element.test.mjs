@@ -6,7 +6,8 @@
 // view work, every lab file comes from B, the host page's body font, margin, background and
 // layout are unchanged, the layout follows the element's own width and the panels shown
 // (one column in a 600 px column, `embed` from the first paint and when added later), two labs
-// on a page pass axe-core, and screenshots of a course page at 1280×800 and 390×844.
+// on a page pass axe-core, the lab runs under the strict Content-Security-Policy the docs give,
+// and screenshots of a course page at 1280×800 and 390×844.
 // Run after scripts/build-web.sh www:  node --test --test-concurrency=1 tests/e2e/element.test.mjs
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -43,16 +44,18 @@ const TEXT = `<p>A hawkmoth wing is thin and flexible. As it flaps, rotation pus
  * a margin and a background of its own, a centred column of `width` px, text, and `labs`
  * (HTML of <wing-lab> elements) loaded from origin B (none and no script: the same page without the lab).
  */
-function coursePage(name, { labs = [], width = 720, extraHead = '' } = {}) {
+function coursePage(name, { labs = [], width = 720, extraHead = '', externalCss = false } = {}) {
+  const css = `
+  body { font-family: Georgia, "Times New Roman", serif; margin: 24px 12px; background: rgb(250, 246, 238); color: #222; line-height: 1.5; font-size: 18px; }
+  .col { max-width: ${width}px; margin: 0 auto; }
+  h1 { font-size: 28px; }
+`;
+  if (externalCss) fs.writeFileSync(path.join(dir, `${name}.css`), css);
   const html = `<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,">
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>Course page: ${name}</title>
-<style>
-  body { font-family: Georgia, "Times New Roman", serif; margin: 24px 12px; background: rgb(250, 246, 238); color: #222; line-height: 1.5; font-size: 18px; }
-  .col { max-width: ${width}px; margin: 0 auto; }
-  h1 { font-size: 28px; }
-</style>
+${externalCss ? `<link rel="stylesheet" href="${name}.css">` : `<style>${css}</style>`}
 ${labs.length ? `<script type="module" src="${lab.url}lab.js"></script>` : ''}
 ${extraHead}
 </head><body>
@@ -288,3 +291,24 @@ for (const vp of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
     await context.close();
   });
 }
+
+test('a course page with a strict Content-Security-Policy (the one the docs give) runs the lab from the other origin, FE worker included', async () => {
+  const B = new URL(lab.url).origin;
+  // No 'unsafe-inline' anywhere: the course page's own CSS is a file, and the lab adds no inline style or script.
+  const csp = `default-src 'self'; script-src 'self' ${B} 'wasm-unsafe-eval'; style-src 'self' ${B}; connect-src 'self' ${B}; worker-src blob: ${B}; img-src 'self' data: blob:`;
+  const url = coursePage('csp', { labs: ['<wing-lab modes="fe" panels="controls,numbers,spectrum"></wing-lab>'], externalCss: true, extraHead: `<meta http-equiv="Content-Security-Policy" content="${csp}">` });
+  const { page, problems, context } = await openPage(env.browser, url, { width: 1280, height: 800 });
+  /** @type {string[]} */
+  const violations = [];
+  page.on('console', (m) => { if (/Content Security Policy/i.test(m.text())) violations.push(m.text()); });
+  await page.goto(url);
+  await waitLab(page);
+  await page.waitForFunction(() => {
+    const l = /** @type {any} */ (document.querySelector('wing-lab'));
+    return l.fe && l.analysis && l.analysis.sim.modes.length === l.fe.modes.length;
+  }, null, { timeout: 90000 });
+  assert.match(await page.evaluate(() => getComputedStyle(document.querySelector('wing-lab').shadowRoot.querySelector('.wl-panel')).fontFamily), /system-ui/);
+  assert.deepEqual(violations, []);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
