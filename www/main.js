@@ -1,11 +1,80 @@
 // @ts-check
-// Page bootstrap for index.html: registers <wing-lab> and applies the chrome-less iframe mode
-// (?embed=1). The lab itself lives in lab.js.
-import './lab.js';
+// Page bootstrap for index.html: a classic script, parser-blocking, in <head> (no inline
+// script, so a strict CSP `script-src 'self'` is enough). Order matters:
+//   1. At once, before <body> is parsed: `?embed=1` puts class `embed` on <html> (page.css then
+//      hides header and footer), so not even the first frame shows the page chrome. A module or
+//      deferred script runs too late for that: Chromium paints the parsed header first.
+//   2. When the document is parsed: the element gets its `embed` attribute, THEN lab.js is
+//      imported (defining <wing-lab>), so the element is compact (one column) from its first
+//      paint instead of switching after it has laid out.
+//   3. Inside a frame (window.parent !== window) embed-api.js posts the content height to the
+//      parent and answers the versioned postMessage API (docs/embedding.md, section iframe).
+//   4. offline.js registers the service worker (a no-op where unsupported or opted out).
+// `parent_origin=` (the only origin an embedded lab talks to) is read here and taken out of the
+// address before lab.js reads the query: it is a page setting, not a lab parameter.
+(function () {
+  // Absolute URLs for the imports: in a frame sandboxed without allow-same-origin this script
+  // counts as cross-origin and a relative import() would resolve against about:blank.
+  const script = /** @type {HTMLScriptElement | null} */ (document.currentScript);
+  const here = (/** @type {string} */ file) => new URL(file, script && script.src ? script.src : location.href).href;
+  const query = new URLSearchParams(location.search);
+  const embed = query.get('embed') === '1';
+  if (embed) document.documentElement.classList.add('embed');
 
-const embed = new URLSearchParams(location.search).get('embed') === '1';
-if (embed) {
-  document.documentElement.classList.add('embed');
-  const lab = document.getElementById('lab');
-  if (lab) lab.setAttribute('embed', '');
-}
+  /**
+   * The parent origin pinned with `parent_origin=`, or null (any parent; see the docs).
+   * @type {string | null}
+   */
+  let parentOrigin = null;
+  /** Why `parent_origin=` was refused ('' when fine or absent). */
+  let parentOriginError = '';
+  if (query.has('parent_origin')) {
+    const raw = query.get('parent_origin') || '';
+    parentOrigin = originOf(raw);
+    if (!parentOrigin) parentOriginError = `parent_origin: expected an origin such as https://course.example (scheme, host, optional port; nothing else), got ${JSON.stringify(raw.length > 60 ? raw.slice(0, 60) + '…' : raw)}`;
+    query.delete('parent_origin');
+    const rest = query.toString();
+    history.replaceState(history.state, '', `${location.pathname}${rest ? '?' + rest : ''}${location.hash}`);
+  }
+
+  const start = async () => {
+    const lab = document.getElementById('lab');
+    if (embed && lab) lab.setAttribute('embed', '');
+    await import(here('lab.js'));
+    let framed = true;
+    try {
+      framed = window.parent !== window;
+    } catch {
+      framed = true;
+    }
+    if (framed && lab) {
+      const api = /** @type {typeof import('./embed-api.js')} */ (await import(here('embed-api.js')));
+      // A malformed parent_origin keeps the API silent (nothing answered, no height posted)
+      // rather than falling back to "any parent": the host asked for a restriction.
+      api.startEmbedApi(lab, { parentOrigin: parentOriginError ? 'invalid:' : parentOrigin });
+      if (parentOriginError) console.warn(`wingbeat lab: ${parentOriginError}; the embedding API stays silent.`);
+    }
+    // offline.js may be missing (a trimmed copy of the site): the page works without it.
+    import(here('offline.js')).then((m) => m.registerOffline()).catch(() => {});
+  };
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', () => { start(); }, { once: true });
+  else start();
+
+  /**
+   * The origin in `raw` if it is exactly an origin (`https://host[:port]`; http too, for
+   * intranets and loopback tests), else null.
+   * @param {string} raw
+   * @returns {string | null}
+   */
+  function originOf(raw) {
+    if (raw.length > 200) return null;
+    try {
+      const u = new URL(raw);
+      if (u.protocol !== 'https:' && u.protocol !== 'http:') return null;
+      if (u.origin !== raw.replace(/\/$/, '')) return null;
+      return u.origin;
+    } catch {
+      return null;
+    }
+  }
+})();
