@@ -7,8 +7,15 @@
 //! With `fe`, the wing and its modes come from the shell FE (`wingbeat::fem`, 1.5 mm mesh,
 //! default input) through its JSON, as the lab would pass them; otherwise the synthetic wing.
 
+// Offscreen rendering is native-only; on wasm32 (`wasm-pack test` builds every example) this
+// example is an empty program.
+#[cfg(target_arch = "wasm32")]
+fn main() {}
+
+#[cfg(not(target_arch = "wasm32"))]
 use wingbeat::render::{ColourMode, FrameParams, Offscreen, WingMesh};
 
+#[cfg(not(target_arch = "wasm32"))]
 fn main() -> Result<(), String> {
     let mut args = std::env::args().skip(1);
     let out = args.next().unwrap_or_else(|| "render.png".into());

@@ -57,3 +57,14 @@ pub mod solve;
 pub mod wasm;
 
 pub use error::{Result, WingbeatError};
+
+// Building this crate itself for wasm32 without its JS API gives a cdylib that exports
+// nothing (a 489-byte module from a plain `wasm-pack build`): refuse that loudly. Only when
+// wingbeat is the package being built (cargo sets CARGO_PRIMARY_PACKAGE then); as a
+// dependency of another wasm crate the Rust core builds without the API as before.
+#[cfg(all(target_arch = "wasm32", not(feature = "web")))]
+const _: () = assert!(
+    option_env!("CARGO_PRIMARY_PACKAGE").is_none(),
+    "wingbeat for wasm32 needs its JS API: build with `--no-default-features --features web,render` \
+     (wasm-pack: `wasm-pack build --target web -- --no-default-features --features web,render`; see README)"
+);
