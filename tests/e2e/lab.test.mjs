@@ -70,7 +70,7 @@ test('loads the paper case: numbers, spectra, no console errors, no external req
   });
   assert.ok(dc > 0.1, 'DC part of the Coriolis force is visible (detrend none)');
   assert.match(await page.textContent('.wl-timing'), /compute [\d.]+ ms \+ draw [\d.]+ ms/);
-  assert.ok(await page.isVisible('#wing3d'));
+  assert.ok(await page.isVisible('wing-lab [data-wing3d]'));
   assert.equal(await page.isVisible('.wl-notice'), false);
   assert.deepEqual(problems, []);
   await context.close();
@@ -78,7 +78,7 @@ test('loads the paper case: numbers, spectra, no console errors, no external req
 
 test('every slider moves by keyboard; number box, aria-valuetext, URL and plots follow', async () => {
   const { page, problems, context } = await lab();
-  const keys = await page.evaluate(() => [...document.querySelectorAll('wing-lab .wl-controls input[type=range][data-key]')].map((i) => i.dataset.key));
+  const keys = await page.evaluate(() => [...__wl.qa('.wl-controls input[type=range][data-key]')].map((i) => i.dataset.key));
   assert.equal(keys.length, 9);
   for (const key of keys) {
     const range = `wing-lab input[type=range][data-key="${key}"]`;
@@ -217,7 +217,7 @@ test('studies run in a worker with progress; sliders stay live meanwhile', async
   await page.click('wing-lab [data-run="sweep"]');
   // While the worker sweeps, the main thread still renders slider moves.
   await press(page, 'ArrowLeft', 'wing-lab input[type=range][data-key="beta0"]');
-  await page.waitForFunction(() => /points in/.test(document.querySelector('[data-study="sweep"] .wl-status').textContent), null, { timeout: 60000 });
+  await page.waitForFunction(() => /points in/.test(__wl.q('[data-study="sweep"] .wl-status').textContent), null, { timeout: 60000 });
   const sw = await page.evaluate(() => {
     const d = document.querySelector('wing-lab').studies.sweep.data;
     return { n: d.r.values.length, first: d.r.modes[0].coriolis[0], last: d.r.modes[0].coriolis[40], x: Array.from(d.r.values) };
@@ -226,11 +226,11 @@ test('studies run in a worker with progress; sliders stay live meanwhile', async
   assert.equal(sw.first, 0, 'γ0 = 0: no Coriolis share');
   assert.ok(sw.last > 50);
   await page.click('wing-lab [data-run="icmap"]');
-  await page.waitForFunction(() => / in [\d.]+ ms/.test(document.querySelector('[data-study="icmap"] .wl-status').textContent), null, { timeout: 60000 });
+  await page.waitForFunction(() => / in [\d.]+ ms/.test(__wl.q('[data-study="icmap"] .wl-status').textContent), null, { timeout: 60000 });
   const ic = await page.evaluate(() => document.querySelector('wing-lab').studies.icmap.data.r.coriolis_percent.length);
   assert.equal(ic, 101 * 101);
   await page.click('wing-lab [data-run="damping"]');
-  await page.waitForFunction(() => /samples in/.test(document.querySelector('[data-study="damping"] .wl-status').textContent), null, { timeout: 60000 });
+  await page.waitForFunction(() => /samples in/.test(__wl.q('[data-study="damping"] .wl-status').textContent), null, { timeout: 60000 });
   const [dl] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab [data-study="sweep"] button[data-export="csv"]')]);
   const csv = fs.readFileSync(await dl.path(), 'utf8');
   assert.match(csv, /gamma0 \(rad\),euler_share \(%\),centrifugal_share \(%\),coriolis_share \(%\)/);
@@ -243,7 +243,7 @@ test('screenshots: every panel has non-blank pixels; PNG export works', async ()
   for (const [run, done] of [['sweep', /points in/], ['icmap', / in [\d.]+ ms/], ['damping', /samples in/], ['report', /hold/]]) {
     await page.click(`wing-lab [data-run="${run}"]`);
     await page.waitForFunction(
-      ([r, re]) => new RegExp(re).test((r === 'report' ? document.querySelector('.wl-report .wl-status') : document.querySelector(`[data-study="${r}"] .wl-status`)).textContent),
+      ([r, re]) => new RegExp(re).test(__wl.q(r === 'report' ? '.wl-report .wl-status' : `[data-study="${r}"] .wl-status`).textContent),
       [run, done.source],
       { timeout: 60000 },
     );
@@ -315,7 +315,9 @@ test('embed demo: two independent labs and a chrome-less iframe', async () => {
   assert.equal((await stateOf(page, '#lab-b')).gamma0, 0.05);
   assert.equal(await renders(page, '#lab-b'), rb, 'lab B did not re-render');
   assert.equal(new URL(page.url()).search, '', 'embedded labs leave the host URL alone');
-  assert.ok((await page.$$('[id="wing3d"]')).length <= 1);
+  // Ids are unique in each tree: the page's document and each lab's own root.
+  const w3ids = await page.evaluate(() => [document.querySelectorAll('[id="wing3d"]').length, ...['#lab-a', '#lab-b'].map((h) => __wl.qa('[id="wing3d"]', h).length)]);
+  assert.ok(w3ids.every((n) => n <= 1), `id="wing3d" per tree: ${w3ids}`);
   const frame = page.frameLocator('iframe');
   await frame.locator('wing-lab[data-renders]').waitFor({ timeout: 20000 });
   assert.equal(await frame.locator('header.site').isVisible(), false);
