@@ -159,6 +159,8 @@ test('?embed=1 is compact from the first frame: header hidden, embed attribute, 
         labEmbed: lab ? lab.hasAttribute('embed') : null,
         defined: !!customElements.get('wing-lab'),
         columns: grid ? getComputedStyle(grid).gridTemplateColumns.split(' ').filter(Boolean).length : 0,
+        layout: lab ? lab.dataset.layout || '' : '',
+        visible: !!(root && root.querySelector('.wl-root') && getComputedStyle(/** @type {Element} */ (root.querySelector('.wl-root'))).visibility === 'visible'),
         rendered: lab ? Number(lab.dataset.renders || 0) : 0,
       });
       if (!(lab && Number(lab.dataset.renders || 0) >= 1) && frames.length < 2000) requestAnimationFrame(look);
@@ -170,13 +172,16 @@ test('?embed=1 is compact from the first frame: header hidden, embed attribute, 
   const frames = await page.evaluate(() => /** @type {any} */ (window).frames_seen);
   fs.writeFileSync(path.join(OUT, 'iframe-first-frames.json'), JSON.stringify(frames, null, 1));
   assert.ok(frames.length > 0, 'frames were recorded');
+  assert.ok(frames.some((f) => f.visible), 'the lab became visible while frames were recorded');
   const painted = frames.filter((f) => f.header !== 'not parsed yet');
   for (const f of painted) {
     assert.equal(f.header, 'none', `the header is never shown in embed mode (frame ${JSON.stringify(f)})`);
     assert.ok(f.embedClass, `html.embed is set before any frame shows the page (${JSON.stringify(f)})`);
     // Before lab.js has defined the element it is an empty unknown element (nothing to show).
     if (f.defined) assert.ok(f.labEmbed, `the embed attribute is set before the element is defined (${JSON.stringify(f)})`);
-    if (f.columns) assert.equal(f.columns, 1, `one column from the first frame the grid exists (${JSON.stringify(f)})`);
+    if (f.layout) assert.equal(f.layout, 'narrow', `the compact layout from the first frame the element has one (${JSON.stringify(f)})`);
+    // While its stylesheets load the lab's root is invisible (its grid is not styled yet).
+    if (f.visible) assert.equal(f.columns, 1, `one column in every frame that shows the lab (${JSON.stringify(f)})`);
   }
   const footer = await page.evaluate(() => getComputedStyle(document.querySelector('footer.site')).display);
   assert.equal(footer, 'none');
@@ -429,6 +434,30 @@ test('sandbox: allow-scripts allow-same-origin works from plain static hosting; 
     await context.close();
   }
   fs.writeFileSync(path.join(OUT, 'iframe-sandbox.json'), JSON.stringify(report, null, 1));
+});
+
+test('the lab\'s page under a strict CSP on its own host (no inline script or style needed): renders, sizes itself, answers', async () => {
+  const { context, page, problems } = await openPage(env.browser, env.A, { width: 1000, height: 800 });
+  const csp = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; style-src 'self'; worker-src 'self' blob:; img-src 'self' data: blob:; connect-src 'self'";
+  await context.route(`${env.B}index.html*`, async (route) => {
+    const r = await route.fetch();
+    await route.fulfill({ response: r, headers: { ...r.headers(), 'content-security-policy': csp } });
+  });
+  await context.addInitScript(() => {
+    /** @type {any} */ (window).cspViolations = [];
+    document.addEventListener('securitypolicyviolation', (e) => /** @type {any} */ (window).cspViolations.push(`${e.violatedDirective} ${e.blockedURI}`));
+  });
+  await page.goto(`${env.A}course.html`);
+  const frame = await labFrame(page);
+  await page.waitForFunction(() => document.getElementById('lab').style.height !== '', null, { timeout: 10000 });
+  const fe = await api(page, 'set', { modes: 'fe' });
+  assert.equal(fe.type, 'wingbeat:state', JSON.stringify(fe));
+  assert.equal(fe.results.mode_set, 'fe');
+  assert.equal(fe.results.error, null);
+  const violations = await frame.evaluate(() => /** @type {any} */ (window).cspViolations);
+  assert.deepEqual(violations, [], 'no CSP violation inside the lab\'s frame');
+  assert.deepEqual(problems, []);
+  await context.close();
 });
 
 test('screenshots: the course page at 1280x800 and 390x844, the lab fits the column', async () => {
