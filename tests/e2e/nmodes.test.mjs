@@ -41,7 +41,7 @@ async function openSix(viewport = { width: 1280, height: 800 }) {
 async function ready3d(page) {
   await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
   await page.waitForFunction(() => {
-    const b = document.querySelector('#wing3d');
+    const b = __wl.q('[data-wing3d]');
     return b && b.dataset.state === 'ready' && b.dataset.modes === '6' && Number(b.dataset.frames || 0) > 0;
   }, null, { timeout: 90000 });
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.0123));
@@ -91,25 +91,26 @@ test('6 modes: table, picker, spectra and 3-D view use every mode', async () => 
   assert.equal(await page.getAttribute('wing-lab table.wl-numtable', 'data-selected'), '6');
   // 3-D view: the deflection uses all six q_k.
   await ready3d(page);
-  assert.equal(await page.getAttribute('#wing3d', 'data-modes'), '6');
+  assert.equal(await page.getAttribute('wing-lab [data-wing3d]', 'data-modes'), '6');
   assert.match(await page.textContent('section.wl-wing3d .wl-note'), /all 6 of its modes/);
   // Another wing (3 modes): every view follows; the 3-D view is rebuilt on the new mesh.
   await page.evaluate(() => document.querySelector('wing-lab').store.set({ n_modes: 3 }));
   await page.waitForFunction(() => { const l = document.querySelector('wing-lab'); return l.store.get().fe.n_modes === 3 && l.analysis.sim.modes.length === 3; }, null, { timeout: 90000 });
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.03));
-  await page.waitForFunction(() => document.querySelector('#wing3d').dataset.modes === '3', null, { timeout: 30000 });
+  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.modes === '3', null, { timeout: 30000 });
   assert.equal(await page.getAttribute('wing-lab table.wl-numtable', 'data-modes'), '3');
   assert.equal(await page.locator('wing-lab section.wl-modeshape select option').count(), 3);
-  assert.equal(await page.locator('#wing3d canvas.wl-w3-canvas').count(), 1);
+  assert.equal(await page.locator('wing-lab [data-wing3d] canvas.wl-w3-canvas').count(), 1);
   assert.deepEqual(problems, []);
   await context.close();
 });
 
 test('mode viewer: each mode alone with its frequency, kind and a_k; keyboard works', async () => {
   const { page, problems, context } = await openSix();
-  const sec = 'wing-lab section.wl-modeshape';
+  const SEC_IN = 'section.wl-modeshape'; // inside the lab (page.evaluate: __wl.q)
+  const sec = `wing-lab ${SEC_IN}`;
   await page.locator(sec).scrollIntoViewIfNeeded();
-  await page.waitForFunction((s) => document.querySelector(`${s} [data-modeshape]`).dataset.state === 'ready', sec);
+  await page.waitForFunction((s) => __wl.q(`${s} [data-modeshape]`).dataset.state === 'ready', SEC_IN);
   const fe = await page.evaluate(() => { const f = document.querySelector('wing-lab').store.get().fe; return { freq: Array.from(f.freq_hz), kinds: f.kinds }; });
   assert.equal(await page.locator(`${sec} select option`).count(), 6);
   const shots = [];
@@ -133,16 +134,16 @@ test('mode viewer: each mode alone with its frequency, kind and a_k; keyboard wo
   await page.selectOption(`${sec} select`, '0');
   await page.focus(`${sec} select`);
   await page.keyboard.press('ArrowDown');
-  await page.waitForFunction((s) => document.querySelector(`${s} [data-modeshape]`).dataset.mode === '2', sec);
+  await page.waitForFunction((s) => __wl.q(`${s} [data-modeshape]`).dataset.mode === '2', SEC_IN);
   await page.keyboard.press('Tab');
-  const focused = await page.evaluate(() => document.activeElement.className);
+  const focused = await page.evaluate(() => __wl.active().className);
   assert.match(focused, /wl-ms-play/);
   const pressed = await page.getAttribute(`${sec} .wl-ms-play`, 'aria-pressed');
   await page.keyboard.press('Space');
   assert.notEqual(await page.getAttribute(`${sec} .wl-ms-play`, 'aria-pressed'), pressed);
   if ((await page.getAttribute(`${sec} .wl-ms-play`, 'aria-pressed')) === 'true') {
     const d0 = Number(await page.getAttribute(`${sec} [data-modeshape]`, 'data-drawn'));
-    await page.waitForFunction(([s, n]) => Number(document.querySelector(`${s} [data-modeshape]`).dataset.drawn) > n + 5, [sec, d0]);
+    await page.waitForFunction(([s, n]) => Number(__wl.q(`${s} [data-modeshape]`).dataset.drawn) > n + 5, [SEC_IN, d0]);
   }
   assert.deepEqual(problems, []);
   await context.close();
@@ -156,7 +157,7 @@ test('strain where you point: 3-D click and planform map move the point; the ser
   // Click the drawn wing where the planform point (25, −15) mm is at this instant.
   const at = await page.evaluate(() => document.querySelector('wing-lab').wing3d.screenOf(25, -15));
   assert.ok(at, 'the point is on screen');
-  const box = await page.locator('#wing3d canvas.wl-w3-canvas').boundingBox();
+  const box = await page.locator('wing-lab [data-wing3d] canvas.wl-w3-canvas').boundingBox();
   await page.mouse.click(box.x + at[0], box.y + at[1]);
   await page.waitForFunction(() => !!document.querySelector('wing-lab').store.get().strain_point);
   const p = await page.evaluate(() => document.querySelector('wing-lab').store.get().strain_point);
@@ -191,7 +192,7 @@ test('whole-wing strain map colours the planform canvas and the 3-D wing', async
   const { page, problems, context } = await openSix();
   const map = 'wing-lab canvas.wl-smap-canvas';
   await page.locator(map).scrollIntoViewIfNeeded();
-  await page.waitForFunction(() => document.querySelector('wing-lab [data-smap]').dataset.state === 'ready');
+  await page.waitForFunction(() => __wl.q('[data-smap]').dataset.state === 'ready');
   const a = await page.locator(map).screenshot({ path: path.join(OUT, 'nmodes-strainmap-gxy-rms.png') });
   const sa = await pngStats(page, a);
   const wa = await warmth(page, a);
@@ -203,7 +204,7 @@ test('whole-wing strain map colours the planform canvas and the 3-D wing', async
   await page.selectOption('wing-lab select[id$="-smap-stat"]', 'peak');
   assert.deepEqual(await page.evaluate(() => document.querySelector('wing-lab').store.get().strain_map), { component: 'eps_x', stat: 'peak' });
   // a peak map is computed once the changes stop (PEAK_DELAY_MS)
-  await page.waitForFunction(() => !('pending' in document.querySelector('wing-lab [data-smap]').dataset));
+  await page.waitForFunction(() => !('pending' in __wl.q('[data-smap]').dataset));
   const b = await page.locator(map).screenshot();
   assert.ok(!b.equals(a), 'the map follows the choice');
   assert.match(await page.textContent('wing-lab .wl-smap-legend-text'), /peak \|value\| over the run of ε_x/);
@@ -219,11 +220,11 @@ test('whole-wing strain map colours the planform canvas and the 3-D wing', async
   assert.equal(fs.readFileSync(await dl2.path()).subarray(1, 4).toString(), 'PNG');
   // The 3-D wing with colour 5 shows the same map.
   await ready3d(page);
-  const canvas = '#wing3d canvas.wl-w3-canvas';
+  const canvas = 'wing-lab [data-wing3d] canvas.wl-w3-canvas';
   await page.selectOption('section.wl-wing3d select[aria-label="Colour the wing by"]', '0');
   const plain = await page.locator(canvas).screenshot();
   await page.selectOption('section.wl-wing3d select[aria-label="Colour the wing by"]', '5');
-  await page.waitForFunction(() => /peak/.test(document.querySelector('.wl-w3-legend-text').textContent));
+  await page.waitForFunction(() => /peak/.test(__wl.q('.wl-w3-legend-text').textContent));
   const mapped = await page.locator(canvas).screenshot({ path: path.join(OUT, 'nmodes-wing3d-strainmap.png') });
   const wp = await warmth(page, plain), wm = await warmth(page, mapped);
   assert.ok(wm.warm > wp.warm + 0.002, `3-D strain map adds warm pixels: ${wp.warm} → ${wm.warm}`);
@@ -245,7 +246,7 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     await page.addScriptTag({ path: AXE });
     const vs = await page.evaluate(async () => {
       // This file's panels (the whole page is tests/e2e/a11y.test.mjs's job).
-      const include = ['modeshape', 'strain', 'numbers', 'wing3d'].map((n) => [`wing-lab section.wl-${n}`]);
+      const include = ['modeshape', 'strain', 'numbers', 'wing3d'].map((n) => __wl.axe(`section.wl-${n}`));
       const r = await window.axe.run({ include }, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
       return r.violations.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
     });
