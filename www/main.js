@@ -10,8 +10,9 @@
 //   3. Inside a frame (window.parent !== window) embed-api.js posts the content height to the
 //      parent and answers the versioned postMessage API (docs/embedding.md, section iframe).
 //   4. offline.js registers the service worker (a no-op where unsupported or opted out).
-// `parent_origin=` (the only origin an embedded lab talks to) is read here and taken out of the
-// address before lab.js reads the query: it is a page setting, not a lab parameter.
+// `parent_origin=` (the only origin an embedded lab talks to) is read here; it and `offline=`
+// (offline.js) are taken out of the address before lab.js reads the query: they are page
+// settings, not lab parameters.
 (function () {
   // Absolute URLs for the imports: in a frame sandboxed without allow-same-origin this script
   // counts as cross-origin and a relative import() would resolve against about:blank.
@@ -32,7 +33,12 @@
     const raw = query.get('parent_origin') || '';
     parentOrigin = originOf(raw);
     if (!parentOrigin) parentOriginError = `parent_origin: expected an origin such as https://course.example (scheme, host, optional port; nothing else), got ${JSON.stringify(raw.length > 60 ? raw.slice(0, 60) + '…' : raw)}`;
-    query.delete('parent_origin');
+  }
+  // Page settings, not lab parameters: out of the address before lab.js reads it (the lab would
+  // call them unknown). offline.js reads `offline=` from the navigation entry's URL.
+  const PAGE_PARAMS = ['parent_origin', 'offline'];
+  if (PAGE_PARAMS.some((k) => query.has(k))) {
+    for (const k of PAGE_PARAMS) query.delete(k);
     const rest = query.toString();
     history.replaceState(history.state, '', `${location.pathname}${rest ? '?' + rest : ''}${location.hash}`);
   }

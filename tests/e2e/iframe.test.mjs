@@ -167,7 +167,8 @@ test('?embed=1 is compact from the first frame: header hidden, embed attribute, 
     };
     requestAnimationFrame(look);
   });
-  await page.goto(`${env.B}index.html?embed=1`);
+  // offline= is a page setting (offline.js), like parent_origin=: no "unknown parameter" notice.
+  await page.goto(`${env.B}index.html?embed=1&offline=1`);
   await page.waitForFunction(() => Number(document.getElementById('lab')?.dataset.renders || 0) >= 1, null, { timeout: 30000 });
   const frames = await page.evaluate(() => /** @type {any} */ (window).frames_seen);
   fs.writeFileSync(path.join(OUT, 'iframe-first-frames.json'), JSON.stringify(frames, null, 1));
@@ -186,6 +187,8 @@ test('?embed=1 is compact from the first frame: header hidden, embed attribute, 
   const footer = await page.evaluate(() => getComputedStyle(document.querySelector('footer.site')).display);
   assert.equal(footer, 'none');
   assert.equal(new URL(page.url()).searchParams.get('embed'), '1', 'embed=1 stays in the address');
+  const notice = await page.evaluate(() => { const lab = document.getElementById('lab'); const n = (lab.shadowRoot || lab).querySelector('.wl-notice'); return n && !n.hidden ? n.textContent : ''; });
+  assert.equal(notice, '', 'no notice about page settings');
   assert.deepEqual(problems, []);
   await context.close();
 });
