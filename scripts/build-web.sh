@@ -40,6 +40,16 @@ mkdir -p "$dest/vendor"
 cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css "$dest/vendor/"
 cp node_modules/uplot/LICENSE "$dest/vendor/uPlot.LICENSE" 2>/dev/null || true
 
+if [ "$dest" = dist ]; then
+  # The single-folder download: a little server (node serve.mjs), README.txt, and the service
+  # worker's build stamp (a hash of the folder's files, so a new build replaces the old copy).
+  cp scripts/download/serve.mjs scripts/download/README.txt dist/
+  cp scripts/serve.mjs dist/serve-lib.mjs
+  stamp=$(cd dist && find . -type f ! -name sw.js -print0 | LC_ALL=C sort -z | xargs -0 sha256sum | sha256sum | cut -c1-12)
+  sed -i "s/const BUILD = 'dev';/const BUILD = '$stamp';/" dist/sw.js
+  grep -q "const BUILD = '$stamp';" dist/sw.js || { echo "build-web: could not stamp dist/sw.js" >&2; exit 1; }
+fi
+
 raw=$(wc -c < "$dest/pkg/wingbeat_bg.wasm")
 gz=$(gzip -9 -c "$dest/pkg/wingbeat_bg.wasm" | wc -c)
 echo "build-web: $dest/ ready; wingbeat_bg.wasm $raw bytes ($gz gzipped)"
