@@ -2,12 +2,17 @@
 // index.html over http://127.0.0.1 the service worker controls the page and holds the site's
 // files; with the network blocked (context offline AND the server stopped) a reload computes,
 // and the FE wing (modes=fe, computed in the worker, never fetched online) works too.
-// `?offline=0` registers nothing and removes an earlier registration.
+// `?offline=0` registers nothing and removes an earlier registration. file:// in Chromium: the
+// lab does not start (what docs/embedding.md says). The single-folder download (dist/, when
+// built) runs from its own `node serve.mjs` and from `python3 -m http.server`.
 // Run: node --test --test-concurrency=1 tests/e2e/offline.test.mjs
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { setup, openPage, waitRenders, OUT } from './helpers.mjs';
+import fs from 'node:fs';
+import { spawn, spawnSync } from 'node:child_process';
+import { pathToFileURL } from 'node:url';
+import { setup, openPage, waitRenders, OUT, ROOT } from './helpers.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 
 /** @type {Awaited<ReturnType<typeof setup>>} */
@@ -133,5 +138,76 @@ test('?offline=0 registers no service worker and removes an earlier one', async 
     })), { caches: [], regs: 0, controlled: false });
   } finally {
     await context.close();
+  }
+});
+
+test('file:// in Chromium: the lab does not start (module import, fetch and worker refused), nothing is registered', async () => {
+  const { context, page } = await openPage(env.browser, env.url);
+  /** @type {string[]} */
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(e.message));
+  try {
+    await page.goto(pathToFileURL(path.join(ROOT, 'www', 'index.html')).href);
+    await page.waitForTimeout(3000);
+    const r = await page.evaluate(async () => {
+      /** @type {Record<string, string>} */
+      const out = { defined: String(!!customElements.get('wing-lab')), origin: location.origin };
+      try { await fetch('pkg/wingbeat_bg.wasm'); out.fetch = 'ok'; } catch (e) { out.fetch = String(e); }
+      try { new Worker('worker.js', { type: 'module' }); out.worker = 'constructed'; } catch (e) { out.worker = String(e); }
+      try { out.regs = String((await navigator.serviceWorker.getRegistrations()).length); } catch (e) { out.regs = String(e); }
+      return out;
+    });
+    assert.equal(r.defined, 'false', 'the element never defines');
+    assert.match(errors.join('\n'), /lab\.js.*(CORS|origin 'null')|Failed to fetch dynamically imported module/);
+    assert.match(r.fetch, /Failed to fetch/);
+    assert.match(r.worker, /SecurityError.*cannot be accessed from origin 'null'/);
+    assert.notEqual(r.regs, '1');
+  } finally {
+    await context.close();
+  }
+});
+
+/** Starts a command that prints a loopback URL or port; resolves to { url, stop }. */
+function spawnServer(cmd, args, cwd, pattern) {
+  return new Promise((resolve, reject) => {
+    const child = spawn(cmd, args, { cwd, stdio: ['ignore', 'pipe', 'pipe'] });
+    let out = '';
+    const timer = setTimeout(() => { child.kill(); reject(new Error(`${cmd}: no address in 10 s: ${out}`)); }, 10000);
+    const read = (/** @type {Buffer} */ b) => {
+      out += b.toString();
+      const m = pattern.exec(out);
+      if (m) {
+        clearTimeout(timer);
+        resolve({ url: m[1].startsWith('http') ? m[1] : `http://127.0.0.1:${m[1]}/`, stop: () => child.kill() });
+      }
+    };
+    child.stdout.on('data', read);
+    child.stderr.on('data', read);
+    child.on('error', (e) => { clearTimeout(timer); reject(e); });
+  });
+}
+
+test('the single-folder download (dist/) runs from node serve.mjs and from python3 -m http.server', { skip: !fs.existsSync(path.join(ROOT, 'dist', 'serve.mjs')) && 'dist/ not built (npm run build)' }, async () => {
+  const dist = path.join(ROOT, 'dist');
+  for (const f of ['index.html', 'sw.js', 'offline.js', 'worker.js', 'README.txt', 'serve.mjs', 'serve-lib.mjs', 'pkg/wingbeat.js', 'pkg/wingbeat_bg.wasm', 'vendor/uPlot.esm.js']) {
+    assert.ok(fs.existsSync(path.join(dist, f)), `dist/${f}`);
+  }
+  const stamp = /const BUILD = '([0-9a-f]{12})';/.exec(fs.readFileSync(path.join(dist, 'sw.js'), 'utf8'));
+  assert.ok(stamp, 'dist/sw.js carries a build stamp');
+  const servers = [['node', ['serve.mjs', '0'], /(http:\/\/127\.0\.0\.1:\d+\/)/]];
+  if (spawnSync('python3', ['--version']).status === 0) servers.push(['python3', ['-u', '-m', 'http.server', '0', '--bind', '127.0.0.1'], /port (\d+)/]);
+  for (const [cmd, args, pattern] of servers) {
+    const srv = await spawnServer(/** @type {string} */ (cmd), /** @type {string[]} */ (args), dist, /** @type {RegExp} */ (pattern));
+    const { context, page } = await openPage(env.browser, srv.url);
+    try {
+      await page.goto(srv.url);
+      await waitRenders(page, 1);
+      const { names } = await waitControlled(page);
+      assert.deepEqual(names, [`wingbeat:${srv.url}:${stamp[1]}`], `${cmd}: cache named with the build stamp`);
+    } finally {
+      await context.close();
+      srv.stop();
+    }
   }
 });
