@@ -314,12 +314,24 @@ export async function decodeShare(text) {
  * When even the last is longer than MAX_LINK the fragment is still written (it works when the
  * link is pasted whole) and `message` says so plainly; when the fragment would be longer than
  * MAX_FRAGMENT (a reader refuses it) no fragment is written and `message` says why. An empty
- * state gives hash ''. Never truncates.
+ * state gives hash ''. Never truncates. `onMessage` (optional) is called with `message` when
+ * there is one (the lab shows it as a notice).
  * @param {Record<string, unknown>} state
  * @param {string} base
+ * @param {(message: string) => void} [onMessage]
  * @returns {Promise<{ hash: string, length: number, angleDecimals: number | null, csv: boolean, message: string }>}
  */
-export async function shareLink(state, base) {
+export async function shareLink(state, base, onMessage) {
+  const r = await linkFor(state, base);
+  if (r.message && onMessage) onMessage(r.message);
+  return r;
+}
+
+/**
+ * @param {Record<string, unknown>} state
+ * @param {string} base
+ */
+async function linkFor(state, base) {
   const keys = Object.keys(state).filter((k) => state[k] != null);
   if (!keys.length) return { hash: '', length: base.length, angleDecimals: null, csv: false, message: '' };
   const kin = /** @type {any} */ (state.kin);

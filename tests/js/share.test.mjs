@@ -161,7 +161,10 @@ test('the CSV goes in only while the link stays short, never cut', async () => {
 test('a link over the limit is written whole with a plain message; a huge one is refused with a reason', async () => {
   const r = rng(5);
   const outline = Array.from({ length: 2000 }, () => [r() * 50, r() * 30 - 25]);
-  const long = await shareLink({ outline }, BASE);
+  /** @type {string[]} */
+  const told = [];
+  const long = await shareLink({ outline }, BASE, (m) => told.push(m));
+  assert.deepEqual(told, [long.message]);
   assert.ok(long.length > MAX_LINK);
   assert.match(long.message, /This link is \d+ characters long \(it carries an outline of 2000 points\); links over 2000 characters may be cut short/);
   const back = await decodeShare(/** @type {string} */ (fragmentValue(long.hash)));
