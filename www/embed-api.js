@@ -280,7 +280,8 @@ export function startEmbedApi(labEl, opts = {}) {
           return fail('bad-params', errors.map((x) => x.message).join('; '), { field: errors[0].field, errors });
         }
         const changed = st.set(/** @type {any} */ (patch));
-        if (changed.some((k) => !VIEW_ONLY.includes(k))) {
+        // Wait for the recompute the change started (or one still running from before).
+        if (changed.some((k) => !VIEW_ONLY.includes(k)) || !current()) {
           try {
             await settled();
           } catch (err) {
