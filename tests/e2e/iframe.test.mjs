@@ -76,6 +76,8 @@ before(async () => {
   // parent_origin pinned to A (works) and to C (the course page on A is ignored).
   fs.writeFileSync(path.join(dir, 'pinned.html'), coursePage(src(`&parent_origin=${encodeURIComponent(A.replace(/\/$/, ''))}`), { helper }));
   fs.writeFileSync(path.join(dir, 'pinned-other.html'), coursePage(src(`&parent_origin=${encodeURIComponent(C.replace(/\/$/, ''))}`), { helper }));
+  // Not an origin (a path added): the API stays silent rather than answering anyone.
+  fs.writeFileSync(path.join(dir, 'pinned-bad.html'), coursePage(src(`&parent_origin=${encodeURIComponent(A + 'course.html')}`), { helper }));
   // The sandbox attributes of learning platforms.
   fs.writeFileSync(path.join(dir, 'sandbox-same.html'), coursePage(src(), { helper, sandbox: 'allow-scripts allow-same-origin' }));
   fs.writeFileSync(path.join(dir, 'sandbox-scripts.html'), coursePage(src(), { helper, sandbox: 'allow-scripts' }));
@@ -336,7 +338,7 @@ test('postMessage API: set γ0 and β0, read back the Floquet numbers the lab sh
   await context.close();
 });
 
-test('parent_origin=: the pinned origin is answered, any other is ignored (no reply, no height)', async () => {
+test('parent_origin=: the pinned origin is answered, any other is ignored (no reply, no height); a malformed one silences the API', async () => {
   const { context, page, problems } = await openPage(env.browser, env.A, { width: 1000, height: 800 });
   await page.goto(`${env.A}pinned.html`);
   const frame = await labFrame(page);
@@ -356,6 +358,12 @@ test('parent_origin=: the pinned origin is answered, any other is ignored (no re
   assert.equal(await page.evaluate(() => document.getElementById('lab').style.height), '', 'no height reaches the other origin');
   const r = await raw(page, { type: 'wingbeat:get', version: 1, id: 'x' }, 1500);
   assert.equal(r, null, 'requests from the other origin are ignored');
+
+  await page.goto(`${env.A}pinned-bad.html`);
+  await labFrame(page);
+  await page.waitForTimeout(500);
+  assert.deepEqual(await page.evaluate(() => window.got.filter((m) => m.fromLab).map((m) => m.data.type)), [], 'a malformed parent_origin: nothing posted');
+  assert.equal(await raw(page, { type: 'wingbeat:get', version: 1, id: 'y' }, 1500), null, 'a malformed parent_origin: nothing answered');
   assert.deepEqual(problems, []);
   await context.close();
 });
