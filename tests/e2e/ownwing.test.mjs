@@ -48,14 +48,15 @@ async function lab(query = '', viewport = { width: 1280, height: 800 }) {
   return o;
 }
 
-const W = (k) => `wing-lab [data-wing="${k}"]`;
+const W_IN = (k) => `[data-wing="${k}"]`; // inside the lab (page.evaluate: __wl.q)
+const W = (k) => `wing-lab ${W_IN(k)}`; // Playwright selectors (they pierce the shadow root)
 
 /** Waits for the wing panel's computation to end; returns its status text. */
 async function computed(page, timeout = 120000) {
   await page.waitForFunction((s) => {
-    const st = document.querySelector(s);
-    return st && /Computed|could not|Cancelled|Imported/.test(st.textContent || '') && document.querySelector('wing-lab [data-wing="cancel"]').hidden;
-  }, W('status'), { timeout });
+    const st = __wl.q(s);
+    return st && /Computed|could not|Cancelled|Imported/.test(st.textContent || '') && __wl.q('[data-wing="cancel"]').hidden;
+  }, W_IN('status'), { timeout });
   return page.textContent(W('status'));
 }
 
@@ -71,7 +72,7 @@ async function setField(page, key, value) {
 async function labFreqs(page) {
   return page.evaluate(() => {
     const lab = document.querySelector('wing-lab');
-    const shown = [...lab.querySelectorAll('[data-wing="in-use"] [data-field^="wing-freq-"]')].map((li) => (li.textContent || '').replace(/ Hz.*$/, ''));
+    const shown = __wl.qa('[data-wing="in-use"] [data-field^="wing-freq-"]').map((li) => (li.textContent || '').replace(/ Hz.*$/, ''));
     return { shown, raw: lab.fe ? [...lab.fe.freq_hz] : [], n: lab.fe ? lab.fe.modes.length : 0 };
   });
 }
@@ -94,7 +95,7 @@ test('an uploaded planform CSV gives the frequencies of `wingbeat modes --planfo
   const { page, problems, context } = await lab('?modes=fe');
   await page.waitForFunction(() => document.querySelector('wing-lab').fe, null, { timeout: 60000 });
   await page.setInputFiles(W('file'), TAPERED);
-  await page.waitForFunction((s) => /Outline read/.test(document.querySelector(s).textContent || ''), W('status'));
+  await page.waitForFunction((s) => /Outline read/.test(__wl.q(s).textContent || ''), W_IN('status'));
   assert.match(await page.textContent(W('check')), /^Valid outline: area [\d.]+ mm²/);
   await setField(page, 'n_modes', 6);
   // An explicit element size: with the automatic one (0.53 mm) the mesher does not repeat
@@ -108,7 +109,7 @@ test('an uploaded planform CSV gives the frequencies of `wingbeat modes --planfo
   sameFreqs(await labFreqs(page), doc, 'tapered outline');
   // The numbers table and the mode picker have six modes.
   assert.equal(await page.locator('wing-lab [data-field="freq-5"]').count(), 1, 'numbers table row for mode 6');
-  const picker = await page.evaluate(() => [...document.querySelector('wing-lab select[data-key="mode"]').options].filter((o) => !o.hidden).map((o) => o.textContent));
+  const picker = await page.evaluate(() => [...__wl.q('select[data-key="mode"]').options].filter((o) => !o.hidden).map((o) => o.textContent));
   assert.equal(picker.length, 6);
   assert.match(picker[5], /^Mode 6: .* \(FE, [\d.]+ Hz\)$/);
   await page.selectOption('wing-lab select[data-key="mode"]', '6');
@@ -130,7 +131,7 @@ test('a planform= link with wing parameters restores the same wing; other URLs a
   await context.close();
   for (const bad of ['https://example.com/wing.csv', '//example.com/wing.csv', '../secret.csv', 'examples/none.csv']) {
     const o = await lab(`?planform=${encodeURIComponent(bad)}`);
-    await o.page.waitForFunction(() => !document.querySelector('wing-lab .wl-notice').hidden, null, { timeout: 30000 });
+    await o.page.waitForFunction(() => __wl.q('.wl-notice')?.hidden === false, null, { timeout: 30000 });
     assert.match(await o.page.textContent('wing-lab .wl-notice'), /planform/, bad);
     await o.context.close();
   }
@@ -141,7 +142,7 @@ test('an outline without the default strain point works; an edited outline survi
   const { page, problems, context } = await lab('?modes=fe');
   await page.waitForFunction(() => document.querySelector('wing-lab').fe, null, { timeout: 60000 });
   await page.setInputFiles(W('file'), NARROW);
-  await page.waitForFunction((s) => /Outline read/.test(document.querySelector(s).textContent || ''), W('status'));
+  await page.waitForFunction((s) => /Outline read/.test(__wl.q(s).textContent || ''), W_IN('status'));
   await setField(page, 'n_modes', 4);
   await setField(page, 'mesh_mm', 0);
   await page.focus(W('compute'));
@@ -169,7 +170,7 @@ test('an outline without the default strain point works; an edited outline survi
   assert.deepEqual(pts[2], [24, -2]);
   // A damaged fragment: a clear notice, defaults used.
   await o.page.goto(env.url + '?modes=fe#s=AAAAbroken');
-  await o.page.waitForFunction(() => !document.querySelector('wing-lab .wl-notice').hidden, null, { timeout: 30000 });
+  await o.page.waitForFunction(() => __wl.q('.wl-notice')?.hidden === false, null, { timeout: 30000 });
   assert.match(await o.page.textContent('wing-lab .wl-notice'), /could not be restored/);
   assert.deepEqual(problems, []);
   await o.context.close();
@@ -246,8 +247,18 @@ test('a measured kinematics CSV gives the result of `wingbeat simulate --kinemat
   const o = await lab(url.slice(env.url.length));
   await o.page.waitForFunction(() => document.querySelector('wing-lab').store.get().kin, null, { timeout: 10000 });
   await waitRenders(o.page, 1);
-  const again = await o.page.evaluate(() => document.querySelector('wing-lab').analysis.sim.modes.map((m) => m.q.total[m.q.total.length - 1]));
-  assert.deepEqual(again, labRes.modes.map((m) => m.q[m.q.length - 1]));
+  const again = await o.page.evaluate(() => document.querySelector('wing-lab').analysis.sim.modes.map((m) => [...m.q.total]));
+  // The link stores a sampled stroke as the core's Fourier series of it with coefficients
+  // rounded to 1e-6 rad (www/share.js, v2): the same run to that rounding (measured 3e-5 of the
+  // largest |q|), not bit for bit.
+  again.forEach((q, k) => {
+    const ref = labRes.modes[k].q;
+    const scale = Math.max(...ref.map(Math.abs));
+    let worst = 0;
+    for (let i = 0; i < ref.length; i++) worst = Math.max(worst, Math.abs(q[i] - ref[i]));
+    assert.equal(q.length, ref.length);
+    assert.ok(worst <= 2e-4 * scale, `mode ${k + 1} from the link: max |Δq| = ${worst} (scale ${scale})`);
+  });
   assert.deepEqual(o.problems, []);
   await o.context.close();
   assert.deepEqual(problems, []);
@@ -296,7 +307,7 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     const { page, problems, context } = await lab('?planform=examples/planform-tapered.csv&n_modes=6&mesh_mm=0', viewport);
     await waitModes(page, 6);
     await page.setInputFiles('wing-lab [data-kin="file"]', KIN);
-    await page.waitForFunction(() => /Read/.test(document.querySelector('wing-lab [data-kin="status"]').textContent || ''));
+    await page.waitForFunction(() => /Read/.test(__wl.q('[data-kin="status"]').textContent || ''));
     await page.click('wing-lab .wl-kin-edit summary');
     await page.click('wing-lab [data-kin="load-editor"]');
     // Hand editing: a second harmonic added to the measured yaw, by keyboard.
@@ -323,7 +334,8 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     await page.screenshot({ path: path.join(OUT, `ownwing-page-${viewport.width}.png`) });
     await page.addScriptTag({ path: AXE });
     const vs = await page.evaluate(async () => {
-      const r = await window.axe.run({ include: [['[data-panel="wing"]'], ['[data-panel="kinematics"]'], ['[data-panel="modeshape"]']] }, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
+      const include = ['wing', 'kinematics', 'modeshape'].map((n) => __wl.axe(`[data-panel="${n}"]`));
+      const r = await window.axe.run({ include }, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
       return r.violations.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
     });
     assert.deepEqual(vs, []);
