@@ -48,7 +48,7 @@
 // (bubbling and composed), and the properties state, analysis, plots, studies, wing3d,
 // timeCursor, fe, config(), modeIndex(); inside: lab.shadowRoot.
 import { NUMERIC, ENUMS, WING, parsePairs, parseQuery, toQuery, defaults, paramsOf, describe } from './state.js';
-import { encodeShare, decodeShare, fragmentValue, checkPoints } from './share.js';
+import { shareLink, decodeShare, fragmentValue, checkPoints } from './share.js';
 import { createStore } from './store.js';
 import { createEngine } from './engine.js';
 import { el, shadowStyles } from './dom.js';
@@ -618,7 +618,8 @@ export class WingLab extends HTMLElement {
     let hash = '';
     if (Object.keys(st).length) {
       try {
-        hash = `#s=${await encodeShare(st)}`;
+        // The finest rounding that keeps the whole link within 2000 characters; a notice if not.
+        hash = (await shareLink(st, location.href.split('#')[0], (m) => this.notice(m))).hash;
       } catch {
         hash = '';
       }
