@@ -31,7 +31,7 @@ async function open(viewport, query = '') {
 /** Waits for the 3-D view without scrolling (it must start by itself when on screen). */
 async function ready3d(page) {
   await page.waitForFunction(() => {
-    const b = document.querySelector('#wing3d');
+    const b = __wl.q('[data-wing3d]');
     return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
   }, null, { timeout: 90000 });
   await page.waitForTimeout(150);
@@ -43,7 +43,7 @@ for (const vp of SIZES) {
   test(`${vp.name} ${vp.width}×${vp.height}: the wing is in the first screen, fills ≥ 10 % of its canvas, and every pose of a flap stays inside`, async () => {
     const { page, problems, context } = await open(vp);
     await ready3d(page);
-    const canvas = page.locator('#wing3d canvas.wl-w3-canvas');
+    const canvas = page.locator('wing-lab [data-wing3d] canvas.wl-w3-canvas');
     const cb = await canvas.boundingBox();
     assert.ok(within(cb, vp), `3-D canvas in the first viewport: ${JSON.stringify(cb)}`);
     // The five main sliders are in the first screen too.
@@ -66,7 +66,7 @@ for (const vp of SIZES) {
     assert.ok(def.foreground >= 0.10, `foreground share ${def.foreground}`);
     // Without the axes, the body axis and the stroke plane: the wing ALONE covers ≥ 10 % of the
     // canvas at the default view, and over one flap period it never touches the edges.
-    await page.evaluate(() => { document.querySelector('section.wl-wing3d .wl-w3-options').open = true; });
+    await page.evaluate(() => { __wl.q('section.wl-wing3d .wl-w3-options').open = true; });
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-axes"]');
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-body"]');
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-plane"]');
@@ -93,7 +93,7 @@ for (const vp of SIZES) {
     const r = await page.evaluate(() => {
       const lab = document.querySelector('wing-lab');
       const f = lab.analysis.sim.modes[lab.modeIndex()].floquet;
-      const box = document.querySelector('wing-lab .wl-beat');
+      const box = __wl.q('.wl-beat');
       return { floquet: f.beat_period_s, feff: f.effective_freq_hz, n: f.beat_harmonic, fd: lab.analysis.sim.flap_freq_hz, shown: Number(box.querySelector('[data-beat]').dataset.beat), text: box.textContent, win: lab.plots.time.scales.x };
     });
     assert.equal(r.shown, r.floquet);
@@ -128,8 +128,7 @@ for (const vp of SIZES) {
     const items = await page.evaluate(() => {
       const sel = 'a[href], button, input, select, textarea, summary, [tabindex]';
       const out = [];
-      const lab = document.querySelector('wing-lab');
-      for (const e of lab.querySelectorAll(sel)) {
+      for (const e of __wl.qa(sel)) {
         if (e.disabled || e.tabIndex < 0) continue;
         const closed = e.closest('details:not([open])');
         if (closed && e.tagName !== 'SUMMARY') continue;
@@ -146,12 +145,13 @@ for (const vp of SIZES) {
     // Panel boxes at scroll 0 (the phone's slider strip is sticky: it moves once the page scrolls).
     const boxes = await page.$$eval('wing-lab .wl-panel', (ps) => Object.fromEntries(ps.filter((p) => !p.hidden).map((p) => { const r = p.getBoundingClientRect(); return [p.dataset.panel, [r.top + scrollY, r.left]]; })));
 
-    // Focus order, by pressing Tab from the page start.
-    await page.evaluate(() => document.activeElement && document.activeElement.blur());
+    // Focus order, by pressing Tab from the page start (focus inside the lab's shadow root shows
+    // on the page as the lab itself: __wl.active() follows it down).
+    await page.evaluate(() => { const a = __wl.active(); if (a && a.blur) a.blur(); if (document.activeElement && document.activeElement !== document.body) document.activeElement.blur(); });
     const order = [];
     for (let k = 0; k < items.length + 20 && order.length < items.length; k++) {
       await page.keyboard.press('Tab');
-      const idx = await page.evaluate(() => document.activeElement && document.activeElement.dataset ? document.activeElement.dataset.tabProbe : undefined);
+      const idx = await page.evaluate(() => { const a = __wl.active(); return a && a.dataset ? a.dataset.tabProbe : undefined; });
       if (idx !== undefined && !order.includes(Number(idx))) order.push(Number(idx));
     }
     assert.equal(order.length, items.length, `every control is reachable by Tab; missing: ${JSON.stringify(items.filter((it) => !order.includes(it.i)).map((it) => [it.panel, it.tag, it.text]))}`);
@@ -176,7 +176,7 @@ for (const vp of SIZES) {
     const canvases = await page.$$eval('wing-lab canvas', (cs) => cs.filter((c) => c.getBoundingClientRect().width > 0).map((c) => {
       if (c.getAttribute('aria-hidden') === 'true') return { ok: true };
       const name = c.getAttribute('aria-label') || '';
-      const desc = (c.getAttribute('aria-describedby') || '').split(/\s+/).map((id) => document.getElementById(id)?.textContent || '').join(' ');
+      const desc = (c.getAttribute('aria-describedby') || '').split(/\s+/).map((id) => c.getRootNode().getElementById(id)?.textContent || '').join(' ');
       return { ok: c.getAttribute('role') === 'img' && name.length > 10 && desc.trim().length > 20, name, desc: desc.slice(0, 60) };
     }));
     assert.ok(canvases.length >= 4);
@@ -191,20 +191,20 @@ for (const vp of SIZES) {
 test('the strain colour range is fixed for the run while playing', async () => {
   const { page, problems, context } = await open({ width: 1280, height: 800 });
   await ready3d(page);
-  const read = () => page.evaluate(() => { const d = document.querySelector('wing-lab .wl-w3-legend-text').dataset; return [Number(d.min), Number(d.max)]; });
+  const read = () => page.evaluate(() => { const d = __wl.q('.wl-w3-legend-text').dataset; return [Number(d.min), Number(d.max)]; });
   const r0 = await read();
   const ranges = await page.evaluate(() => document.querySelector('wing-lab').wing3d.ranges);
   assert.ok(Math.abs(r0[1] - ranges[3]) <= 1e-6 * ranges[3], `${r0} vs ${ranges[3]}`);
   assert.ok(Math.abs(r0[0] + r0[1]) < 1e-12);
   const seen = new Set([r0.join()]);
-  const f0 = await page.evaluate(() => Number(document.querySelector('#wing3d').dataset.frames));
+  const f0 = await page.evaluate(() => Number(__wl.q('[data-wing3d]').dataset.frames));
   await page.click('.wl-w3-play');
   for (let j = 0; j < 8; j++) {
     await page.waitForTimeout(120);
     seen.add((await read()).join());
   }
   await page.click('.wl-w3-play');
-  assert.ok((await page.evaluate(() => Number(document.querySelector('#wing3d').dataset.frames))) > f0 + 5, 'frames were drawn');
+  assert.ok((await page.evaluate(() => Number(__wl.q('[data-wing3d]').dataset.frames))) > f0 + 5, 'frames were drawn');
   assert.equal(seen.size, 1, `range changed while playing: ${[...seen]}`);
   // The speed presets: one flap per second, one beat in 4 s.
   await page.selectOption('section.wl-wing3d select[aria-label="Playback speed"]', 'flap1');
@@ -220,7 +220,7 @@ test('FE wing: the largest deflection of the run in mm; paper set says it is not
   await ready3d(page);
   assert.match(await page.textContent('.wl-w3-defl'), /not SI/);
   await page.selectOption('wing-lab select[data-key="modes"]', 'fe');
-  await page.waitForFunction(() => /Largest deflection over the whole run: [\d.]+ mm/.test(document.querySelector('.wl-w3-defl').textContent), null, { timeout: 60000 });
+  await page.waitForFunction(() => /Largest deflection over the whole run: [\d.]+ mm/.test(__wl.q('.wl-w3-defl').textContent), null, { timeout: 60000 });
   await context.close();
 });
 
