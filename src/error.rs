@@ -90,8 +90,12 @@ pub fn compact_number(text: &str) -> String {
     }
 }
 
-/// [`compact_number`] of an `f64`.
+/// [`compact_number`] of an `f64`; magnitudes from 1e9 up and below 1e-5 always in exponent
+/// form (`1e13`, `1e-9`), which reads better than 14 digits or 9 zeros.
 pub fn num(v: f64) -> String {
+    if v.is_finite() && v != 0.0 && (v.abs() >= 1e9 || v.abs() < 1e-5) {
+        return format!("{v:e}");
+    }
     compact_number(&v.to_string())
 }
 

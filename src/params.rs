@@ -405,6 +405,91 @@ fn unknown_wing_key(key: &str) -> WingbeatError {
     )
 }
 
+/// The range the FE core accepts for one material property ([`MATERIAL_RANGES`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MaterialRange {
+    /// Field path in an FE input and in error messages, e.g. `material.e_pa`.
+    pub field: &'static str,
+    /// The lab's wing parameter for the same property ([`WING_PARAMS`]), e.g. `e_pa`.
+    pub wing_key: &'static str,
+    /// Smallest value accepted, in the field's unit.
+    pub min: f64,
+    /// Largest value accepted, in the field's unit.
+    pub max: f64,
+    /// Whether `min` and `max` themselves are excluded (Poisson's ratio: −1 < ν < 0.5).
+    pub open: bool,
+    /// Unit of the field (SI, as [`crate::fem::ShellMaterial`] stores it).
+    pub unit: &'static str,
+}
+
+/// What [`crate::fem::ShellMaterial::validate`] accepts, one entry per field: physical
+/// bounds, wider than the lab's sliders ([`WING_PARAMS`], which lie inside them —
+/// `tests/issue13_errors.rs`), narrow enough that the element matrices stay far from
+/// underflow and overflow (E = 1e-300 Pa used to end in "Krylov space exhausted"; any
+/// E ≥ 1e-100 Pa still solves, so these bounds leave a wide margin). From a soft gel
+/// (1 kPa) to above diamond (1e13 Pa); 0.1 µm to 1 m thick; 1 to 1e5 kg/m³.
+pub const MATERIAL_RANGES: [MaterialRange; 4] = [
+    MaterialRange {
+        field: "material.thickness_m",
+        wing_key: THICKNESS_UM,
+        min: 1e-7,
+        max: 1.0,
+        open: false,
+        unit: "m",
+    },
+    MaterialRange {
+        field: "material.e_pa",
+        wing_key: E_PA,
+        min: 1e3,
+        max: 1e13,
+        open: false,
+        unit: "Pa",
+    },
+    MaterialRange {
+        field: "material.rho_kg_m3",
+        wing_key: RHO,
+        min: 1.0,
+        max: 1e5,
+        open: false,
+        unit: "kg/m^3",
+    },
+    MaterialRange {
+        field: "material.nu",
+        wing_key: NU,
+        min: -1.0,
+        max: 0.5,
+        open: true,
+        unit: "",
+    },
+];
+
+impl MaterialRange {
+    /// Checks `v` against the range; the error names [`MaterialRange::field`], the range
+    /// and the unit.
+    pub fn check(&self, v: f64) -> Result<()> {
+        if !self.open {
+            return check_range(self.field, v, self.min, self.max, self.unit);
+        }
+        if v.is_finite() && v > self.min && v < self.max {
+            return Ok(());
+        }
+        Err(WingbeatError::invalid(
+            self.field,
+            v,
+            format!(
+                "a finite number in the open interval ({}, {})",
+                crate::error::num(self.min),
+                crate::error::num(self.max)
+            ),
+        ))
+    }
+}
+
+/// The core's accepted range of a material field (`material.e_pa`, …), if any.
+pub fn material_range(field: &str) -> Option<&'static MaterialRange> {
+    MATERIAL_RANGES.iter().find(|r| r.field == field)
+}
+
 /// One of the two material presets of the paper (Table 2), in the lab's units.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MaterialPreset {

@@ -109,15 +109,19 @@ export function defaults() {
   return /** @type {Params} */ (s);
 }
 
-/** Parses one numeric value; returns a number or null when not a plain in-range decimal. */
 /**
+ * Parses one numeric value; returns a number or null when not a plain in-range decimal. The
+ * range check is the core's (`check_range` in src/error.rs: finite and min <= v <= max, no
+ * tolerance), so a value accepted here is never refused by `applyOverrides`/`wingInput`
+ * (`zeta=-1e-13` used to pass here and fail there); tests/issue13_errors.rs runs this file
+ * against the core's tables.
  * @param {NumericParam} p
  * @param {unknown} raw
  */
 export function parseNumber(p, raw) {
   if (typeof raw !== 'string' || raw.length > 32 || !NUMBER_RE.test(raw.trim())) return null;
   const v = Number(raw.trim());
-  if (!Number.isFinite(v) || v < p.min - 1e-12 || v > p.max + 1e-12) return null;
+  if (!Number.isFinite(v) || !(v >= p.min && v <= p.max)) return null;
   return v;
 }
 

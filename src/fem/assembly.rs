@@ -22,8 +22,9 @@ pub struct Assembled {
     pub node_mass: Vec<f64>,
 }
 
-/// Assembles K and M for `mesh` with the nodes flagged in `clamped` fixed in all 6 DOFs.
-pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<Assembled> {
+/// The equation numbering of a mesh: each node's 6 DOF equations in RCM order (clamped
+/// ones [`CLAMPED`]), the number of equations and each equation's first envelope column.
+fn equations(mesh: &Mesh, clamped: &[bool]) -> (Vec<[usize; 6]>, usize, Vec<usize>) {
     let nn = mesh.nodes.len();
     let mut adj: Vec<Vec<usize>> = vec![Vec::new(); nn];
     for t in &mesh.triangles {
@@ -39,18 +40,13 @@ pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<As
     let mut eq = vec![[CLAMPED; 6]; nn];
     let mut neq = 0;
     for &node in &order {
-        if clamped[node] {
+        if clamped.get(node).copied().unwrap_or(false) {
             continue;
         }
         for d in 0..6 {
             eq[node][d] = neq;
             neq += 1;
         }
-    }
-    if neq == 0 {
-        return Err(WingbeatError::Geometry(
-            "every node is clamped: nothing can vibrate".into(),
-        ));
     }
     let mut first: Vec<usize> = (0..neq).collect();
     for t in &mesh.triangles {
@@ -68,6 +64,48 @@ pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<As
                 }
             }
         }
+    }
+    (eq, neq, first)
+}
+
+/// The size of the system [`assemble`] would build, known before anything is allocated
+/// for it: what the FE work and memory budget ([`super::check_fe_work`]) is checked on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SystemSize {
+    /// Free DOFs (equations).
+    pub n_dofs: usize,
+    /// Entries of the skyline envelope of K (8 bytes each, stored twice: K and its factor).
+    pub envelope: usize,
+    /// Multiply–adds of one LDLᵀ factorisation, Σ_i h_i² / 2 over the envelope heights h_i.
+    pub factor_work: f64,
+}
+
+/// [`SystemSize`] of `mesh` with the nodes flagged in `clamped` held (the same RCM numbering
+/// and envelope as [`assemble`]).
+pub fn system_size(mesh: &Mesh, clamped: &[bool]) -> SystemSize {
+    let (_, neq, first) = equations(mesh, clamped);
+    let mut envelope = 0usize;
+    let mut factor_work = 0.0;
+    for (i, &f) in first.iter().enumerate() {
+        let h = i - f;
+        envelope += h + 1;
+        factor_work += 0.5 * (h as f64) * (h as f64);
+    }
+    SystemSize {
+        n_dofs: neq,
+        envelope,
+        factor_work,
+    }
+}
+
+/// Assembles K and M for `mesh` with the nodes flagged in `clamped` fixed in all 6 DOFs.
+pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<Assembled> {
+    let nn = mesh.nodes.len();
+    let (eq, neq, first) = equations(mesh, clamped);
+    if neq == 0 {
+        return Err(WingbeatError::Geometry(
+            "every node is clamped: nothing can vibrate".into(),
+        ));
     }
     let mut k = Skyline::new(first);
     let mut m = vec![0.0; neq];

@@ -94,6 +94,11 @@ pub fn lowest_modes(
     }
 }
 
+/// What to change when the eigen-solver fails, appended to its messages.
+pub const SOLVER_REMEDY: &str = "what to change: fewer modes (`n_modes`), a coarser mesh \
+(`mesh_size_mm`), a clamp that holds the wing (`clamp`), or material values nearer a real \
+wing (`material.e_pa`, `material.thickness_m`, `material.rho_kg_m3`)";
+
 /// [`lowest_modes`] with the factorisation backend `F` fixed at compile time
 /// (`opt.backend` is ignored).
 pub fn lowest_modes_with<F: SpdFactor>(
@@ -122,7 +127,7 @@ pub fn lowest_modes_with<F: SpdFactor>(
     if !ratio.is_finite() {
         return Err(WingbeatError::NonFinite {
             what: "stiffness matrix".into(),
-            detail: "no positive diagonal entry".into(),
+            detail: format!("no positive diagonal entry; {SOLVER_REMEDY}"),
         });
     }
     let mut sigma = -1e-3 * ratio;
@@ -139,8 +144,7 @@ pub fn lowest_modes_with<F: SpdFactor>(
     let Some(fac) = fac else {
         return Err(WingbeatError::NoConvergence {
             method: "shifted LDLᵀ factorisation".into(),
-            detail: "K − σM is not positive definite for any tried σ < 0 (bad mesh or material)"
-                .into(),
+            detail: format!("K − σM is not positive definite for any tried σ < 0; {SOLVER_REMEDY}"),
         });
     };
     let op = |x: &[f64]| -> Vec<f64> {
@@ -245,11 +249,14 @@ pub fn lowest_modes_with<F: SpdFactor>(
         if m >= max_basis || !best_detail.is_empty() && m == last {
             return Err(WingbeatError::NoConvergence {
                 method: "shift-invert block Krylov".into(),
-                detail: if best_detail.is_empty() {
-                    format!("basis stalled at {m} vectors")
-                } else {
-                    best_detail
-                },
+                detail: format!(
+                    "{}; {SOLVER_REMEDY}",
+                    if best_detail.is_empty() {
+                        format!("basis stalled at {m} vectors")
+                    } else {
+                        best_detail
+                    }
+                ),
             });
         }
         let block: Vec<Vec<f64>> = basis[last..m].iter().map(|v| op(v)).collect();
@@ -258,7 +265,10 @@ pub fn lowest_modes_with<F: SpdFactor>(
         if added == 0 && basis.len() < n_modes {
             return Err(WingbeatError::NoConvergence {
                 method: "shift-invert block Krylov".into(),
-                detail: format!("Krylov space exhausted at {} vectors", basis.len()),
+                detail: format!(
+                    "the Krylov space ran out at {} independent vectors, fewer than the {n_modes} modes asked for; {SOLVER_REMEDY}",
+                    basis.len()
+                ),
             });
         }
     }

@@ -21,6 +21,16 @@ pub const MAX_OUTLINE_POINTS: usize = 5000;
 /// Largest coordinate magnitude accepted, mm (1 km: anything bigger is a unit error).
 pub const MAX_COORD_MM: f64 = 1.0e6;
 
+/// Smallest span (x extent) and chord (y extent) of an outline, mm: 10 µm, well below the
+/// smallest insect wings (about 0.2 mm). Smaller outlines are refused by
+/// [`validate_outline`] with a message naming the extent (a 1e-9 mm square used to fail
+/// later with a puzzling clamp error).
+pub const MIN_EXTENT_MM: f64 = 0.01;
+
+/// Smallest area of an outline relative to its bounding box (span × chord): a sliver
+/// thinner than this is refused by [`validate_outline`] as degenerate.
+pub const MIN_AREA_FRACTION: f64 = 1e-4;
+
 fn parse_err(what: &str, msg: impl Into<String>) -> WingbeatError {
     WingbeatError::Parse {
         what: what.to_string(),
@@ -248,11 +258,31 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
             hi[k] = hi[k].max(q[k]);
         }
     }
-    let diag = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2)).sqrt();
-    if area.abs() <= 1e-9 * diag * diag || diag == 0.0 {
-        return Err(WingbeatError::Geometry(format!(
-            "planform outline is degenerate (area {area:.3e} mm^2)"
-        )));
+    let (span, chord) = (hi[0] - lo[0], hi[1] - lo[1]);
+    for (what, v) in [("span (x extent)", span), ("chord (y extent)", chord)] {
+        if !(v >= MIN_EXTENT_MM) {
+            return Err(WingbeatError::invalid(
+                "planform",
+                format!("a {what} of {} mm", crate::error::num(v)),
+                format!(
+                    "an outline at least {MIN_EXTENT_MM} mm in span and chord (coordinates are in mm)"
+                ),
+            ));
+        }
+    }
+    if !(area.abs() >= MIN_AREA_FRACTION * span * chord) {
+        return Err(WingbeatError::invalid(
+            "planform",
+            format!(
+                "an area of {} mm^2 in a {} × {} mm box",
+                crate::error::num(area.abs()),
+                crate::error::num(span),
+                crate::error::num(chord)
+            ),
+            format!(
+                "an outline that covers at least {MIN_AREA_FRACTION} of its bounding box (not a sliver or a line)"
+            ),
+        ));
     }
     if area < 0.0 {
         p.reverse();

@@ -79,17 +79,20 @@ impl ShellMaterial {
         }
     }
 
-    /// Checks thickness, E, ρ > 0 (finite, within generous bounds) and −1 < ν < 0.5.
+    /// Checks every field against its physical range, [`crate::params::MATERIAL_RANGES`]
+    /// (thickness 1e-7 ..= 1 m, E 1e3 ..= 1e13 Pa, ρ 1 ..= 1e5 kg/m³, −1 < ν < 0.5); the error
+    /// names the field (`material.e_pa`) and its range.
     pub fn validate(&self) -> Result<()> {
-        crate::error::check_positive("material.thickness_m", self.thickness_m, 1.0, "m")?;
-        crate::error::check_positive("material.e_pa", self.e_pa, 1e13, "Pa")?;
-        crate::error::check_positive("material.rho_kg_m3", self.rho_kg_m3, 1e5, "kg/m^3")?;
-        if !(self.nu.is_finite() && self.nu > -1.0 && self.nu < 0.5) {
-            return Err(WingbeatError::invalid(
-                "material.nu",
-                self.nu,
-                "a finite Poisson's ratio in the open interval (-1, 0.5)",
-            ));
+        for (field, v) in [
+            ("material.thickness_m", self.thickness_m),
+            ("material.e_pa", self.e_pa),
+            ("material.rho_kg_m3", self.rho_kg_m3),
+            ("material.nu", self.nu),
+        ] {
+            // every field has a range (tests/issue13_errors.rs checks the table)
+            if let Some(r) = crate::params::material_range(field) {
+                r.check(v)?;
+            }
         }
         Ok(())
     }
@@ -321,6 +324,76 @@ pub struct FemModes {
     pub mesh_size_mm: f64,
 }
 
+/// Most FE work one native run may take ([`fe_work`], about one multiply–add each): the
+/// CLI's `wingbeat modes`, [`compute_modes`]. Unloaded, the skyline solver does 1.2–2.5 ns
+/// per unit (default wing, 6 modes: 2 mm 4.8e7 units 59 ms, 1 mm 4.4e8 units 0.68 s,
+/// 0.75 mm 9.4e8 units 2.2 s, docs/fem.md), so the cap keeps a run near 10 s and still
+/// admits the default wing at 0.5 mm (4.2e9 units); docs/limits.md ("FE work").
+pub const FE_MAX_WORK: f64 = 5.0e9;
+
+/// Most FE work one browser run may take (wasm `feModes`, about 3× slower than native):
+/// admits the default wing at 0.75 mm (9.4e8 units, 5.6–7.8 s in V8), refuses 0.5 mm.
+pub const BROWSER_FE_MAX_WORK: f64 = 1.5e9;
+
+/// Largest skyline envelope one FE run may allocate, entries (8 bytes each; K and its
+/// factor hold one each): about 1.6 GB natively.
+pub const FE_MAX_ENVELOPE: usize = 100_000_000;
+
+/// Estimated work of the eigen-solve of a system of this size for `n_modes` modes, in
+/// multiply–adds: one LDLᵀ factorisation, two envelope sweeps per Krylov vector and the
+/// Gram–Schmidt passes, with the basis the solver typically needs (3 vectors per mode plus
+/// three blocks).
+pub fn fe_work(size: &assembly::SystemSize, n_modes: usize, opt: &EigenOptions) -> f64 {
+    let vectors = (3 * n_modes + 3 * opt.block).min(opt.max_basis) as f64;
+    size.factor_work
+        + vectors * 2.0 * size.envelope as f64
+        + 2.0 * vectors * vectors * size.n_dofs as f64
+}
+
+/// Refuses a mesh whose eigen-solve would exceed `max_work` ([`fe_work`]) or
+/// [`FE_MAX_ENVELOPE`], before anything is assembled; the error names the node count, the
+/// cost and what to change.
+pub fn check_fe_work(
+    mesh: &Mesh,
+    clamped: &[bool],
+    n_modes: usize,
+    opt: &EigenOptions,
+    max_work: f64,
+) -> Result<assembly::SystemSize> {
+    let size = assembly::system_size(mesh, clamped);
+    let work = fe_work(&size, n_modes, opt);
+    let num = crate::error::num;
+    let remedy = "a coarser mesh (`mesh_size_mm`), fewer outline points (a smoother outline), or fewer modes (`n_modes`)";
+    if size.envelope > FE_MAX_ENVELOPE {
+        return Err(WingbeatError::ResourceCap {
+            field: "mesh_size_mm (FE memory)".into(),
+            requested: format!(
+                "a stiffness envelope of {} entries ({} nodes, {} free DOFs)",
+                size.envelope,
+                mesh.nodes.len(),
+                size.n_dofs
+            ),
+            cap: format!("{FE_MAX_ENVELOPE} entries (about 1.6 GB)"),
+            why: format!("memory of the factorisation; use {remedy}"),
+        });
+    }
+    if work > max_work {
+        return Err(WingbeatError::ResourceCap {
+            field: "mesh_size_mm (FE work)".into(),
+            requested: format!(
+                "{} multiply-adds ({} nodes, {} free DOFs, {} modes)",
+                num((work / 1e6).round() * 1e6),
+                mesh.nodes.len(),
+                size.n_dofs,
+                n_modes
+            ),
+            cap: format!("{} multiply-adds", num(max_work)),
+            why: format!("computing time of the eigen-solve; use {remedy}"),
+        });
+    }
+    Ok(size)
+}
+
 /// Runs the whole FE step for `input`: validate, mesh, assemble, solve, post-process.
 pub fn compute_modes(input: &FemInput) -> Result<FemModes> {
     compute_modes_with(input, EigenOptions::default())
@@ -329,6 +402,16 @@ pub fn compute_modes(input: &FemInput) -> Result<FemModes> {
 /// [`compute_modes`] with explicit eigen-solver options (e.g. the factorisation
 /// [`Backend`]).
 pub fn compute_modes_with(input: &FemInput, opt: EigenOptions) -> Result<FemModes> {
+    compute_modes_capped(input, opt, FE_MAX_WORK)
+}
+
+/// [`compute_modes_with`] under the work budget `max_work` ([`check_fe_work`], checked after
+/// meshing and before assembly): [`FE_MAX_WORK`] natively, [`BROWSER_FE_MAX_WORK`] in wasm.
+pub fn compute_modes_capped(
+    input: &FemInput,
+    opt: EigenOptions,
+    max_work: f64,
+) -> Result<FemModes> {
     input.material.validate()?;
     crate::error::check_range("camber", input.camber, 0.0, 0.5, "(rise / chord)")?;
     if input.n_modes == 0 || input.n_modes > crate::model::MAX_MODES {
@@ -340,6 +423,7 @@ pub fn compute_modes_with(input: &FemInput, opt: EigenOptions) -> Result<FemMode
     }
     let (outline, mesh, h) = mesh_input(input)?;
     let clamped = clamp_nodes(&outline, &mesh, input.clamp)?;
+    check_fe_work(&mesh, &clamped, input.n_modes, &opt, max_work)?;
     let mut fe = solve_mesh_with(
         &mesh,
         &clamped,
@@ -511,22 +595,22 @@ pub fn clamp_nodes(outline: &[[f64; 2]], mesh: &Mesh, clamp: Clamp) -> Result<Ve
         }
     };
     let count = flags.iter().filter(|&&f| f).count();
+    let (field, shown) = match clamp {
+        Clamp::Strip { x_mm } => ("clamp.x_mm", format!("{} mm", crate::error::num(x_mm))),
+        _ => ("clamp", "root".to_string()),
+    };
     if count == 0 {
         return Err(WingbeatError::invalid(
-            if matches!(clamp, Clamp::Root) {
-                "clamp"
-            } else {
-                "clamp.x_mm"
-            },
-            format!("{clamp:?}"),
+            field,
+            shown,
             "a clamp that holds at least one mesh node",
         ));
     }
     if count == flags.len() {
         return Err(WingbeatError::invalid(
-            "clamp.x_mm",
-            format!("{clamp:?}"),
-            "a strip that leaves some of the wing free",
+            field,
+            format!("{shown}, which holds every one of the {count} mesh nodes"),
+            "a clamp that leaves some of the wing free (a narrower strip, or a larger outline)",
         ));
     }
     Ok(flags)

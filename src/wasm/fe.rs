@@ -35,7 +35,9 @@ pub(crate) fn browser_input(mut input: FemInput) -> FemInput {
 /// With `opts.json`, `modes_json` is the `wingbeat modes` JSON document of the same result.
 /// The mesh, shapes and nodal strains come back as flat typed arrays (see `FeModesResult`).
 /// Errors name the field (outline, material, camber, mesh size and its node cap, strain
-/// point). Seconds of work at fine meshes: call it from a Web Worker.
+/// point), and a mesh whose solve would exceed the browser's work budget
+/// (`BROWSER_FE_MAX_WORK`) is refused before assembly. Seconds of work at fine meshes: call it
+/// from a Web Worker.
 #[wasm_bindgen(js_name = feModes, unchecked_return_type = "FeModesResult")]
 pub fn fe_modes(
     #[wasm_bindgen(unchecked_param_type = "FemInput | undefined")] input: JsValue,
@@ -50,7 +52,12 @@ pub fn fe_modes(
         Some([x, y]) => (x, y),
         None => crate::fem::strain_point_for(&input),
     };
-    let fe = crate::fem::compute_modes(&input).map_err(err)?;
+    let fe = crate::fem::compute_modes_capped(
+        &input,
+        crate::fem::EigenOptions::default(),
+        crate::fem::BROWSER_FE_MAX_WORK,
+    )
+    .map_err(err)?;
     let modes = fe
         .model_modes(zeta, &[("P".to_string(), px, py)], "opts.strain_point_mm")
         .map_err(err)?;
