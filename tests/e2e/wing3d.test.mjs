@@ -21,17 +21,17 @@ async function ready3d(page, timeout = 90000) {
   // The panel starts when it scrolls into sight.
   await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
   await page.waitForFunction(() => {
-    const b = document.querySelector('#wing3d');
+    const b = __wl.q('[data-wing3d]');
     return b && (b.dataset.state === 'ready' || b.dataset.state === 'unavailable') && (b.dataset.state !== 'ready' || Number(b.dataset.frames || 0) > 0);
   }, null, { timeout });
-  return page.evaluate(() => ({ ...document.querySelector('#wing3d').dataset }));
+  return page.evaluate(() => ({ ...__wl.q('[data-wing3d]').dataset }));
 }
 
-const frames = (page) => page.evaluate(() => Number(document.querySelector('#wing3d').dataset.frames || 0));
+const frames = (page) => page.evaluate(() => Number(__wl.q('[data-wing3d]').dataset.frames || 0));
 
 /** Screenshot of the 3-D canvas with its pixel statistics (pngStats) and the PNG bytes. */
 async function canvasStats(page, name) {
-  const buf = await page.locator('#wing3d canvas.wl-w3-canvas').screenshot({ path: path.join(OUT, name) });
+  const buf = await page.locator('wing-lab [data-wing3d] canvas.wl-w3-canvas').screenshot({ path: path.join(OUT, name) });
   const st = await pngStats(page, buf);
   return { ...st, buf };
 }
@@ -41,7 +41,7 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   await page.goto(env.url);
   await waitRenders(page, 1);
   const ds = await ready3d(page);
-  assert.equal(ds.state, 'ready', await page.textContent('#wing3d'));
+  assert.equal(ds.state, 'ready', await page.textContent('wing-lab [data-wing3d]'));
   assert.equal(ds.backend, 'webgl2');
   assert.match(await page.textContent('.wl-w3-status'), /WebGL2 · \d+ triangles/);
   // Paper mode set: the paper's q on the FE shapes, said so.
@@ -56,7 +56,7 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   assert.match(await page.textContent('.wl-w3-legend-text'), /gamma_xy|γ_xy|gxy/i);
 
   // Plain shading has far fewer hues than the strain colouring; the image changes.
-  await page.selectOption('#wing3d ~ .wl-w3-controls select[aria-label="Colour the wing by"]', '0');
+  await page.selectOption('wing-lab [data-wing3d] ~ .wl-w3-controls select[aria-label="Colour the wing by"]', '0');
   const plain = await canvasStats(page, 'wing3d-webgl2-plain.png');
   assert.ok(!plain.buf.equals(a.buf), 'colour mode changes the picture');
 
@@ -69,7 +69,7 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   // Play advances time and draws frames; the responses plot carries the 3-D cursor.
   const f0 = await frames(page);
   await page.click('.wl-w3-play');
-  await page.waitForFunction((n) => Number(document.querySelector('#wing3d').dataset.frames) >= n + 10, f0, { timeout: 20000 });
+  await page.waitForFunction((n) => Number(__wl.q('[data-wing3d]').dataset.frames) >= n + 10, f0, { timeout: 20000 });
   await page.click('.wl-w3-play');
   const t = await page.evaluate(() => document.querySelector('wing-lab').wing3d.t);
   assert.ok(t > 0.02, `time advanced: ${t}`);
@@ -77,7 +77,7 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
 
   // Orbit by keyboard on the focused canvas redraws.
   const f1 = await frames(page);
-  await page.focus('#wing3d canvas');
+  await page.focus('wing-lab [data-wing3d] canvas');
   await page.keyboard.press('ArrowLeft');
   assert.ok((await frames(page)) > f1);
   assert.deepEqual(problems, []);
@@ -113,7 +113,7 @@ test('WebGPU (flags from the toolchain notes): same panel on the WebGPU backend,
     const { page, context } = await openPage(browser, env.url);
     await page.goto(env.url + '?panels=controls,wing3d');
     const ds = await ready3d(page);
-    assert.equal(ds.state, 'ready', await page.textContent('#wing3d'));
+    assert.equal(ds.state, 'ready', await page.textContent('wing-lab [data-wing3d]'));
     assert.equal(ds.backend, 'webgpu');
     await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.01));
     await page.waitForTimeout(300);
@@ -139,7 +139,7 @@ test('no WebGPU and no WebGL2: the panel says why and the rest of the lab works'
   await waitRenders(page, 1);
   const ds = await ready3d(page);
   assert.equal(ds.state, 'unavailable');
-  assert.match(await page.textContent('#wing3d'), /3-D view unavailable: .+\. Everything else in the lab works without it\./);
+  assert.match(await page.textContent('wing-lab [data-wing3d]'), /3-D view unavailable: .+\. Everything else in the lab works without it\./);
   // The live panels are unaffected: numbers, and a slider recomputes.
   assert.equal(await page.textContent('wing-lab [data-field="feff-0"]'), '60.3064');
   const before = Number(await page.evaluate(() => document.querySelector('wing-lab').dataset.renders));
