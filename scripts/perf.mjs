@@ -53,7 +53,7 @@ try {
   // Persistent listeners: every keydown on the slider and every finished render is logged.
   await page.evaluate(() => {
     const lab = document.querySelector('wing-lab');
-    const input = document.querySelector('wing-lab input[type=range][data-key="gamma0"]');
+    const input = __wl.q('input[type=range][data-key="gamma0"]');
     window.__perf = { downs: [], renders: [] };
     input.addEventListener('keydown', (e) => window.__perf.downs.push(e.timeStamp));
     lab.addEventListener('wl-rendered', (e) => window.__perf.renders.push(e.detail));
@@ -147,13 +147,13 @@ try {
     const shot = await openPage(env.browser, env.url, { width: 1280, height: 800 });
     await shot.page.goto(env.url);
     await waitRenders(shot.page, 1);
-    await shot.page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready' && Number(document.querySelector('#wing3d').dataset.frames) > 0, null, { timeout: 90000 });
+    await shot.page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0, null, { timeout: 90000 });
     await shot.page.waitForTimeout(400);
     await shot.page.mouse.move(1200, 780);
     await shot.page.screenshot({ path: path.join(ROOT, 'docs', 'lab.png') });
     // docs/lab_wing3d.png: the 3-D panel, FE wing mode set, mid-run.
     await shot.page.selectOption('wing-lab select[data-key="modes"]', 'fe');
-    await shot.page.waitForFunction(() => document.querySelector('wing-lab').fe && /mm/.test(document.querySelector('.wl-w3-defl').textContent), null, { timeout: 90000 });
+    await shot.page.waitForFunction(() => document.querySelector('wing-lab').fe && /mm/.test(__wl.q('.wl-w3-defl').textContent), null, { timeout: 90000 });
     await shot.page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.5125));
     await shot.page.waitForTimeout(300);
     await shot.page.locator('section.wl-wing3d').screenshot({ path: path.join(ROOT, 'docs', 'lab_wing3d.png') });
@@ -161,7 +161,7 @@ try {
     const phone = await openPage(env.browser, env.url, { width: 390, height: 844 });
     await phone.page.goto(env.url);
     await waitRenders(phone.page, 1);
-    await phone.page.waitForFunction(() => document.querySelector('#wing3d').dataset.state === 'ready' && Number(document.querySelector('#wing3d').dataset.frames) > 0, null, { timeout: 90000 });
+    await phone.page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0, null, { timeout: 90000 });
     await phone.page.waitForTimeout(400);
     await phone.page.screenshot({ path: path.join(ROOT, 'docs', 'lab_phone.png') });
     result.screenshot = ['docs/lab.png', 'docs/lab_wing3d.png', 'docs/lab_phone.png'];
