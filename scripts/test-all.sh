@@ -3,10 +3,11 @@
 #   scripts/test-all.sh [all|native|wasm|e2e]
 #   native  cargo test --all-features (core, CLI, FE backends, renderer goldens on lavapipe,
 #           and the wasm API's plain-Rust helpers)
-#   wasm    wasm-bindgen-test suites: tests/wasm_api.rs in node, tests/wasm_browser.rs in Chromium
+#   wasm    wasm-bindgen-test suites through wasm-pack (README, "wasm-pack"): tests/wasm_api.rs
+#           with `wasm-pack test --node`, tests/wasm_browser.rs with `--headless --chrome`
 #   e2e     build the lab, type-check www/ (npm run check:js: tsc, ~2-3 s), then node --test:
 #           tests/js (unit + the real wasm in node) and tests/e2e (Playwright + Debian Chromium)
-# Installs what is missing first (scripts/ensure-tools.sh --browser). Honours CARGO_TARGET_DIR.
+# Installs what is missing first (scripts/ensure-tools.sh --browser [--wasm-pack]). Honours CARGO_TARGET_DIR.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -25,13 +26,16 @@ native() {
 }
 
 wasm() {
-  echo "== wasm: wasm-bindgen-test in node and headless Chromium"
-  export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner
+  echo "== wasm: wasm-pack test --node (tests/wasm_api.rs) and --headless --chrome (tests/wasm_browser.rs)"
+  # npm's binaryen wasm-opt first on PATH: wasm-pack cannot download its own.
+  export PATH="$PWD/node_modules/.bin:$PATH"
   export WASM_BINDGEN_TEST_TIMEOUT=300
-  # The same features as the lab build (scripts/build-web.sh), so the wasm dependencies compile once.
-  local args=(--release --target wasm32-unknown-unknown --no-default-features --features web,render)
-  cargo test "${args[@]}" --test wasm_api
-  CHROMEDRIVER=/usr/bin/chromedriver cargo test "${args[@]}" --test wasm_browser
+  # The README's commands, limited to the two wasm_bindgen_test suites (the other test targets
+  # hold only native #[test]s; linking each for wasm32 would cost minutes and run nothing).
+  # --release and the lab's features, as scripts/build-web.sh: the wasm dependencies compile once.
+  local args=(--release -- --no-default-features --features web,render)
+  wasm-pack test --node "${args[@]}" --test wasm_api
+  wasm-pack test --headless --chrome --chromedriver /usr/bin/chromedriver "${args[@]}" --test wasm_browser
 }
 
 e2e() {
@@ -44,8 +48,8 @@ e2e() {
 
 case "$what" in
   native) bash scripts/ensure-tools.sh --browser; native ;;
-  wasm) bash scripts/ensure-tools.sh --browser; wasm ;;
+  wasm) bash scripts/ensure-tools.sh --browser --wasm-pack; wasm ;;
   e2e) bash scripts/ensure-tools.sh --browser; e2e ;;
-  all) bash scripts/ensure-tools.sh --browser; native; wasm; e2e; echo "== all test suites passed" ;;
+  all) bash scripts/ensure-tools.sh --browser --wasm-pack; native; wasm; e2e; echo "== all test suites passed" ;;
   *) echo "usage: scripts/test-all.sh [all|native|wasm|e2e]" >&2; exit 2 ;;
 esac
