@@ -13,10 +13,10 @@ pub const MAX_DURATION_S: f64 = 3600.0;
 pub const MAX_SAMPLE_RATE_HZ: f64 = 1.0e6;
 /// Most output samples per series.
 pub const MAX_SAMPLES: usize = 2_000_000;
-/// Most output values per run (samples × modes). Measured peak memory (release build, the
-/// CLI writing the whole result): 2 modes × 2e6 samples, half the cap, took 0.95 GB with JSON
-/// output (0.62 GB of it the text) and 0.91 GB with CSV, so a run at the cap stays near 2 GB
-/// natively; the browser has its own, lower cap (`wasm::helpers::WEB_MAX_SAMPLE_VALUES`).
+/// Most output values per run (samples × modes). Measured peak memory at the cap (release
+/// build, the CLI writing the whole result, 4 modes × 1 999 901 samples): 1.42 GB with JSON
+/// output (0.90 GB of it the text) and 1.39 GB with CSV (docs/limits.md, "Memory"); the
+/// browser has its own, lower cap (`wasm::helpers::WEB_MAX_SAMPLE_VALUES`).
 pub const MAX_SAMPLE_VALUES: usize = 8_000_000;
 
 /// A simulation request.

@@ -1,8 +1,9 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Issue 13, second pass: clear errors for the FE reproductions (a 1e-9 mm outline, a
 //! modulus of 1e-300 Pa), one owner for the URL and core ranges (www/state.js against
 //! src/params.rs), the FE work budget (a 5 000-point outline), and a regression test for each
 //! remaining reproduction of the issue's "Unclear errors" list.
+// Runs the CLI binary and Node: native only.
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -191,7 +192,7 @@ fn issue13_material_ranges_have_one_owner() {
             f64::NAN,
             f64::INFINITY,
         ] {
-            let mut m = ok.clone();
+            let mut m = ok;
             match r.field {
                 "material.thickness_m" => m.thickness_m = bad,
                 "material.e_pa" => m.e_pa = bad,
@@ -205,7 +206,7 @@ fn issue13_material_ranges_have_one_owner() {
     }
     // The open interval of ν: its ends are refused.
     for nu in [-1.0, 0.5] {
-        let m = fem::ShellMaterial { nu, ..ok.clone() };
+        let m = fem::ShellMaterial { nu, ..ok };
         assert!(err_text(m.validate()).contains("open interval"));
     }
     // The lab's sliders (WING_PARAMS) lie inside the core's ranges (thickness in µm there).

@@ -1,4 +1,3 @@
-#![cfg(not(target_arch = "wasm32"))]
 //! Issue 13, item 5: property tests over every reader of outside input — the config JSON,
 //! the modes document, the kinematics CSV, the planform readers, the FE input and the wasm
 //! entry points' Rust-side checks (`wasm::helpers`, compiled natively with `--features web`).
@@ -6,6 +5,8 @@
 //! names a field (or, for text that is not JSON at all, says where parsing stopped).
 //! Case counts are small so the whole file takes a few seconds in a debug build; the long
 //! runs are the `cargo fuzz` targets in fuzz/ (docs/fuzzing.md).
+// proptest is a native-only dev-dependency.
+#![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
 use wingbeat::config::SimConfig;

@@ -260,7 +260,7 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
     }
     let (span, chord) = (hi[0] - lo[0], hi[1] - lo[1]);
     for (what, v) in [("span (x extent)", span), ("chord (y extent)", chord)] {
-        if !(v >= MIN_EXTENT_MM) {
+        if v < MIN_EXTENT_MM {
             return Err(WingbeatError::invalid(
                 "planform",
                 format!("a {what} of {} mm", crate::error::num(v)),
@@ -270,7 +270,7 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
             ));
         }
     }
-    if !(area.abs() >= MIN_AREA_FRACTION * span * chord) {
+    if area.abs() < MIN_AREA_FRACTION * span * chord {
         return Err(WingbeatError::invalid(
             "planform",
             format!(
