@@ -123,6 +123,11 @@ for (const vp of SIZES) {
 
   test(`${vp.name}: keyboard tab order follows the visual order; targets ≥ 24×24; canvases are named`, async () => {
     const { page, context } = await open(vp);
+    // The 3-D view (first screen) has the FE wing computed in the worker; when it arrives the
+    // mode-shape panel swaps its "Compute the FE wing's modes" button for the viewer. Wait for
+    // it, or that swap can land in the middle of the Tab walk below.
+    await page.waitForFunction(() => document.querySelector('wing-lab').fe, null, { timeout: 90000 });
+    await page.waitForTimeout(200);
     await page.evaluate(() => window.scrollTo(0, 0));
     // Tabbable elements of the lab with their document-coordinate boxes (at scroll 0).
     const items = await page.evaluate(() => {
@@ -172,12 +177,18 @@ for (const vp of SIZES) {
     // WCAG 2.2 target size: buttons and selects at least 24×24 CSS px.
     const small = await page.$$eval('wing-lab button, wing-lab select', (es) => es.filter((e) => { const r = e.getBoundingClientRect(); return r.width > 0 && (r.width < 24 || r.height < 24); }).map((e) => `${e.tagName} ${e.textContent.slice(0, 20)} ${e.getBoundingClientRect().width}×${e.getBoundingClientRect().height}`));
     assert.deepEqual(small, []);
-    // Every visible canvas has an accessible name and a non-empty text alternative (or is decorative).
+    // Every visible canvas has an accessible name and a non-empty text alternative (or is
+    // decorative): a short name plus a description (aria-describedby: the plots' data summaries),
+    // or a name that is itself the whole text alternative — the mode-shape drawing's aria-label
+    // says which mode, its kind, frequency, phase, exaggeration and colours, and it has no
+    // aria-describedby (it is visible once the FE wing is in, waited for above).
     const canvases = await page.$$eval('wing-lab canvas', (cs) => cs.filter((c) => c.getBoundingClientRect().width > 0).map((c) => {
       if (c.getAttribute('aria-hidden') === 'true') return { ok: true };
       const name = c.getAttribute('aria-label') || '';
       const desc = (c.getAttribute('aria-describedby') || '').split(/\s+/).map((id) => c.getRootNode().getElementById(id)?.textContent || '').join(' ');
-      return { ok: c.getAttribute('role') === 'img' && name.length > 10 && desc.trim().length > 20, name, desc: desc.slice(0, 60) };
+      const described = name.length > 10 && desc.trim().length > 20;
+      const selfContained = c.classList.contains('wl-ms-canvas') && name.length > 80;
+      return { ok: c.getAttribute('role') === 'img' && (described || selfContained), name, desc: desc.slice(0, 60) };
     }));
     assert.ok(canvases.length >= 4);
     for (const c of canvases) assert.ok(c.ok, JSON.stringify(c));
