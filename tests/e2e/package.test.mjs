@@ -5,6 +5,7 @@
 // that folder with examples/course-site/index.html (import map → node_modules/wingbeat-lab/lab.js)
 // and a page with a plain <script type=module src=/node_modules/…/lab.js>, and checks in headless
 // Chromium that the element defines and computes with every file from the installed package.
+// With WINGBEAT_TEST_VITE=1 it also builds the example with Vite (installed from npm) and checks dist/.
 // Run after scripts/build-web.sh www:  node --test --test-concurrency=1 tests/e2e/package.test.mjs
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -95,33 +96,65 @@ loadWasm().then((api) => console.log(typeof api.parameters));
   execFileSync(path.join(ROOT, 'node_modules/.bin/tsc'), ['-p', dir], { cwd: dir, stdio: ['ignore', 'inherit', 'inherit'] });
 });
 
-for (const [name, page, sel] of [['course site (import map)', 'index.html', 'figure wing-lab'], ['plain script tag', 'direct.html', 'wing-lab']]) {
-  test(`installed package: ${name} defines the element and computes`, async () => {
-    const { context, page: p, problems } = await openPage(browser, `${site.url}${page}`, { width: 1000, height: 900 });
-    const urls = [];
-    p.on('request', (r) => urls.push(new URL(r.url())));
-    await p.goto(`${site.url}${page}`);
-    await p.waitForFunction((s) => Number(document.querySelector(s)?.getAttribute('data-renders') || 0) >= 1, sel, { timeout: 30000 });
-    const info = await p.evaluate((s) => {
-      const lab = /** @type {any} */ (document.querySelector(s));
-      const root = lab.shadowRoot || lab;
-      return {
-        defined: !!customElements.get('wing-lab'),
-        sections: root.querySelectorAll('section').length,
-        numbers: (root.textContent || '').includes('Hz'),
-        gamma0: lab.state.gamma0,
-      };
-    }, sel);
-    assert.ok(info.defined);
-    assert.ok(info.sections >= 2, `${info.sections} panels`);
-    assert.ok(info.numbers, 'no computed numbers shown');
-    if (page === 'index.html') assert.equal(info.gamma0, 0.1);
-    const lab = urls.filter((u) => u.origin === new URL(site.url).origin && u.pathname !== `/${page}`);
-    assert.ok(lab.length > 5);
-    for (const u of lab) assert.ok(u.pathname.startsWith('/node_modules/wingbeat-lab/'), `${u.pathname} loaded from outside the package`);
-    assert.ok(lab.some((u) => u.pathname.endsWith('/pkg/wingbeat_bg.wasm')));
-    assert.deepEqual(problems, []);
-    if (page === 'index.html') await p.screenshot({ path: path.join(OUT, 'package-course-site.png'), fullPage: true });
-    await context.close();
-  });
+/**
+ * Opens `url`, waits until the lab `sel` has computed, and checks it: defined, panels and numbers
+ * shown, and every request of the site other than the page itself answered from
+ * node_modules/wingbeat-lab/ (the installed package; `allow` adds the site's own bundle).
+ */
+async function checkLab(url, sel, { gamma0, shot, allow = /^$/ } = {}) {
+  const { context, page: p, problems } = await openPage(browser, url, { width: 1000, height: 900 });
+  const urls = [];
+  p.on('request', (r) => urls.push(new URL(r.url())));
+  await p.goto(url);
+  await p.waitForFunction((s) => Number(document.querySelector(s)?.getAttribute('data-renders') || 0) >= 1, sel, { timeout: 30000 });
+  const info = await p.evaluate((s) => {
+    const lab = /** @type {any} */ (document.querySelector(s));
+    const root = lab.shadowRoot || lab;
+    return {
+      defined: !!customElements.get('wing-lab'),
+      sections: root.querySelectorAll('section').length,
+      numbers: (root.textContent || '').includes('Hz'),
+      gamma0: lab.state.gamma0,
+    };
+  }, sel);
+  assert.ok(info.defined);
+  assert.ok(info.sections >= 2, `${info.sections} panels`);
+  assert.ok(info.numbers, 'no computed numbers shown');
+  if (gamma0 !== undefined) assert.equal(info.gamma0, gamma0);
+  const here = new URL(url);
+  const lab = urls.filter((u) => u.origin === here.origin && u.pathname !== here.pathname && !allow.test(u.pathname));
+  assert.ok(lab.length > 5);
+  for (const u of lab) assert.ok(u.pathname.startsWith('/node_modules/wingbeat-lab/'), `${u.pathname} loaded from outside the package`);
+  assert.ok(lab.some((u) => u.pathname.endsWith('/pkg/wingbeat_bg.wasm')));
+  assert.deepEqual(problems, []);
+  if (shot) await p.screenshot({ path: path.join(OUT, shot), fullPage: true });
+  await context.close();
 }
+
+test('installed package: the course site (import map) defines the element and computes', async () => {
+  await checkLab(`${site.url}index.html`, 'figure wing-lab', { gamma0: 0.1, shot: 'package-course-site.png' });
+});
+
+test('installed package: a plain <script type=module src=/node_modules/wingbeat-lab/lab.js> works', async () => {
+  await checkLab(`${site.url}direct.html`, 'wing-lab');
+});
+
+// Needs vite from the npm registry (a devDependency of the example only), so it is opt-in.
+test('the course site built with Vite (examples/course-site/vite.config.js) works', { skip: !process.env.WINGBEAT_TEST_VITE && 'set WINGBEAT_TEST_VITE=1 to run (installs vite from npm)' }, async () => {
+  const ex = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples/course-site/package.json'), 'utf8'));
+  const vdir = fs.mkdtempSync(path.join(os.tmpdir(), 'wl-vite-'));
+  try {
+    for (const f of ['index.html', 'vite.config.js']) fs.copyFileSync(path.join(ROOT, 'examples/course-site', f), path.join(vdir, f));
+    fs.writeFileSync(path.join(vdir, 'package.json'), JSON.stringify({ name: 'course-site-vite', private: true, type: 'module' }));
+    execFileSync('npm', ['install', '--no-audit', '--no-fund', '--loglevel=error', TGZ, `vite@${ex.devDependencies.vite}`], { cwd: vdir, stdio: ['ignore', 'inherit', 'inherit'] });
+    execFileSync(path.join(vdir, 'node_modules/.bin/vite'), ['build', '--logLevel', 'warn'], { cwd: vdir, stdio: ['ignore', 'inherit', 'inherit'] });
+    const dist = await startServer(path.join(vdir, 'dist'), 0);
+    try {
+      await checkLab(`${dist.url}index.html`, 'figure wing-lab', { gamma0: 0.1, allow: /^\/assets\// });
+    } finally {
+      dist.server.close();
+    }
+  } finally {
+    fs.rmSync(vdir, { recursive: true, force: true });
+  }
+});
