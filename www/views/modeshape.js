@@ -27,8 +27,9 @@ export function mount(ctx) {
   const playBtn = el('button', { type: 'button', class: 'wl-ms-play', 'aria-pressed': 'false', text: 'Animate' });
   const phase = el('input', { type: 'range', id: `${uid}-ms-phase`, min: 0, max: 360, step: 5, value: 90 });
   const phaseText = el('span', { class: 'wl-ms-phase-text' });
-  const canvas = el('canvas', { class: 'wl-ms-canvas', width: 600, height: 320, role: 'img', 'aria-label': 'Mode shape drawing' });
-  const info = el('dl', { class: 'wl-ms-info', 'aria-live': 'polite' });
+  const canvas = el('canvas', { class: 'wl-ms-canvas', width: 600, height: 320, role: 'img', 'aria-label': 'Mode shape drawing', 'aria-describedby': `${uid}-ms-info` });
+  // The numbers beside the drawing (f_k, kind, a_k) are its text description.
+  const info = el('dl', { class: 'wl-ms-info', id: `${uid}-ms-info`, 'aria-live': 'polite' });
   const note = el('p', { class: 'wl-note' });
   const computeBtn = el('button', { type: 'button', class: 'wl-small', text: 'Compute the FE wing’s modes' });
   const empty = el('p', { class: 'wl-ms-empty' }, 'The mode shapes need an FE wing (mesh and shapes). ', computeBtn);
