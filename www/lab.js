@@ -125,7 +125,7 @@ export { loadWasm } from './engine.js';
 /** @typedef {{ destroy(): void, [hook: string]: any }} View */
 
 const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance, wing, kinematics, modeshape };
-/** DOM (= tab) order of the panels; style.css places them so that it is also the visual order. */
+/** DOM (= tab) order of the panels; layout.js places them so that it is also the visual order. */
 export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'studies', 'resonance', 'report'];
 const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'planform'];
 /** The keys that decide which wing is wanted. */
