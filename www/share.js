@@ -12,7 +12,7 @@
 //       k  the kinematics: l label, f flap frequency (exact), a/b/g the three angles. A Fourier
 //          angle is stored as it is (exact). A sampled angle is stored as the Fourier series the
 //          core makes of it (src/kinematics.rs: the DFT of the N samples, truncated at
-//          H = min(N/2, max_harmonic ?? 64)): { s: [N, H, e], c: [mean, s1, c1, …, sH, cH] } with
+//          H = min(N/2, max_harmonic ?? 24)): { s: [N, H, e], c: [mean, s1, c1, …, sH, cH] } with
 //          each coefficient an integer in units of 10^-e rad; it is read back as N samples of that
 //          series with max_harmonic H, which give the core the same series (to the rounding).
 //          c the CSV the table came from (only when the link stays short enough with it).
@@ -36,8 +36,9 @@ export const MAX_LINK = 2000;
 export const OUTLINE_DECIMALS = 4;
 /** Decimals (of rad) tried for a sampled angle's Fourier coefficients, finest first. */
 export const ANGLE_DECIMALS = [6, 5, 4];
-/** The core's default harmonic cap for sampled angles (src/kinematics.rs DEFAULT_SAMPLED_MAX_HARMONIC). */
-export const DEFAULT_SAMPLED_MAX_HARMONIC = 64;
+/** The core's default harmonic cap for sampled angles (src/kinematics.rs DEFAULT_SAMPLED_MAX_HARMONIC;
+ * tests/js/wasm.test.mjs checks it against wasm limits().default_sampled_max_harmonic). */
+export const DEFAULT_SAMPLED_MAX_HARMONIC = 24;
 const MAX_SAMPLES = 100000;
 const MAX_HARMONIC = 256;
 /** Short keys of v2; a state passed to encodeShare must not use them for anything else. */

@@ -48,6 +48,7 @@ pub fn limits() -> Result<JsValue, JsError> {
         min_flap_hz: f64,
         max_flap_hz: f64,
         max_strain_points: usize,
+        default_sampled_max_harmonic: u32,
     }
     to_js(&Limits {
         max_duration_s: crate::config::MAX_DURATION_S,
@@ -67,6 +68,7 @@ pub fn limits() -> Result<JsValue, JsError> {
         min_flap_hz: crate::kinematics::MIN_FLAP_HZ,
         max_flap_hz: crate::kinematics::MAX_FLAP_HZ,
         max_strain_points: crate::model::MAX_STRAIN_POINTS,
+        default_sampled_max_harmonic: crate::kinematics::DEFAULT_SAMPLED_MAX_HARMONIC,
     })
 }
 

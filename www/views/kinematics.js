@@ -8,6 +8,7 @@
 // carries them in its #s= fragment. "Use the sliders" goes back to the sliders' stroke.
 import { el, activeIn } from '../dom.js';
 import { fmt, errorText } from '../format.js';
+import { DEFAULT_SAMPLED_MAX_HARMONIC } from '../share.js';
 
 export const title = 'Kinematics';
 
@@ -36,7 +37,7 @@ export function mount(ctx) {
   const unitsSel = el('select', { id: id('kin-units'), 'data-kin': 'units' },
     el('option', { value: 'deg', text: 'degrees' }), el('option', { value: 'rad', text: 'radians' }));
   const flapIn = el('input', { type: 'number', id: id('kin-flap'), min: 0.1, max: 1000, step: 0.1, 'data-kin': 'flap_hz' });
-  const harmIn = el('input', { type: 'number', id: id('kin-harm'), min: 1, max: 1000, step: 1, placeholder: 'all', 'data-kin': 'max_harmonic' });
+  const harmIn = el('input', { type: 'number', id: id('kin-harm'), min: 1, max: 1000, step: 1, placeholder: String(DEFAULT_SAMPLED_MAX_HARMONIC), 'data-kin': 'max_harmonic' });
   const statusEl = el('p', { class: 'wl-note', role: 'status', 'data-kin': 'status' });
   /** @type {{ text: string, name: string } | null} */
   let lastCsv = null;
