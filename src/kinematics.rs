@@ -272,6 +272,128 @@ pub struct Kinematics {
     pub beta: Angle,
     /// Yaw γ (small; first order only), rad. Above 0.3 rad the small-angle model is stretched.
     pub gamma: Angle,
+    /// Body angular velocity ω_b(t) in body axes (the fixed I, J, K frame of §2.1), rad/s.
+    /// Omitted (and not written) when zero, which is the paper's case.
+    #[serde(default, skip_serializing_if = "BodyRate::is_zero")]
+    pub body_rate: BodyRate,
+}
+
+/// The body's angular velocity ω_b(t) in body axes (I, J, K: the frame the roll and pitch are
+/// measured from), rad/s. Each component is periodic at the flap frequency and given like an
+/// angle: `Angle::Fourier { mean, harmonics }` (a constant rate is the mean alone) or a
+/// sampled table over one period; only the unit differs (rad/s instead of rad). The wing
+/// frame then turns with Ω = Rᵀ ω_b + Ω_wing, R = R_x(α)·R_y(β) ([`RateState::omega`]).
+/// Ranges: [`crate::params::BODY_RATE_RANGES`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BodyRate {
+    /// ω_b about I (rad/s).
+    pub x: Angle,
+    /// ω_b about J (rad/s).
+    pub y: Angle,
+    /// ω_b about K (rad/s).
+    pub z: Angle,
+}
+
+impl Default for BodyRate {
+    fn default() -> Self {
+        BodyRate {
+            x: Angle::constant(0.0),
+            y: Angle::constant(0.0),
+            z: Angle::constant(0.0),
+        }
+    }
+}
+
+fn angle_is_zero(a: &Angle) -> bool {
+    match a {
+        Angle::Fourier { mean, harmonics } => {
+            *mean == 0.0 && harmonics.iter().all(|h| h.amplitude == 0.0)
+        }
+        Angle::Sampled { values, .. } => values.iter().all(|v| *v == 0.0),
+    }
+}
+
+impl BodyRate {
+    /// A constant body rate [ω_x, ω_y, ω_z], rad/s, in body axes.
+    pub fn constant(w: [f64; 3]) -> Self {
+        BodyRate {
+            x: Angle::constant(w[0]),
+            y: Angle::constant(w[1]),
+            z: Angle::constant(w[2]),
+        }
+    }
+
+    /// True when every component is identically zero (the default: no body rotation).
+    pub fn is_zero(&self) -> bool {
+        angle_is_zero(&self.x) && angle_is_zero(&self.y) && angle_is_zero(&self.z)
+    }
+
+    /// The three components as Fourier series (rad/s).
+    pub fn series(&self) -> [Series; 3] {
+        [self.x.series(), self.y.series(), self.z.series()]
+    }
+
+    /// Validates every component against [`crate::params::BODY_RATE_RANGES`]; errors name
+    /// the field (`kinematics.body_rate.x.mean`, …).
+    pub fn validate(&self) -> Result<()> {
+        use crate::params::body_rate_range as r;
+        for (name, a) in [("x", &self.x), ("y", &self.y), ("z", &self.z)] {
+            let field = format!("kinematics.body_rate.{name}");
+            match a {
+                Angle::Fourier { mean, harmonics } => {
+                    r("mean").check(&format!("{field}.mean"), *mean)?;
+                    if harmonics.len() > MAX_HARMONIC as usize {
+                        return Err(WingbeatError::invalid(
+                            format!("{field}.harmonics"),
+                            format!("{} entries", harmonics.len()),
+                            format!("at most {MAX_HARMONIC} harmonics"),
+                        ));
+                    }
+                    for (i, h) in harmonics.iter().enumerate() {
+                        let f = format!("{field}.harmonics[{i}]");
+                        if h.n == 0 || h.n > MAX_HARMONIC {
+                            return Err(WingbeatError::invalid(
+                                format!("{f}.n"),
+                                h.n,
+                                format!("an integer in [1, {MAX_HARMONIC}]"),
+                            ));
+                        }
+                        r("amplitude").check(&format!("{f}.amplitude"), h.amplitude)?;
+                        r("phase").check(&format!("{f}.phase"), h.phase)?;
+                    }
+                    let peak =
+                        mean.abs() + harmonics.iter().map(|h| h.amplitude.abs()).sum::<f64>();
+                    r("peak").check(&format!("{field} (|mean| + Σ|amplitude|)"), peak)?;
+                }
+                Angle::Sampled {
+                    values,
+                    max_harmonic,
+                } => {
+                    if values.len() < 3 || values.len() > MAX_SAMPLES_PER_PERIOD {
+                        return Err(WingbeatError::invalid(
+                            format!("{field}.values"),
+                            format!("{} samples", values.len()),
+                            format!("3 to {MAX_SAMPLES_PER_PERIOD} samples over one period"),
+                        ));
+                    }
+                    for (i, v) in values.iter().enumerate() {
+                        r("value").check(&format!("{field}.values[{i}]"), *v)?;
+                    }
+                    if let Some(m) = max_harmonic {
+                        if *m > MAX_HARMONIC {
+                            return Err(WingbeatError::invalid(
+                                format!("{field}.max_harmonic"),
+                                m,
+                                format!("an integer in [0, {MAX_HARMONIC}]"),
+                            ));
+                        }
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
 }
 
 /// Yaw amplitudes above this (rad) are outside the paper's small-angle range: allowed, with a warning.
@@ -298,25 +420,63 @@ pub struct RateState {
     pub gamma_dot: f64,
     /// γ̈.
     pub gamma_ddot: f64,
+    /// Body angular velocity ω_b in body axes, rad/s (zero without body rotation).
+    pub body_rate: [f64; 3],
+    /// Its time derivative ω̇_b, rad/s².
+    pub body_rate_dot: [f64; 3],
 }
 
 impl RateState {
-    /// Angular velocity of the I″–J″–K″ frame in its own components (Eq. 1), rad/s:
-    /// Ω = (α̇ cos β, β̇, α̇ sin β).
+    /// Angular velocity of the I″–J″–K″ frame in its own components, rad/s:
+    /// Ω = Rᵀ ω_b + Ω_wing with Ω_wing = (α̇ cos β, β̇, α̇ sin β) (Eq. 1) and R = R_x(α)·R_y(β)
+    /// the wing frame's orientation in body axes. Without body rotation (ω_b = 0) this is
+    /// Eq. 1 exactly, computed with the same arithmetic as before the body rate existed.
     pub fn omega(&self) -> [f64; 3] {
         let (sb, cb) = self.beta.sin_cos();
-        [self.alpha_dot * cb, self.beta_dot, self.alpha_dot * sb]
+        let w = [self.alpha_dot * cb, self.beta_dot, self.alpha_dot * sb];
+        if self.body_rate == [0.0; 3] {
+            return w;
+        }
+        let v = self.to_wing_frame(self.body_rate);
+        [w[0] + v[0], w[1] + v[1], w[2] + v[2]]
     }
 
-    /// Its time derivative, rad/s²:
-    /// Ω̇ = (α̈ cos β − α̇ β̇ sin β, β̈, α̈ sin β + α̇ β̇ cos β).
+    /// Its exact time derivative, rad/s²:
+    /// Ω̇ = Ω̇_wing + Rᵀ ω̇_b + Ṙᵀ ω_b, with Ṙᵀ ω_b = −Ω_wing × (Rᵀ ω_b) (since RᵀṘ = [Ω_wing]×)
+    /// and Ω̇_wing = (α̈ cos β − α̇ β̇ sin β, β̈, α̈ sin β + α̇ β̇ cos β).
     pub fn omega_dot(&self) -> [f64; 3] {
         let (sb, cb) = self.beta.sin_cos();
-        [
+        let wd = [
             self.alpha_ddot * cb - self.alpha_dot * self.beta_dot * sb,
             self.beta_ddot,
             self.alpha_ddot * sb + self.alpha_dot * self.beta_dot * cb,
+        ];
+        if self.body_rate == [0.0; 3] && self.body_rate_dot == [0.0; 3] {
+            return wd;
+        }
+        let w = [self.alpha_dot * cb, self.beta_dot, self.alpha_dot * sb];
+        let v = self.to_wing_frame(self.body_rate);
+        let u = self.to_wing_frame(self.body_rate_dot);
+        // −Ω_wing × v
+        let c = [
+            w[1] * v[2] - w[2] * v[1],
+            w[2] * v[0] - w[0] * v[2],
+            w[0] * v[1] - w[1] * v[0],
+        ];
+        [
+            wd[0] + u[0] - c[0],
+            wd[1] + u[1] - c[1],
+            wd[2] + u[2] - c[2],
         ]
+    }
+
+    /// Rᵀ v: a body-axes vector in wing-frame (I″, J″, K″) components, R = R_x(α)·R_y(β).
+    pub fn to_wing_frame(&self, v: [f64; 3]) -> [f64; 3] {
+        let (sa, ca) = self.alpha.sin_cos();
+        let (sb, cb) = self.beta.sin_cos();
+        // R_x(α)ᵀ v, then R_y(β)ᵀ.
+        let u = [v[0], ca * v[1] + sa * v[2], -sa * v[1] + ca * v[2]];
+        [cb * u[0] - sb * u[2], u[1], sb * u[0] + cb * u[2]]
     }
 }
 
@@ -328,6 +488,7 @@ impl Kinematics {
             alpha: Angle::sine(alpha0),
             beta: Angle::sine(beta0),
             gamma: Angle::sine(gamma0),
+            body_rate: BodyRate::default(),
         }
     }
 
@@ -358,6 +519,7 @@ impl Kinematics {
         self.alpha.validate("kinematics.alpha")?;
         self.beta.validate("kinematics.beta")?;
         self.gamma.validate("kinematics.gamma")?;
+        self.body_rate.validate()?;
         Ok(())
     }
 
@@ -374,6 +536,12 @@ impl Kinematics {
         w
     }
 
+    /// The paper's kinematics plus a constant body rate (body axes, rad/s).
+    pub fn with_body_rate(mut self, w: [f64; 3]) -> Self {
+        self.body_rate = BodyRate::constant(w);
+        self
+    }
+
     /// Resolve into evaluable series (do this once, then call [`Compiled::state`] many times).
     pub fn compile(&self) -> Compiled {
         Compiled {
@@ -381,6 +549,11 @@ impl Kinematics {
             alpha: self.alpha.series(),
             beta: self.beta.series(),
             gamma: self.gamma.series(),
+            body_rate: if self.body_rate.is_zero() {
+                None
+            } else {
+                Some(self.body_rate.series())
+            },
         }
     }
 
@@ -401,6 +574,8 @@ pub struct Compiled {
     pub beta: Series,
     /// Yaw series.
     pub gamma: Series,
+    /// Body-rate series (x, y, z in body axes, rad/s); `None` without body rotation.
+    pub body_rate: Option<[Series; 3]>,
 }
 
 impl Compiled {
@@ -409,6 +584,14 @@ impl Compiled {
         let (alpha, alpha_dot, alpha_ddot) = self.alpha.eval(t, self.wd);
         let (beta, beta_dot, beta_ddot) = self.beta.eval(t, self.wd);
         let (gamma, gamma_dot, gamma_ddot) = self.gamma.eval(t, self.wd);
+        let (mut body_rate, mut body_rate_dot) = ([0.0; 3], [0.0; 3]);
+        if let Some(b) = &self.body_rate {
+            for i in 0..3 {
+                let (v, d, _) = b[i].eval(t, self.wd);
+                body_rate[i] = v;
+                body_rate_dot[i] = d;
+            }
+        }
         RateState {
             alpha,
             alpha_dot,
@@ -419,13 +602,19 @@ impl Compiled {
             gamma,
             gamma_dot,
             gamma_ddot,
+            body_rate,
+            body_rate_dot,
         }
     }
 
     /// Whether the stiffness coefficient α̇² cos²β + β̇² (the centrifugal softening) has period T/2 (true when α and β
     /// contain only odd harmonics and β has zero mean — the paper's symmetric sinusoids).
     /// Then Floquet analysis can use the half period.
+    /// A body rate breaks that symmetry (R_x(−α)R_y(−β) ≠ R_x(α)R_y(β)), so then it is false.
     pub fn stiffness_coefficient_has_half_period(&self) -> bool {
+        if self.body_rate.is_some() {
+            return false;
+        }
         // α̇ only needs odd harmonics (its mean does not enter α̇); β must flip sign.
         let alpha_odd = self
             .alpha

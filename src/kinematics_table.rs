@@ -545,6 +545,7 @@ pub fn kinematics_from_csv(text: &str, opts: &CsvKinematicsOptions) -> Result<Ki
         alpha: angle(0, &values[0]),
         beta: angle(1, &values[1]),
         gamma: angle(2, &values[2]),
+        body_rate: Default::default(),
     };
     kinematics.validate()?;
     warnings.extend(kinematics.warnings());

@@ -641,3 +641,71 @@ pub fn wing_input<K: AsRef<str>>(
 pub fn default_wing() -> Result<crate::fem::FemInput> {
     wing_input(std::iter::empty::<(&str, f64)>(), None)
 }
+
+/// One accepted range of the body angular velocity ω_b ([`BODY_RATE_RANGES`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BodyRateRange {
+    /// Which quantity: `mean`, `amplitude`, `phase`, `value` (a sampled table's entry) or
+    /// `peak` (|mean| + Σ|amplitude| of one component).
+    pub what: &'static str,
+    /// Smallest value accepted.
+    pub min: f64,
+    /// Largest value accepted.
+    pub max: f64,
+    /// Unit.
+    pub unit: &'static str,
+}
+
+impl BodyRateRange {
+    /// Checks `v`; the error names `field`, the range and the unit.
+    pub fn check(&self, field: &str, v: f64) -> Result<()> {
+        check_range(field, v, self.min, self.max, self.unit)
+    }
+}
+
+/// Largest body rate per component, rad/s: about 5700°/s, above the fastest body saccades of
+/// flies (a few thousand °/s); hawkmoths turn at a few rad/s.
+pub const MAX_BODY_RATE_RAD_S: f64 = 100.0;
+
+/// What [`crate::kinematics::BodyRate::validate`] accepts, one entry per quantity of each
+/// component (`kinematics.body_rate.x`, `.y`, `.z`).
+pub const BODY_RATE_RANGES: [BodyRateRange; 5] = [
+    BodyRateRange {
+        what: "mean",
+        min: -MAX_BODY_RATE_RAD_S,
+        max: MAX_BODY_RATE_RAD_S,
+        unit: "rad/s",
+    },
+    BodyRateRange {
+        what: "amplitude",
+        min: -MAX_BODY_RATE_RAD_S,
+        max: MAX_BODY_RATE_RAD_S,
+        unit: "rad/s",
+    },
+    BodyRateRange {
+        what: "phase",
+        min: -1.0e3,
+        max: 1.0e3,
+        unit: "rad",
+    },
+    BodyRateRange {
+        what: "value",
+        min: -MAX_BODY_RATE_RAD_S,
+        max: MAX_BODY_RATE_RAD_S,
+        unit: "rad/s",
+    },
+    BodyRateRange {
+        what: "peak",
+        min: 0.0,
+        max: MAX_BODY_RATE_RAD_S,
+        unit: "rad/s",
+    },
+];
+
+/// The entry of [`BODY_RATE_RANGES`] for `what` (panics on an unknown name: a programming error).
+pub fn body_rate_range(what: &str) -> &'static BodyRateRange {
+    BODY_RATE_RANGES
+        .iter()
+        .find(|r| r.what == what)
+        .expect("a BODY_RATE_RANGES entry")
+}

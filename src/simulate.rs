@@ -135,7 +135,7 @@ const SAMPLE_WORK: f64 = 0.2;
 /// that costs most. Per mode: one flap period integrated for the responses and once more at
 /// twice the step (the error estimate), the Floquet analysis over the homogeneous period
 /// (`resonance::analysis_cost`), each step weighted by the kinematic terms evaluated per step
-/// (27 for the paper's three sines); plus the output, 0.2 unit per sample and mode. It mirrors
+/// (27 for the paper's three sines; a body rate adds its terms and 6 for the rotation Rᵀω_b); plus the output, 0.2 unit per sample and mode. It mirrors
 /// the step-size rule of [`crate::solve::propagator`] (steps per period = max(32, T·ω/0.25),
 /// ω the largest of ω_k, 2ζ_kω_k and 4·H·ω_d with H the highest kinematic harmonic).
 pub fn run_cost(cfg: &SimConfig) -> (f64, Option<usize>) {
@@ -144,7 +144,11 @@ pub fn run_cost(cfg: &SimConfig) -> (f64, Option<usize>) {
 }
 
 fn run_cost_with(cfg: &SimConfig, kin: &Compiled) -> (f64, Option<usize>) {
-    let terms = (kin.alpha.terms.len() + kin.beta.terms.len() + kin.gamma.terms.len()) as f64;
+    let mut terms = (kin.alpha.terms.len() + kin.beta.terms.len() + kin.gamma.terms.len()) as f64;
+    if let Some(b) = &kin.body_rate {
+        // its series plus the rotation Rᵀ ω_b (two sin_cos and a few products per step)
+        terms += b.iter().map(|s| s.terms.len() as f64).sum::<f64>() + 6.0;
+    }
     let weight = (24.0 + terms) / 27.0;
     let mut total = 0.0;
     let mut worst = (None, -1.0);

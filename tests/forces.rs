@@ -84,6 +84,7 @@ fn force_terms_match_rigid_body_inertial_forces() {
                 phase: -0.4,
             }],
         },
+        body_rate: Default::default(),
     };
     let c = k.compile();
     let mut worst = 0.0_f64;

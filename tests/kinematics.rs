@@ -39,6 +39,7 @@ fn omega_matches_rotation_matrix_derivative() {
             }],
         },
         gamma: Angle::sine(0.2),
+        body_rate: Default::default(),
     };
     let c = k.compile();
     let h = 1e-6;

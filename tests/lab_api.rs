@@ -711,6 +711,7 @@ fn cli_csv_flag_equals_the_equivalent_json_config() {
             alpha: sampled(0),
             beta: sampled(1),
             gamma: sampled(2),
+            body_rate: Default::default(),
         },
         duration_s: 0.2,
         ..wingbeat::config::SimConfig::paper()
@@ -789,6 +790,7 @@ fn cli_csv_flag_equals_the_equivalent_json_config() {
             alpha: sampled6(0),
             beta: sampled6(1),
             gamma: sampled6(2),
+            body_rate: Default::default(),
         },
         ..cfg
     };

@@ -25,6 +25,7 @@ fn lab_config(v: &[(&str, f64)], base: &SimConfig) -> SimConfig {
             alpha: angle(get("alpha0"), get("alpha_phase")),
             beta: angle(get("beta0"), get("beta_phase")),
             gamma: angle(get("gamma0"), get("gamma_phase")),
+            body_rate: Default::default(),
         },
         modes: base
             .modes

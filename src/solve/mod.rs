@@ -52,7 +52,7 @@ pub struct ModalOde<'a> {
     pub kin: &'a crate::kinematics::Compiled,
     /// The mode.
     pub mode: &'a crate::model::Mode,
-    /// Largest harmonic number present in the kinematics (for the step size).
+    /// Largest harmonic number present in the kinematics, body rate included (for the step size).
     pub max_harmonic: f64,
     /// Whether the softening has period T/2.
     pub half_period: bool,
@@ -70,8 +70,11 @@ impl<'a> ModalOde<'a> {
 
     /// Wraps one mode under compiled kinematics.
     pub fn new(kin: &'a crate::kinematics::Compiled, mode: &'a crate::model::Mode) -> Self {
+        // A body rate's own harmonics count like the angles' (Rᵀ ω_b mixes both).
+        let body = kin.body_rate.iter().flatten();
         let max_harmonic = [&kin.alpha, &kin.beta, &kin.gamma]
-            .iter()
+            .into_iter()
+            .chain(body)
             .flat_map(|s| s.terms.iter().map(|t| t.n))
             .fold(1.0_f64, f64::max);
         ModalOde {

@@ -14,8 +14,10 @@ export interface Harmonic { n: number; amplitude: number; phase?: number }
 export type Angle =
   | { kind: "fourier"; mean?: number; harmonics?: Harmonic[] }
   | { kind: "sampled"; values: number[]; max_harmonic?: number | null };
-/** Rotation kinematics (paper §2.1, Eq. 1). */
-export interface Kinematics { flap_freq_hz: number; alpha: Angle; beta: Angle; gamma: Angle }
+/** Body angular velocity ω_b(t) in body axes (I, J, K), rad/s, each component given like an angle; missing components are zero. */
+export interface BodyRate { x?: Angle; y?: Angle; z?: Angle }
+/** Rotation kinematics (paper §2.1, Eq. 1); `body_rate` omitted = no body rotation. */
+export interface Kinematics { flap_freq_hz: number; alpha: Angle; beta: Angle; gamma: Angle; body_rate?: BodyRate }
 /** Modal strain at a named point, per unit q (Eqs. 16–18). */
 export interface ModalStrain { point: string; eps_x: number; eps_y: number; gamma_xy: number }
 /** One vibration mode: ω_k/2π in Hz, a_k in kg^½·m, damping ratio ζ. */
