@@ -3,6 +3,7 @@
 mod modes;
 #[cfg(feature = "render")]
 mod render;
+mod sense;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use serde_json::json;
@@ -72,6 +73,22 @@ enum Command {
     Reproduce(ReproduceArgs),
     /// Shell FE modes of a planform with camber: frequencies, a_k/b_k (SI), shapes, strains.
     Modes(modes::ModesArgs),
+    /// Sensing body rotation through wing strain: the rotation-induced strain Δε, a
+    /// detectability map over every FE node, greedy sparse sensor placement and detection
+    /// performance vs the number of sensors (docs/sensing.md).
+    ///
+    /// Two runs, with and without a constant body rate --body-rate (rad/s, body axes): their
+    /// difference is the rotation signal. Needs an FE wing for the map and the sensors
+    /// (`--preset fe-wing`, or `--modes FILE` written by `wingbeat modes`); with the paper
+    /// table's modes only Δq and Δε at the named points are reported. The per-node
+    /// detectability is D = E_Δ / (ρ² E_flap + σ²) (mean squares over the run; ρ = --rho, the
+    /// relative stroke variability; σ = --noise, the sensor noise); the sensors are chosen
+    /// greedily to maximise d'² = Δᵀ(ρ²FFᵀ + σ²I)⁻¹Δ, and P_d is at a 1 % false-alarm rate.
+    ///
+    /// Examples:
+    ///   wingbeat sense --preset fe-wing --body-rate 0,0,1 > sense.json
+    ///   wingbeat sense --preset fe-wing --format csv --table curve
+    Sense(sense::SenseArgs),
     /// Render the flexing wing offscreen to PNG (wgpu; needs a build with `--features render`
     /// and a Vulkan or GL driver, e.g. Mesa's lavapipe).
     Render(RenderArgs),
@@ -323,6 +340,7 @@ pub fn run() -> Result<String> {
         Command::Sweep(a) => cmd_sweep(a),
         Command::Reproduce(a) => cmd_reproduce(a),
         Command::Modes(a) => modes::run(&a, read_file),
+        Command::Sense(a) => sense::run(a),
         Command::Render(a) => cmd_render(a),
     }
 }
