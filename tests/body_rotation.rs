@@ -665,3 +665,42 @@ fn body_rate_breaks_the_half_period_and_counts_harmonics() {
     assert_eq!(wingbeat::solve::ModalOde::new(&c3, m).max_harmonic, 3.0);
     let _ = RateState::default();
 }
+
+/// The CLI's `--body-rate X,Y,Z`: the same run as the library's constant rate; wrong counts
+/// and out-of-range values are errors that name the flag.
+#[test]
+fn cli_body_rate_flag() {
+    use std::process::Command;
+    let run = |args: &[&str]| {
+        let o = Command::new(env!("CARGO_BIN_EXE_wingbeat"))
+            .args(args)
+            .output()
+            .unwrap();
+        (
+            o.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&o.stdout).to_string(),
+            String::from_utf8_lossy(&o.stderr).to_string(),
+        )
+    };
+    let (code, out, err) = run(&["simulate", "--body-rate", "0,-3,8", "--duration", "0.05"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let mut cfg = SimConfig::paper();
+    cfg.kinematics = cfg.kinematics.with_body_rate([0.0, -3.0, 8.0]);
+    cfg.duration_s = 0.05;
+    let lib = simulate(&cfg).unwrap();
+    let q: Vec<f64> = serde_json::from_value(v["modes"][0]["q"]["total"].clone()).unwrap();
+    assert_eq!(q, lib.modes[0].q.total);
+    let (code, _, err) = run(&["simulate", "--body-rate", "0,200,0"]);
+    assert_ne!(code, 0);
+    assert!(
+        err.contains("--body-rate Y") && err.contains("100"),
+        "{err}"
+    );
+    let (code, _, err) = run(&["simulate", "--body-rate", "1,2"]);
+    assert_ne!(code, 0);
+    assert!(
+        err.contains("--body-rate") && err.contains("three"),
+        "{err}"
+    );
+}

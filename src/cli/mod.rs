@@ -196,6 +196,17 @@ struct SimInput {
     /// Damping ratio ζ for every mode (the paper: 0; §4.3: 0.01).
     #[arg(long, allow_negative_numbers = true)]
     zeta: Option<f64>,
+    /// Constant body angular velocity ω_b = X,Y,Z in body axes (I, J, K), rad/s, each within
+    /// ±100 (default: none, the paper's fixed body). The wing frame then turns with
+    /// Ω = Rᵀω_b + Ω_wing (docs/model.md, "Body rotation"). A periodic rate: the config's
+    /// `kinematics.body_rate`.
+    #[arg(
+        long,
+        value_name = "X,Y,Z",
+        value_delimiter = ',',
+        allow_negative_numbers = true
+    )]
+    body_rate: Vec<f64>,
     /// Simulated duration, s.
     #[arg(long, value_name = "S", allow_negative_numbers = true)]
     duration: Option<f64>,
@@ -460,6 +471,31 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
             }
             cfg = apply(&cfg, param, v)?;
         }
+    }
+    if !inp.body_rate.is_empty() {
+        if inp.body_rate.len() != 3 {
+            return Err(WingbeatError::invalid(
+                "--body-rate",
+                format!("{} values", inp.body_rate.len()),
+                "three comma-separated rates X,Y,Z in rad/s (body axes)",
+            ));
+        }
+        let range = wingbeat::params::body_rate_range("peak");
+        for (i, v) in inp.body_rate.iter().enumerate() {
+            let axis = ["X", "Y", "Z"][i];
+            wingbeat::error::check_range(
+                &format!("--body-rate {axis}"),
+                *v,
+                -range.max,
+                range.max,
+                range.unit,
+            )?;
+        }
+        cfg.kinematics.body_rate = wingbeat::kinematics::BodyRate::constant([
+            inp.body_rate[0],
+            inp.body_rate[1],
+            inp.body_rate[2],
+        ]);
     }
     if let Some(d) = inp.duration {
         cfg.duration_s = d;
