@@ -41,6 +41,10 @@ fn input_types_match_serde() {
     let cfg = SimConfig::paper();
     ts_common::check(&i, "SimConfig", &keys(&cfg));
     ts_common::check(&i, "Kinematics", &keys(&cfg.kinematics));
+    // with a body rate the optional `body_rate` key appears, and its x, y, z
+    let turning = cfg.kinematics.clone().with_body_rate([1.0, 2.0, 3.0]);
+    ts_common::check(&i, "Kinematics", &keys(&turning));
+    ts_common::check(&i, "BodyRate", &keys(&turning.body_rate));
     ts_common::check(&i, "Mode", &keys(&cfg.modes[0]));
     ts_common::check(&i, "ModalStrain", &keys(&cfg.modes[0].strains[0]));
     let h = Harmonic {
