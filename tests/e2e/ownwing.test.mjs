@@ -193,7 +193,8 @@ test('the node cap refuses with a message naming the mesh size, the lab stays us
   await page.keyboard.press('ArrowRight');
   await waitRenders(page, n0 + 1);
   // Cancel a long solve; the wing in use stays; the next solve runs in a fresh worker.
-  await setField(page, 'mesh_mm', 0.6);
+  // 0.7 mm × 8 modes: a few seconds, inside the browser's FE work budget (0.6 mm is refused).
+  await setField(page, 'mesh_mm', 0.7);
   await setField(page, 'n_modes', 8);
   await page.click(W('compute'));
   await page.waitForSelector(`${W('cancel')}:not([hidden])`);
