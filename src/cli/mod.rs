@@ -77,8 +77,9 @@ enum Command {
     /// detectability map over every FE node, greedy sparse sensor placement and detection
     /// performance vs the number of sensors (docs/sensing.md).
     ///
-    /// Two runs, with and without a constant body rate --body-rate (rad/s, body axes): their
-    /// difference is the rotation signal. Needs an FE wing for the map and the sensors
+    /// Two runs, with and without a constant body rate --body-rate X,Y,Z (rad/s, body axes;
+    /// default 0,0,1, i.e. 1 rad/s about the yaw axis; a config's `body_rate` is replaced):
+    /// their difference is the rotation signal. Needs an FE wing for the map and the sensors
     /// (`--preset fe-wing`, or `--modes FILE` written by `wingbeat modes`); with the paper
     /// table's modes only Δq and Δε at the named points are reported. The per-node
     /// detectability is D = E_Δ / (ρ² E_flap + σ²) (mean squares over the run; ρ = --rho, the

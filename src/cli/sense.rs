@@ -18,10 +18,6 @@ use wingbeat::{Result, WingbeatError};
 pub struct SenseArgs {
     #[command(flatten)]
     input: SimInput,
-    /// Body angular velocity ω_b = X,Y,Z in body axes (I, J, K: roll, pitch, yaw axes), rad/s,
-    /// each in [−100, 100].
-    #[arg(long, value_name = "X,Y,Z", default_value = "0,0,1")]
-    body_rate: String,
     /// Sensors in the performance curve, 1–30.
     #[arg(long, default_value_t = 30)]
     k_max: usize,
@@ -61,17 +57,21 @@ enum Table {
     Curve,
 }
 
-fn parse_triple(flag: &str, s: &str) -> Result<[f64; 3]> {
-    let bad = || WingbeatError::invalid(flag, s, "X,Y,Z: three finite numbers, rad/s");
-    let v: Vec<f64> = s
-        .split(',')
-        .map(|p| p.trim().parse::<f64>().map_err(|_| bad()))
-        .collect::<Result<_>>()?;
+/// The body rate of the sensing runs: the shared `--body-rate X,Y,Z` flag (rad/s, body
+/// axes), default 0,0,1 (1 rad/s about the yaw axis K).
+fn body_rate_of(v: &[f64]) -> Result<[f64; 3]> {
+    if v.is_empty() {
+        return Ok([0.0, 0.0, 1.0]);
+    }
     if v.len() != 3 {
-        return Err(bad());
+        return Err(WingbeatError::invalid(
+            "--body-rate",
+            format!("{} values", v.len()),
+            "X,Y,Z: three finite numbers, rad/s",
+        ));
     }
     let w = [v[0], v[1], v[2]];
-    check_body_rate(flag, w)?;
+    check_body_rate("--body-rate", w)?;
     Ok(w)
 }
 
@@ -137,7 +137,7 @@ fn fe_of(a: &SenseArgs) -> Result<Option<FemModes>> {
 }
 
 pub fn run(a: SenseArgs) -> Result<String> {
-    let w = parse_triple("--body-rate", &a.body_rate)?;
+    let w = body_rate_of(&a.input.body_rate)?;
     let opts = SensingOptions {
         k_max: a.k_max,
         rho: a.rho,
@@ -149,6 +149,8 @@ pub fn run(a: SenseArgs) -> Result<String> {
     let fe = fe_of(&a)?;
     // The config: the FE modes (when computed here) replace the preset's, keeping --zeta.
     let mut input = a.input.clone();
+    // the runs set the body rate themselves (with and without it)
+    input.body_rate.clear();
     if input.preset == "fe-wing" && input.modes.is_none() {
         input.preset = "paper".into();
     }
