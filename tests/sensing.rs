@@ -86,6 +86,9 @@ fn signal_is_linear_in_small_body_rates() {
     }
     // ... and is tiny at small rates
     assert!(devs[4].1 < 1e-5, "{devs:?}");
+    // the deviation is the quadratic term: deviation / ω is constant at small ω
+    let (c3, c4) = (devs[3].1 / devs[3].0, devs[4].1 / devs[4].0);
+    assert!((c3 - c4).abs() < 0.05 * c3, "{devs:?}");
 }
 
 #[test]

@@ -158,3 +158,26 @@ fn bad_flags_are_named() {
     assert_ne!(code, 0);
     assert!(err.contains("--fe-modes"), "{err}");
 }
+
+#[test]
+fn a_modes_document_is_an_fe_wing_and_points_are_checked_first() {
+    let dir = std::env::temp_dir().join(format!("wingbeat_sense_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("modes.json");
+    let (code, out, err) = run(&["modes", "--mesh-size-mm", "2", "--n-modes", "3"]);
+    assert_eq!(code, 0, "{err}");
+    std::fs::write(&file, out).unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = run(&["sense", "--modes", f, "--duration", "0.2", "--k-max", "2"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["placement"]["sensors"].as_array().unwrap().len(), 2);
+    let (code, _, err) = run(&["sense", "--modes", f, "--points", "100,0"]);
+    assert_ne!(code, 0);
+    assert!(err.contains("--points"), "{err}");
+    assert!(
+        !err.contains("sense: two runs"),
+        "refused before the runs: {err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

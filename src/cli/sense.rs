@@ -169,6 +169,14 @@ pub fn run(a: SenseArgs) -> Result<String> {
             ));
         }
     }
+    // points outside the wing are refused before any run
+    if let (Some(fe), Some(pts)) = (&fe, &user_points) {
+        for &(x, y) in pts {
+            modal_strains_at_points(fe, &[(x, y)]).map_err(|e| {
+                WingbeatError::invalid("--points", format!("{x},{y} mm"), e.to_string())
+            })?;
+        }
+    }
     let n_nodes = fe.as_ref().map_or(0, |f| f.nodes.len());
     let n_points = user_points.as_ref().map_or(3, Vec::len);
     check_sensing_cost(&cfg, w, n_nodes, n_points, "sense")?;
