@@ -106,6 +106,13 @@ fn greedy_index_is_monotone_and_matches_a_dense_solve() {
         assert!(w[1] >= w[0], "{:?}", p.d_prime);
     }
     assert!(p.d_prime_all >= *p.d_prime.last().unwrap());
+    // greedy is at least as good as the best single sensor, and ties it at K = 1
+    assert_eq!(p.d_prime_ranked.len(), 8);
+    assert!((p.d_prime_ranked[0] - p.d_prime[0]).abs() <= 1e-12 * p.d_prime[0]);
+    eprintln!(
+        "greedy d' {:?}\nranked d' {:?}",
+        p.d_prime, p.d_prime_ranked
+    );
     let idx = decimation(sig.t.len(), opts.samples_per_sensor);
     for k in 1..=5 {
         let (mut dl, mut fl) = (Vec::new(), Vec::new());

@@ -100,7 +100,7 @@ fn csv_tables() {
     ]));
     assert_eq!(code, 0, "{err}");
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(lines[0], "k,d_prime,pd");
+    assert_eq!(lines[0], "k,d_prime,pd,d_prime_ranked");
     assert_eq!(lines.len(), 6);
     let (code, out, err) = run(&fe_args(&[
         "--k-max", "4", "--format", "csv", "--table", "sensors",

@@ -482,6 +482,9 @@ pub struct Placement {
     pub d_prime: Vec<f64>,
     /// P_d at P_fa = 1 % with the first K sensors.
     pub pd: Vec<f64>,
+    /// Baseline for comparison: d' of the K candidates with the largest single-sensor d'
+    /// (ranked alone, no greedy interaction), K = 1 … (as `d_prime`).
+    pub d_prime_ranked: Vec<f64>,
     /// d' with every candidate (all nodes, all three components).
     pub d_prime_all: f64,
     /// P_d with every candidate.
@@ -599,9 +602,25 @@ pub fn place_sensors(
             break;
         }
     }
+    // the ranked baseline: best single sensors first
+    let mut order: Vec<usize> = (0..nc).collect();
+    let single: Vec<f64> = cand.iter().map(|c| dps(c.0, c.1, c.2)).collect();
+    order.sort_by(|&i, &j| single[j].total_cmp(&single[i]).then(i.cmp(&j)));
+    let (mut ra, mut rb, mut rg) = (0.0, 0.0, 0.0);
+    let d_prime_ranked = order
+        .iter()
+        .take(sensors.len())
+        .map(|&j| {
+            ra += cand[j].0;
+            rb += cand[j].1;
+            rg += cand[j].2;
+            dps(ra, rb, rg).sqrt()
+        })
+        .collect();
     Ok(Placement {
         sensors,
         d_prime,
+        d_prime_ranked,
         pd,
         d_prime_all: d_all,
         pd_all: detection_probability(d_all),

@@ -256,15 +256,14 @@ pub fn run(a: SenseArgs) -> Result<String> {
             Ok(out)
         }
         (Format::Csv, Table::Curve) => {
-            let mut out = String::from("k,d_prime,pd\n");
-            for (k, (d, p)) in res
-                .placement
-                .d_prime
-                .iter()
-                .zip(&res.placement.pd)
-                .enumerate()
-            {
-                out.push_str(&format!("{},{d:.9e},{p:.9}\n", k + 1));
+            let pl = &res.placement;
+            let mut out = String::from("k,d_prime,pd,d_prime_ranked\n");
+            for (k, (d, p)) in pl.d_prime.iter().zip(&pl.pd).enumerate() {
+                out.push_str(&format!(
+                    "{},{d:.9e},{p:.9},{:.9e}\n",
+                    k + 1,
+                    pl.d_prime_ranked[k]
+                ));
             }
             Ok(out)
         }
