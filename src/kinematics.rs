@@ -442,7 +442,7 @@ impl RateState {
     }
 
     /// Its exact time derivative, rad/s²:
-    /// Ω̇ = Ω̇_wing + Rᵀ ω̇_b + Ṙᵀ ω_b, with Ṙᵀ ω_b = −Ω_wing × (Rᵀ ω_b) (since RᵀṘ = [Ω_wing]×)
+    /// Ω̇ = Ω̇_wing + Rᵀ ω̇_b + Ṙᵀ ω_b, with Ṙᵀ ω_b = −Ω_wing × (Rᵀ ω_b) (since RᵀṘ = \[Ω_wing\]×)
     /// and Ω̇_wing = (α̈ cos β − α̇ β̇ sin β, β̈, α̈ sin β + α̇ β̇ cos β).
     pub fn omega_dot(&self) -> [f64; 3] {
         let (sb, cb) = self.beta.sin_cos();
