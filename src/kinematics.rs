@@ -98,9 +98,25 @@ impl Angle {
 
     /// Validates the specification; `field` names it in errors.
     pub fn validate(&self, field: &str) -> Result<()> {
+        self.validate_with(field, &|what, f, v| match what {
+            "phase" => check_range(f, v, -1.0e3, 1.0e3, "rad"),
+            // mean, amplitude and sampled values
+            _ => check_range(f, v, -2.0 * PI, 2.0 * PI, "rad"),
+        })
+    }
+
+    /// The structural checks every angle-like series shares (harmonic numbers and counts,
+    /// sample counts, `max_harmonic`), with the numeric ranges left to `check(what, field,
+    /// value)`, `what` being `"mean"`, `"amplitude"`, `"phase"` or `"value"`: the angles use
+    /// ±2π rad, the body rate [`crate::params::BODY_RATE_RANGES`].
+    pub(crate) fn validate_with(
+        &self,
+        field: &str,
+        check: &dyn Fn(&str, &str, f64) -> Result<()>,
+    ) -> Result<()> {
         match self {
             Angle::Fourier { mean, harmonics } => {
-                check_range(&format!("{field}.mean"), *mean, -2.0 * PI, 2.0 * PI, "rad")?;
+                check("mean", &format!("{field}.mean"), *mean)?;
                 if harmonics.len() > MAX_HARMONIC as usize {
                     return Err(WingbeatError::invalid(
                         format!("{field}.harmonics"),
@@ -117,14 +133,8 @@ impl Angle {
                             format!("an integer in [1, {MAX_HARMONIC}]"),
                         ));
                     }
-                    check_range(
-                        &format!("{f}.amplitude"),
-                        h.amplitude,
-                        -2.0 * PI,
-                        2.0 * PI,
-                        "rad",
-                    )?;
-                    check_range(&format!("{f}.phase"), h.phase, -1.0e3, 1.0e3, "rad")?;
+                    check("amplitude", &format!("{f}.amplitude"), h.amplitude)?;
+                    check("phase", &format!("{f}.phase"), h.phase)?;
                 }
             }
             Angle::Sampled {
@@ -139,13 +149,7 @@ impl Angle {
                     ));
                 }
                 for (i, v) in values.iter().enumerate() {
-                    check_range(
-                        &format!("{field}.values[{i}]"),
-                        *v,
-                        -2.0 * PI,
-                        2.0 * PI,
-                        "rad",
-                    )?;
+                    check("value", &format!("{field}.values[{i}]"), *v)?;
                 }
                 if let Some(m) = max_harmonic {
                     if *m > MAX_HARMONIC {
@@ -340,56 +344,10 @@ impl BodyRate {
         use crate::params::body_rate_range as r;
         for (name, a) in [("x", &self.x), ("y", &self.y), ("z", &self.z)] {
             let field = format!("kinematics.body_rate.{name}");
-            match a {
-                Angle::Fourier { mean, harmonics } => {
-                    r("mean").check(&format!("{field}.mean"), *mean)?;
-                    if harmonics.len() > MAX_HARMONIC as usize {
-                        return Err(WingbeatError::invalid(
-                            format!("{field}.harmonics"),
-                            format!("{} entries", harmonics.len()),
-                            format!("at most {MAX_HARMONIC} harmonics"),
-                        ));
-                    }
-                    for (i, h) in harmonics.iter().enumerate() {
-                        let f = format!("{field}.harmonics[{i}]");
-                        if h.n == 0 || h.n > MAX_HARMONIC {
-                            return Err(WingbeatError::invalid(
-                                format!("{f}.n"),
-                                h.n,
-                                format!("an integer in [1, {MAX_HARMONIC}]"),
-                            ));
-                        }
-                        r("amplitude").check(&format!("{f}.amplitude"), h.amplitude)?;
-                        r("phase").check(&format!("{f}.phase"), h.phase)?;
-                    }
-                    let peak =
-                        mean.abs() + harmonics.iter().map(|h| h.amplitude.abs()).sum::<f64>();
-                    r("peak").check(&format!("{field} (|mean| + Σ|amplitude|)"), peak)?;
-                }
-                Angle::Sampled {
-                    values,
-                    max_harmonic,
-                } => {
-                    if values.len() < 3 || values.len() > MAX_SAMPLES_PER_PERIOD {
-                        return Err(WingbeatError::invalid(
-                            format!("{field}.values"),
-                            format!("{} samples", values.len()),
-                            format!("3 to {MAX_SAMPLES_PER_PERIOD} samples over one period"),
-                        ));
-                    }
-                    for (i, v) in values.iter().enumerate() {
-                        r("value").check(&format!("{field}.values[{i}]"), *v)?;
-                    }
-                    if let Some(m) = max_harmonic {
-                        if *m > MAX_HARMONIC {
-                            return Err(WingbeatError::invalid(
-                                format!("{field}.max_harmonic"),
-                                m,
-                                format!("an integer in [0, {MAX_HARMONIC}]"),
-                            ));
-                        }
-                    }
-                }
+            a.validate_with(&field, &|what, f, v| r(what).check(f, v))?;
+            if let Angle::Fourier { mean, harmonics } = a {
+                let peak = mean.abs() + harmonics.iter().map(|h| h.amplitude.abs()).sum::<f64>();
+                r("peak").check(&format!("{field} (|mean| + Σ|amplitude|)"), peak)?;
             }
         }
         Ok(())
