@@ -2,19 +2,9 @@
 //! named error and a non-zero exit, never a panic.
 
 use serde_json::Value;
-use std::process::Command;
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_wingbeat"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common_cli;
+use common_cli::run;
 
 #[test]
 fn simulate_paper_has_the_documented_fields() {

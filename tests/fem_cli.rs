@@ -3,19 +3,8 @@
 //! strip clamp's edge is a node row, and `simulate --modes` reads the document back.
 #![cfg(feature = "cli")]
 
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_wingbeat"))
-        .args(args)
-        .output()
-        .expect("wingbeat runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common_cli;
+use common_cli::run;
 
 #[test]
 fn modes_on_a_slender_outline_with_the_automatic_size() {

@@ -10,19 +10,8 @@ use std::time::{Duration, Instant};
 use wingbeat::fem::{self, FemInput};
 use wingbeat::params::{MATERIAL_RANGES, PARAMS, WING_PARAMS};
 
-fn run(args: &[&str]) -> (i32, String, String, Duration) {
-    let t0 = Instant::now();
-    let out = Command::new(env!("CARGO_BIN_EXE_wingbeat"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-        t0.elapsed(),
-    )
-}
+mod common_cli;
+use common_cli::run_timed as run;
 
 /// The default outline resampled to `n` points evenly along its perimeter (same shape).
 pub fn resampled_manduca(n: usize) -> Vec<[f64; 2]> {

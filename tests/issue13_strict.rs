@@ -3,7 +3,6 @@
 //! numbers, a work budget checked before the work, finite analyses).
 
 use serde_json::Value;
-use std::process::Command;
 use std::time::{Duration, Instant};
 use wingbeat::analysis::beat::{checked_envelope, envelope};
 use wingbeat::analysis::contribution::contributions;
@@ -15,19 +14,8 @@ use wingbeat::modes_doc::{modes_from_json, read_modes_document};
 use wingbeat::simulate::{run_cost, simulate, MAX_RUN_WORK};
 use wingbeat::WingbeatError;
 
-fn run(args: &[&str]) -> (i32, String, String, Duration) {
-    let t0 = Instant::now();
-    let out = Command::new(env!("CARGO_BIN_EXE_wingbeat"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-        t0.elapsed(),
-    )
-}
+mod common_cli;
+use common_cli::run_timed as run;
 
 fn parse_err(json: &str) -> String {
     SimConfig::from_json(json).expect_err("refused").to_string()
