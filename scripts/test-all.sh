@@ -5,7 +5,7 @@
 #           and the wasm API's plain-Rust helpers)
 #   wasm    wasm-bindgen-test suites through wasm-pack (README, "wasm-pack"): tests/wasm_api.rs
 #           with `wasm-pack test --node`, tests/wasm_browser.rs with `--headless --chrome`
-#   e2e     build the lab, type-check www/ (npm run check:js: tsc, ~2-3 s), then node --test:
+#   e2e     build the lab (www/ and the dist/ download), type-check www/ (npm run check:js: tsc, ~2-3 s), then node --test:
 #           tests/js (unit + the real wasm in node) and tests/e2e (Playwright + Debian Chromium)
 # Installs what is missing first (scripts/ensure-tools.sh --browser [--wasm-pack]). Honours CARGO_TARGET_DIR.
 set -euo pipefail
@@ -41,6 +41,9 @@ wasm() {
 e2e() {
   echo "== e2e: build the lab, then node --test tests/js tests/e2e"
   bash scripts/build-web.sh www
+  # The teachers' single-folder download, checked by tests/e2e/offline.test.mjs (the wasm build is
+  # already done: this is wasm-bindgen, wasm-opt and a copy).
+  bash scripts/build-web.sh dist
   echo "== e2e: type-check the lab's JavaScript (tsc --noEmit over www/ against pkg/wingbeat.d.ts and uPlot's types)"
   npm run --silent check:js
   node --test --test-concurrency=1 tests/js/ tests/e2e/
