@@ -328,22 +328,12 @@ fn check_signal(n_modes: usize, sig: &ModalSignal) -> Result<usize> {
             "at least 1 sample",
         ));
     }
-    for (k, q) in sig.flap.iter().chain(&sig.delta).enumerate() {
-        if q.len() != n {
-            return Err(WingbeatError::invalid(
-                format!("signal series {k}"),
-                format!("{} samples", q.len()),
-                format!("{n} samples, as signal.t"),
-            ));
-        }
-        if let Some(i) = q.iter().position(|v| !v.is_finite()) {
-            return Err(WingbeatError::invalid(
-                format!("signal series {k}[{i}]"),
-                q[i],
-                "finite numbers",
-            ));
-        }
-    }
+    super::check_series(
+        sig.flap.iter().chain(&sig.delta).map(Vec::as_slice),
+        n,
+        "signal.t",
+        |k| format!("signal series {k}"),
+    )?;
     Ok(n)
 }
 

@@ -274,22 +274,7 @@ fn strain_field_values(
             format!("1 to {} samples", crate::config::MAX_SAMPLES),
         ));
     }
-    for (k, q) in qs.iter().enumerate() {
-        if q.len() != n {
-            return Err(WingbeatError::invalid(
-                format!("qs[{k}]"),
-                format!("{} samples", q.len()),
-                format!("{n} samples, as qs[0]"),
-            ));
-        }
-        if let Some(i) = q.iter().position(|v| !v.is_finite()) {
-            return Err(WingbeatError::invalid(
-                format!("qs[{k}][{i}]"),
-                q[i],
-                "finite numbers",
-            ));
-        }
-    }
+    super::check_series(qs.iter().copied(), n, "qs[0]", |k| format!("qs[{k}]"))?;
     // The index of a linear component (unused for von Mises).
     let ci = match opts.component {
         StrainComponent::EpsX | StrainComponent::VonMises => 0,
