@@ -110,7 +110,8 @@ export function mount(ctx) {
   const pointMark = el('span', { class: 'wl-w3-point', hidden: true });
   overlay.append(pointMark);
   const labelEls = LABELS.map(([t, kind, c]) => {
-    const e = el('span', { class: `wl-w3-label wl-w3-label-${kind}`, text: t });
+    // Hidden until the first frame places it (else every label sits at the canvas's corner).
+    const e = el('span', { class: `wl-w3-label wl-w3-label-${kind}`, text: t, hidden: true });
     e.style.color = c;
     overlay.append(e);
     return e;
