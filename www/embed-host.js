@@ -61,11 +61,22 @@
       var id = 'h' + (++seq);
       var target = originOf(frame);
       return new Promise(function (resolve, reject) {
-        waiting[id] = { resolve: resolve, reject: reject };
         var msg = Object.assign({ type: 'wingbeat:' + type, version: 1, id: id }, more || {});
         var w = frame.contentWindow;
-        if (w) w.postMessage(msg, target === 'null' ? '*' : target);
-        else reject({ type: 'wingbeat:error', code: 'no-frame', message: 'the iframe has no window' });
+        if (!w) { reject({ type: 'wingbeat:error', code: 'no-frame', message: 'the iframe has no window' }); return; }
+        // A request posted while the lab is still starting can be missed: it is sent again once
+        // after 3 s (the same id; every request is idempotent). The lab answers within 30 s
+        // (else 'no-result'), so silence for 40 s means no lab listens: a 'timeout' error.
+        var resend = setTimeout(function () { var again = frame.contentWindow; if (again) again.postMessage(msg, target === 'null' ? '*' : target); }, 3000);
+        var give = setTimeout(function () {
+          delete waiting[id];
+          reject({ type: 'wingbeat:error', code: 'timeout', message: 'no reply from the lab within 40 s (is the frame loaded, and is this origin allowed?)' });
+        }, 40000);
+        waiting[id] = {
+          resolve: function (d) { clearTimeout(resend); clearTimeout(give); resolve(d); },
+          reject: function (d) { clearTimeout(resend); clearTimeout(give); reject(d); },
+        };
+        w.postMessage(msg, target === 'null' ? '*' : target);
       });
     }
     return {
