@@ -7,6 +7,7 @@
 //   const engine = createEngine();              // browser defaults: pkg/ and worker.js next to this file
 //   const wb = await engine.load();
 //   const r = engine.analyze(params, fe);       // live: simulate + forces + spectra + envelope + angles
+//   const r = await engine.requestLive(params); // the same in the live worker; null when superseded
 //   const job = engine.run('sweep', { cfg, opts }, (done, total) => …); await job.promise; engine.cancel(job.id);
 //   const fe = await engine.ensureFe();         // the wing in use (default: the lab's FE wing), in the worker
 //   engine.setWing(input); const job = engine.computeWing(input, onProgress);  // your own wing
@@ -18,6 +19,15 @@
 // last few), so switching back is instant. `config(params)` uses every mode of the wing in
 // use, custom kinematics when set (the sliders' α, β, γ, phases and f_d then do not apply),
 // and, when a strain point is set, the modes' modal strains there (wasm `modalStrainAt`).
+//
+// The live analysis runs off the main thread (`requestLive`): a second worker of worker.js, the
+// live worker, separate from the study worker so that a sweep or the FE wing never delays a
+// slider. A wasm call cannot be interrupted, so requests are coalesced instead: at most one is
+// in flight and one waits; a newer request replaces the waiting one (which resolves to null)
+// and makes the one in flight stale (its result, when it comes, resolves to null and is not
+// drawn). Only the newest request's result reaches the caller. Until the live worker has
+// loaded its wasm (the first render after load) or when workers are unavailable, requestLive
+// computes on the main thread as `analyze` does.
 //
 // Results carry the kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`),
 // from wasm `analyze` when it provides them and otherwise from ONE `anglesAt` call per
@@ -117,13 +127,15 @@ export function plainWingInput(params, points) {
 const FE_CACHE = 4;
 
 /**
- * @param {{ load?: () => Promise<Wasm>, createWorker?: () => Worker, feInput?: import('./pkg/wingbeat.js').FemInput }} [deps]
+ * @param {{ load?: () => Promise<Wasm>, createWorker?: () => Worker, createLiveWorker?: () => Worker, feInput?: import('./pkg/wingbeat.js').FemInput }} [deps]
  *   `load` resolves to the wasm module's exports (default: loadWasm); `createWorker` makes the
- *   study worker (default: www/worker.js). Tests pass fakes.
+ *   study worker, `createLiveWorker` the live worker (default for both: www/worker.js). Tests
+ *   pass fakes.
  */
 export function createEngine(deps = {}) {
   const load = deps.load || loadWasm;
   const createWorker = deps.createWorker || defaultWorker;
+  const createLiveWorker = deps.createLiveWorker || defaultWorker;
   const feInput = deps.feInput || FE_LAB_INPUT;
   /** @type {Wasm | null} */
   let wb = null;
@@ -150,6 +162,110 @@ export function createEngine(deps = {}) {
   let strainPoint = null;
   /** @type {{ fe: FeModesResult, key: string, strains: { eps_x: number, eps_y: number, gamma_xy: number }[] } | null} */
   let strainCache = null;
+
+  // ---- the live worker (see the top of this file) ----
+  /** @typedef {{ seq: number, cfg: SimConfig, k: number, params: import('./state.js').Params, opts: import('./pkg/wingbeat.js').WelchOptions, resolve: (r: LiveResult | null) => void, reject: (e: Error) => void }} LiveRequest */
+  /** @type {Worker | null} */
+  let live = null;
+  /** the live worker has loaded its wasm (it said { ready: true }) */
+  let liveReady = false;
+  /** workers cannot be made here (no Worker, or the live worker failed): compute on the main thread */
+  let liveBroken = false;
+  /** the newest request's number: any other request's result is stale */
+  let liveSeq = 0;
+  /** @type {LiveRequest | null} the request the live worker is computing */
+  let inflight = null;
+  /** @type {LiveRequest | null} the newest request, waiting for the one in flight */
+  let queued = null;
+  const liveStats = { posted: 0, superseded: 0, stale: 0, sync: 0 };
+
+  /** The live result of a wasm analysis (angles: from the analysis, else ONE lazy anglesAt call). */
+  function liveResult(cfg, k, params, a, ms) {
+    const w = /** @type {Wasm} */ (wb);
+    /** @type {LiveResult} */
+    const res = { cfg, k, params, analysis: a, angles: null, compute_ms: ms };
+    /** @type {AngleSeries | null} */
+    let angles = a.angles && a.angles.alpha ? a.angles : null;
+    if (angles || typeof w.anglesAt !== 'function') res.angles = angles;
+    else {
+      // Older wasm builds: ONE anglesAt call for the whole run, made when a view first reads
+      // the angles (the 3-D view, on its next frame), so the slider's redraw does not wait.
+      Object.defineProperty(res, 'angles', {
+        enumerable: true,
+        get() {
+          if (!angles) angles = splitAngles(w.anglesAt(cfg, a.sim.t));
+          return angles;
+        },
+      });
+    }
+    return res;
+  }
+
+  /** The live worker (made on first use), or null when workers are unavailable. */
+  function liveWorker() {
+    if (live || liveBroken) return live;
+    try {
+      live = createLiveWorker();
+    } catch {
+      liveBroken = true;
+      return null;
+    }
+    live.onmessage = (ev) => {
+      const d = ev.data || {};
+      if (d.ready) {
+        liveReady = true;
+        return;
+      }
+      const req = inflight;
+      if (!req || d.id !== req.seq || d.progress) return;
+      inflight = null;
+      if (req.seq !== liveSeq) {
+        liveStats.stale++;
+        req.resolve(null);
+      } else if (d.error != null) req.reject(new Error(d.error));
+      else req.resolve(liveResult(req.cfg, req.k, req.params, d.result, d.ms));
+      if (queued) {
+        const q = queued;
+        queued = null;
+        postLive(q);
+      }
+    };
+    live.onerror = () => {
+      // The live worker could not start (or died): from now on compute on the main thread,
+      // the newest request included.
+      liveBroken = true;
+      liveReady = false;
+      if (live) live.terminate();
+      live = null;
+      const waiting = [inflight, queued];
+      inflight = queued = null;
+      for (const r of waiting) if (r) settleSync(r);
+    };
+    return live;
+  }
+
+  /** @param {LiveRequest} req */
+  function postLive(req) {
+    inflight = req;
+    liveStats.posted++;
+    /** @type {Worker} */ (live).postMessage({ id: req.seq, kind: 'analyze', cfg: req.cfg, opts: req.opts, k: req.k });
+  }
+
+  /** Computes a request on the main thread (or resolves null when it is no longer the newest). */
+  function settleSync(/** @type {LiveRequest} */ req) {
+    if (req.seq !== liveSeq) {
+      req.resolve(null);
+      return;
+    }
+    try {
+      const t0 = now();
+      const a = /** @type {Wasm} */ (wb).analyze(req.cfg, req.opts, req.k);
+      liveStats.sync++;
+      req.resolve(liveResult(req.cfg, req.k, req.params, a, now() - t0));
+    } catch (e) {
+      req.reject(/** @type {Error} */ (e));
+    }
+  }
 
   function remember(key, r) {
     feCache.delete(key);
@@ -409,24 +525,47 @@ export function createEngine(deps = {}) {
       const k = Number(params.mode) - 1;
       const t0 = now();
       const a = w.analyze(cfg, { detrend: params.detrend, segment_len: 8192 }, k);
-      const t1 = now();
-      /** @type {LiveResult} */
-      const res = { cfg, k, params, analysis: a, angles: null, compute_ms: t1 - t0 };
-      /** @type {AngleSeries | null} */
-      let angles = a.angles && a.angles.alpha ? a.angles : null;
-      if (angles || typeof w.anglesAt !== 'function') res.angles = angles;
-      else {
-        // Older wasm builds: ONE anglesAt call for the whole run, made when a view first reads
-        // the angles (the 3-D view, on its next frame), so the slider's redraw does not wait.
-        Object.defineProperty(res, 'angles', {
-          enumerable: true,
-          get() {
-            if (!angles) angles = splitAngles(w.anglesAt(cfg, a.sim.t));
-            return angles;
-          },
-        });
-      }
-      return res;
+      return liveResult(cfg, k, params, a, now() - t0);
+    },
+    /**
+     * The live analysis of `params` in the live worker (see the top of this file): resolves to
+     * the same LiveResult as analyze(), or to null when a newer request superseded this one
+     * before its result was ready (draw nothing then: the newer one's result follows). The
+     * config is built here, on the main thread, so a value the core rejects throws at once
+     * (naming the key); an error of the computation itself rejects the newest request's promise.
+     * Until the live worker is ready (or without workers) it computes here, as analyze().
+     * @param {import('./state.js').Params} params URL parameters (www/state.js)
+     * @returns {Promise<LiveResult | null>}
+     */
+    requestLive(params) {
+      if (!wb) throw new Error('engine: wasm not loaded');
+      const cfg = engine.config(params);
+      const seq = ++liveSeq;
+      return new Promise((resolve, reject) => {
+        /** @type {LiveRequest} */
+        const req = { seq, cfg, k: Number(params.mode) - 1, params, opts: /** @type {import('./pkg/wingbeat.js').WelchOptions} */ ({ detrend: params.detrend, segment_len: 8192 }), resolve, reject };
+        if (queued) {
+          liveStats.superseded++;
+          queued.resolve(null);
+          queued = null;
+        }
+        const w = liveWorker();
+        if (!w || !liveReady) settleSync(req);
+        else if (inflight) queued = req;
+        else postLive(req);
+      });
+    },
+    /** Starts the live worker now (its wasm loads while the first result is computed here). */
+    warmLive() {
+      liveWorker();
+    },
+    /** Whether live requests go to the live worker (false: computed on the main thread). */
+    get liveInWorker() {
+      return !!live && liveReady;
+    },
+    /** Counters of live requests: posted to the worker, superseded while waiting, stale results dropped, computed on the main thread. */
+    get liveStats() {
+      return { ...liveStats };
     },
     /**
      * Runs a study in the worker: kind ∈ sweep | icmap | damping | resonance | reproduce | fe (see
@@ -498,6 +637,12 @@ export function createEngine(deps = {}) {
       if (worker) worker.terminate();
       worker = null;
       failAll('disposed');
+      if (live) live.terminate();
+      live = null;
+      liveReady = false;
+      liveSeq++;
+      for (const r of [inflight, queued]) if (r) r.resolve(null);
+      inflight = queued = null;
     },
   };
   return engine;

@@ -256,6 +256,7 @@ export class WingLab extends HTMLElement {
         this.root.classList.remove('wl-loading');
         this.wantWing();
         this.render();
+        this.engine.warmLive();
         if (this.store.get().panels.includes('wing3d')) this.views.wing3d.startWhenVisible();
         this.dispatchEvent(new CustomEvent('wl-ready', EVENT));
       })
@@ -263,7 +264,6 @@ export class WingLab extends HTMLElement {
   }
 
   disconnectedCallback() {
-    if (this.raf) cancelAnimationFrame(this.raf);
     this.raf = 0;
     for (const v of Object.values(this.views)) if (v && v.destroy) v.destroy();
     this.unsub.forEach((f) => f());
@@ -424,11 +424,19 @@ export class WingLab extends HTMLElement {
 
   // ---------- live compute ----------
 
+  /**
+   * Recomputes once the current task's parameter changes are in (a microtask: several set()
+   * calls in one handler make one request). The request goes to the engine's live worker
+   * (engine.requestLive), so the paint after a key press only shows the slider's new value;
+   * the panels redraw when the newest result arrives, and superseded results are dropped.
+   */
   schedule() {
     if (this.raf) return;
-    this.raf = requestAnimationFrame(() => {
+    this.raf = -1;
+    queueMicrotask(() => {
+      if (this.raf !== -1) return;
       this.raf = 0;
-      this.render();
+      if (this.built) this.render();
     });
   }
 
@@ -486,13 +494,23 @@ export class WingLab extends HTMLElement {
       }
       if (first) return;
     }
-    let r;
+    /** @type {Promise<import('./engine.js').LiveResult | null>} */
+    let req;
     try {
-      r = this.engine.analyze(paramsOf(s));
+      req = this.engine.requestLive(paramsOf(s));
     } catch (e) {
       this.error(`Computation rejected: ${errorText(e)}`);
       return;
     }
+    const engine = this.engine;
+    req.then(
+      (r) => { if (r && this.engine === engine && this.built) this.publish(r); },
+      (e) => { if (this.engine === engine && this.built) this.error(`Computation rejected: ${errorText(e)}`); },
+    );
+  }
+
+  /** The newest live result: into the store (the views redraw), then `wl-rendered`. */
+  publish(/** @type {import('./engine.js').LiveResult} */ r) {
     this.error(this.wingError);
     const t1 = performance.now();
     this.store.set({ result: r, status: null });

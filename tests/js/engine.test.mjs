@@ -259,3 +259,74 @@ test('custom kinematics replace the sliders’ stroke; a strain point replaces t
   assert.equal(cfg.modes[0].strains[0].eps_x, 9);
   assert.equal(Object.keys(cfg.applied).length, 9);
 });
+
+test('live requests: coalesced in the live worker; only the newest result reaches the store', async () => {
+  const { createStore } = await import('../../www/store.js');
+  const wb = fakeWasm({ withAngles: true });
+  let lw;
+  let made = 0;
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker, createLiveWorker: () => { made++; lw = fakeWorker(); return lw; } });
+  await e.load();
+  const store = createStore({ result: null });
+  const drawn = [];
+  store.subscribe(['result'], (s) => drawn.push(s.result.params.gamma0));
+  const ask = (g) => e.requestLive({ ...defaults(), gamma0: g }).then((r) => { if (r) store.set({ result: r }); return r; });
+  // Before the live worker says it is ready: computed on the main thread (the first render).
+  const first = await ask(0.1);
+  assert.equal(made, 1);
+  assert.equal(wb.calls.analyze, 1);
+  assert.equal(first.params.gamma0, 0.1);
+  assert.equal(e.liveInWorker, false);
+  lw.reply({ ready: true });
+  assert.equal(e.liveInWorker, true);
+  // Three quick moves: the first goes to the worker, the second waits, the third replaces it.
+  const a = ask(0.2), b = ask(0.3), c = ask(0.4);
+  assert.equal(lw.posted.length, 1, 'one request in flight at a time');
+  assert.equal(lw.posted[0].kind, 'analyze');
+  assert.equal(lw.posted[0].cfg.applied.gamma0, 0.2);
+  assert.equal(await b, null, 'the waiting request is superseded at once');
+  const out = (gamma) => ({ sim: { t: new Float64Array(2), n: 2 }, spectra: [], forces: [], envelope: [], angles: { alpha: new Float64Array(2), beta: new Float64Array(2), gamma: new Float64Array(2) }, tag: gamma });
+  // The stale in-flight result comes back: dropped, and the newest request is posted.
+  lw.reply({ id: lw.posted[0].id, result: out(0.2), ms: 5 });
+  assert.equal(await a, null, 'a result for a superseded request is not delivered');
+  assert.equal(lw.posted.length, 2);
+  assert.equal(lw.posted[1].cfg.applied.gamma0, 0.4);
+  lw.reply({ id: lw.posted[1].id, progress: [1, 2] });
+  lw.reply({ id: 999, result: out(9), ms: 1 });
+  const rc = await (lw.reply({ id: lw.posted[1].id, result: out(0.4), ms: 7 }), c);
+  assert.equal(rc.analysis.tag, 0.4);
+  assert.equal(rc.compute_ms, 7);
+  assert.equal(rc.k, 0);
+  assert.ok(rc.angles.gamma instanceof Float64Array);
+  assert.deepEqual(drawn, [0.1, 0.4], 'only the first and the newest results reached the store');
+  assert.equal(wb.calls.analyze, 1, 'the worker did the rest');
+  assert.deepEqual(e.liveStats, { posted: 2, superseded: 1, stale: 1, sync: 1 });
+  // An error of the newest request rejects; a stale one is dropped silently.
+  const d = ask(0.5);
+  lw.reply({ id: lw.posted[2].id, error: 'invalid value for `duration_s`' });
+  await assert.rejects(d, /duration_s/);
+  // A value the core rejects throws at once, before anything is posted.
+  assert.throws(() => e.requestLive({ ...defaults(), duration: 60 }), /overrides\.duration/);
+  assert.equal(lw.posted.length, 3);
+  // The worker dies: the newest request is computed on the main thread from then on.
+  const f = ask(0.6), g = ask(0.7);
+  lw.onerror({ message: 'boom' });
+  assert.equal(await f, null);
+  assert.equal((await g).params.gamma0, 0.7);
+  assert.equal(lw.terminated, true);
+  assert.equal((await ask(0.8)).params.gamma0, 0.8);
+  assert.equal(made, 1, 'no new worker after a failure');
+  assert.equal(wb.calls.analyze, 3);
+  // dispose: a request in flight resolves to null.
+  e.dispose();
+});
+
+test('without workers, live requests compute on the main thread', async () => {
+  const wb = fakeWasm({ withAngles: true });
+  const e = createEngine({ load: async () => wb, createWorker: fakeWorker, createLiveWorker: () => { throw new Error('no Worker here'); } });
+  await e.load();
+  const r = await e.requestLive({ ...defaults(), gamma0: 0.25 });
+  assert.equal(r.params.gamma0, 0.25);
+  assert.equal(wb.calls.analyze, 1);
+  assert.equal(e.liveInWorker, false);
+});
