@@ -367,6 +367,27 @@ export const EXPERIMENTS = [
       return { lines, checks, values: { max_modulus: f.max_modulus, sigma, measured, mode: k } };
     },
   },
+  {
+    id: 'sensing',
+    title: 'Sensing body rotation through wing strain',
+    figure: 'sensing panel',
+    params: { modes: 'fe' },
+    mode: 0,
+    look: 'Open the “Sensing body rotation” panel (FE wing). Set the rotation rate to 0.001 rad/s about z (yaw) and watch the detection curve: how many strain sensors does it take to reach P_d = 0.9? Then raise the rate ten-fold: D grows a hundred-fold and one sensor suffices. Where are the best sensors: at the root or the tip, and which strain component (ε_x bending, γ_xy twist)?',
+    predict(a, ctx = {}) {
+      const k = ctx.mode ?? 0;
+      const m = a.sim.modes[k];
+      const fd = a.sim.flap_freq_hz;
+      const cor = m.contribution_percent.coriolis;
+      const lines = [
+        `The model predicts that a body rotation ω_b adds Coriolis and centrifugal forcing to every mode of the flapping wing: the frame's rate becomes Ω = R^T ω_b + Ω_{wing}, so the rotation-induced strain Δε grows in proportion to ω_b for small rates and its detectability D = E_Δ/(ρ^2E_F + σ^2) with ω_b^2. Without rotation the ${modeName(a, k)} already carries a Coriolis share of ${fmt(cor, 3)} % of its response at f_d = ${fmt(fd, 4)} Hz (from the yaw of the stroke); the rotation signal rides on these same forces, so it appears at the flap harmonics n·f_d and near the modes' natural frequencies.`,
+      ];
+      const checks = [
+        { id: 'coriolis-present', label: `The flapping wing already feels a Coriolis force (share ${fmt(cor, 3)} % > 0), the channel through which body rotation reaches the strain`, holds: cor > 0, value: cor, expected: 0 },
+      ];
+      return { lines, checks, values: { coriolis_percent: cor } };
+    },
+  },
 ];
 
 export function experiment(id) {

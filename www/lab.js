@@ -68,6 +68,7 @@ import * as resonance from './views/resonance.js';
 import * as wing from './views/wing.js';
 import * as kinematics from './views/kinematics.js';
 import * as modeshape from './views/modeshape.js';
+import * as sensing from './views/sensing.js';
 
 export { loadWasm } from './engine.js';
 
@@ -124,9 +125,9 @@ export { loadWasm } from './engine.js';
 /** A mounted view: destroy() always; some views add hooks (startWhenVisible, setLayout, studies …). */
 /** @typedef {{ destroy(): void, [hook: string]: any }} View */
 
-const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance, wing, kinematics, modeshape };
+const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance, wing, kinematics, modeshape, sensing };
 /** DOM (= tab) order of the panels; layout.js places them so that it is also the visual order. */
-export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'studies', 'resonance', 'report'];
+export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'sensing', 'studies', 'resonance', 'report'];
 const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'planform'];
 /** The keys that decide which wing is wanted. */
 const WING_KEYS = [...WING.map((w) => w.key), 'outline', 'planform', 'wing'];
@@ -240,6 +241,7 @@ export class WingLab extends HTMLElement {
       }),
       this.store.subscribe(['panels'], () => this.applyPanels()),
       this.store.subscribe(['exp'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
+      this.store.subscribe(['body_rate', 'body_axis'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
       this.store.subscribe(WING_KEYS, () => { this.wantWing(); this.schedule(); }),
       this.store.subscribe(['modes', 'mode'], (st) => {
         const n = st.modes === 'fe' ? (st.fe ? st.fe.modes.length : 8) : 2;

@@ -33,6 +33,7 @@ export const TEMPLATES = {
       ['wing', 'wing', 'kinematics'],
       ['spectrum', 'spectrum', 'numbers'],
       ['modeshape', 'strain', 'strain'],
+      ['sensing', 'sensing', 'sensing'],
       ['studies', 'studies', 'studies'],
       ['resonance', 'resonance', 'resonance'],
       ['report', 'report', 'report'],
@@ -50,6 +51,7 @@ export const TEMPLATES = {
       ['numbers', 'numbers'],
       ['modeshape', 'modeshape'],
       ['strain', 'strain'],
+      ['sensing', 'sensing'],
       ['studies', 'studies'],
       ['resonance', 'resonance'],
       ['report', 'report'],
@@ -58,7 +60,7 @@ export const TEMPLATES = {
 };
 
 /** Panels that take a whole row of the main area in the sidebar layout. */
-export const BROAD = ['experiments', 'wing', 'studies', 'resonance', 'report'];
+export const BROAD = ['experiments', 'wing', 'studies', 'resonance', 'report', 'sensing'];
 
 /**
  * The layout mode: `forced` (the `layout` attribute) wins, then `embed` (compact, one column),

@@ -41,10 +41,40 @@ export const ENUMS = [
 ];
 
 /** Panels that can be shown; `panels=` picks a subset (comma-separated). */
-export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance', 'wing', 'kinematics', 'modeshape'];
+export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance', 'wing', 'kinematics', 'modeshape', 'sensing'];
+
+/**
+ * The body rotation of the sensing panel (www/views/sensing.js, issue 14): a constant body
+ * angular velocity of `body_rate` rad/s about the body axis `body_axis` (x = I, roll; y = J,
+ * pitch; z = K, yaw). The range is the core's for a constant component (src/params.rs
+ * BODY_RATE_RANGES, `mean`; tests/sensing_lab.rs compares them); the sign is the direction.
+ * Written to URLs only when they differ from the default. Only the sensing analysis uses it:
+ * the live panels show the paper's fixed body.
+ */
+export const BODY_RATE = Object.freeze({ key: 'body_rate', label: 'Body rotation rate ω_b', sym: 'ω_b', unit: 'rad/s', min: -100, max: 100, step: 0.001, def: 1 });
+/** The body axis of the rotation: choices and default. */
+export const BODY_AXIS = Object.freeze({ key: 'body_axis', label: 'Rotation axis (body axes)', choices: Object.freeze(['x', 'y', 'z']), def: 'z' });
+/** What each body axis is, for labels. */
+export const BODY_AXIS_LABELS = Object.freeze({ x: 'x = I (roll)', y: 'y = J (pitch)', z: 'z = K (yaw)' });
+/** The URL keys of the sensing panel. */
+export const SENSING_KEYS = ['body_rate', 'body_axis'];
+
+/**
+ * The body rate vector [x, y, z] rad/s of a state (see BODY_RATE).
+ * @param {{ body_rate?: number, body_axis?: string }} s
+ * @returns {[number, number, number]}
+ */
+export function bodyRateVector(s) {
+  const r = Number.isFinite(Number(s.body_rate)) ? Number(s.body_rate) : BODY_RATE.def;
+  const i = Math.max(0, BODY_AXIS.choices.indexOf(s.body_axis || BODY_AXIS.def));
+  /** @type {[number, number, number]} */
+  const w = [0, 0, 0];
+  w[i] = r;
+  return w;
+}
 
 /** Guided experiments (www/experiments.js); `exp=<id>` opens one. */
-export const EXPERIMENT_IDS = ['beat', 'no-yaw', 'damping', 'yaw', 'ic', 'resonance', 'instability'];
+export const EXPERIMENT_IDS = ['beat', 'no-yaw', 'damping', 'yaw', 'ic', 'resonance', 'instability', 'sensing'];
 
 /**
  * The lab's FE wing (wasm `feModes` input): the default synthetic outline, camber, clamp,
@@ -91,7 +121,7 @@ const NUMBER_RE = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
  *   alpha_phase: number, beta_phase: number, gamma_phase: number, duration: number,
  *   modes: 'paper' | 'fe', mode: string, detrend: 'none' | 'mean' | 'linear', panels: string[], exp: string, embed?: boolean,
  *   camber: number, clamp: number, e_pa: number, rho: number, nu: number, thickness_um: number, mesh_mm: number, n_modes: number,
- *   outline: string, planform: string,
+ *   outline: string, planform: string, body_rate: number, body_axis: 'x' | 'y' | 'z',
  * }} Params
  */
 
@@ -104,6 +134,8 @@ export function defaults() {
   for (const w of WING) s[w.key] = w.def;
   s.outline = 'manduca';
   s.planform = '';
+  s.body_rate = BODY_RATE.def;
+  s.body_axis = BODY_AXIS.def;
   s.panels = PANELS.slice();
   s.exp = '';
   return /** @type {Params} */ (s);
@@ -156,6 +188,8 @@ export function expectation(key) {
   const w = WING.find((q) => q.key === key);
   if (w) return `${key === 'clamp' ? '"root" or ' : ''}a number in [${w.min}, ${w.max}]${w.unit ? ' ' + w.unit : ''}${key === 'n_modes' ? ' (a whole number)' : ''}`;
   if (key === 'outline') return `one of ${OUTLINE_IDS.join(', ')}`;
+  if (key === 'body_rate') return `a number in [${BODY_RATE.min}, ${BODY_RATE.max}] ${BODY_RATE.unit}`;
+  if (key === 'body_axis') return `one of ${BODY_AXIS.choices.join(', ')}`;
   if (key === 'planform') return 'a relative same-origin path to a .csv or .json outline (no scheme, no //, at most 200 characters)';
   return 'a known parameter';
 }
@@ -196,6 +230,8 @@ export function parsePairs(pairs, ignore = []) {
     else if (WING.some((q) => q.key === key)) v = parseWing(/** @type {WingParam} */ (WING.find((q) => q.key === key)), raw);
     else if (key === 'outline') v = OUTLINE_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
     else if (key === 'planform') v = safePlanformPath(raw);
+    else if (key === 'body_rate') v = parseNumber(/** @type {any} */ (BODY_RATE), raw);
+    else if (key === 'body_axis') v = BODY_AXIS.choices.includes(String(raw).trim()) ? String(raw).trim() : null;
     else {
       rejected.push({ key: short, why: 'unknown parameter' });
       continue;
@@ -268,6 +304,8 @@ export function toQuery(state, extra = {}) {
   }
   if (state.outline && state.outline !== 'manduca') q.set('outline', state.outline);
   if (state.planform) q.set('planform', state.planform);
+  if (state.body_rate !== undefined && state.body_rate !== BODY_RATE.def) q.set('body_rate', String(state.body_rate));
+  if (state.body_axis && state.body_axis !== BODY_AXIS.def) q.set('body_axis', state.body_axis);
   if (state.panels && state.panels.length !== PANELS.length) q.set('panels', state.panels.join(','));
   if (state.exp) q.set('exp', state.exp);
   for (const [k, v] of Object.entries(extra)) q.set(k, v);
@@ -316,6 +354,8 @@ export function paramsOf(s) {
   for (const w of WING) out[w.key] = s[w.key];
   out.outline = s.outline;
   out.planform = s.planform;
+  out.body_rate = s.body_rate === undefined ? BODY_RATE.def : s.body_rate;
+  out.body_axis = s.body_axis || BODY_AXIS.def;
   out.panels = s.panels;
   out.exp = s.exp || '';
   return /** @type {Params} */ (out);

@@ -31,6 +31,7 @@ pub mod analysis;
 pub mod fe;
 pub mod helpers;
 pub mod marshal;
+pub mod sensing;
 pub mod sim;
 pub mod types;
 #[cfg(all(feature = "render", target_arch = "wasm32"))]

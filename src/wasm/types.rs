@@ -193,6 +193,31 @@ export interface KinematicsTable {
   /** grid: per-point means on a uniform grid aligned with t = 0 mod T; least_squares: a fitted Fourier series. */
   method: "grid" | "least_squares"; grid_points: number; max_harmonic: number; warnings: string[];
 }
+/** One accepted range of the body angular velocity (core params::BODY_RATE_RANGES). */
+export interface BodyRateRange { what: "mean" | "amplitude" | "phase" | "value" | "peak"; min: number; max: number; unit: string }
+/** Options of senseRotation; missing = the core's defaults (k_max 30, ρ 0.01, σ 1e-7, 256 samples per sensor, the best sensor's point). */
+export interface SenseOptions { k_max?: number | null; rho?: number | null; noise?: number | null; samples_per_sensor?: number | null; point_mm?: [number, number] | null }
+/** The sensing analysis's options as used (core SensingOptions). */
+export interface SensingOptions { k_max: number; rho: number; noise: number; samples_per_sensor: number }
+/** One chosen sensor: rank (1 = first), node index, strain component, position (mm), single-sensor detectability D. */
+export interface Sensor { rank: number; node: number; component: "eps_x" | "eps_y" | "gamma_xy"; x_mm: number; y_mm: number; d: number }
+/** Strain series of the three components (dimensionless, FE modes). */
+export interface StrainComponents { eps_x: Float64Array; eps_y: Float64Array; gamma_xy: Float64Array }
+/** senseRotation's result. Per node i and component c: d[3i + c], e_delta[3i + c], e_flap[3i + c]; d_best[i] the largest of the three, best_component[i] its index (0 ε_x, 1 ε_y, 2 γ_xy). */
+export interface SensingResult {
+  body_rate: [number, number, number]; options: SensingOptions; flap_freq_hz: number; sample_rate_hz: number;
+  n_nodes: number; n_modes: number; warnings: string[];
+  sensors: Sensor[]; d_prime_all: number; pd_all: number; k_for_90_percent: number | null; method: string;
+  point_mm: [number, number]; point_source: "opts" | "best_sensor";
+  d_best: Float64Array; best_component: Uint8Array; d: Float64Array; e_delta: Float64Array; e_flap: Float64Array;
+  /** d′ and P_d (1 % false alarms) with the first K sensors, K = 1 … k_max; d′ of the K best single sensors. */
+  d_prime: Float64Array; pd: Float64Array; d_prime_ranked: Float64Array;
+  /** Sample times, s; Δε and the flapping strain at point_mm; Welch spectra of Δε (strain²/Hz). */
+  t: Float64Array; delta: StrainComponents; flap: StrainComponents;
+  spectrum: { eps_x: Spectrum; eps_y: Spectrum; gamma_xy: Spectrum };
+  /** Per mode: Δq_k(t) and q_k(t) without rotation (kg^½·m). */
+  dq: Float64Array[]; q_flap: Float64Array[];
+}
 /** An FE result read back from a modes document: feModes' layout (flat typed arrays) without `modes`. */
 export interface ImportedFe {
   planform_note: string; freq_hz: Float64Array; a: [number, number][]; b: [number, number][];

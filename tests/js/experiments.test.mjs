@@ -82,7 +82,7 @@ test('every experiment has an id, title, look text and in-range URL parameters',
       if (en) assert.ok(en.choices.includes(v));
     }
   }
-  assert.equal(EXPERIMENTS.length, 7);
+  assert.equal(EXPERIMENTS.length, 8);
   assert.deepEqual(EXPERIMENTS.map((e) => e.id), EXPERIMENT_IDS, 'state.js validates exp= against the same ids');
 });
 

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { layoutMode, gridLayout, areasCss, TEMPLATES, WIDE_AT, MEDIUM_AT } from '../../www/layout.js';
 import { PANELS } from '../../www/state.js';
 
-const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'studies', 'resonance', 'report'];
+const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'sensing', 'studies', 'resonance', 'report'];
 
 /** Every visible panel occupies a rectangle; every cell holds a visible panel. */
 function checkGrid(g, visible) {

@@ -1,0 +1,89 @@
+// Unit tests of the sensing panel's pure helpers (www/sensemap.js) and of the body-rate URL
+// parameters (www/state.js BODY_RATE, BODY_AXIS). Run: node --test tests/js/sensemap.test.mjs
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { RATE_SLIDER, MAP_LO, MAP_HI, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor } from '../../www/sensemap.js';
+import { BODY_RATE, BODY_AXIS, bodyRateVector, parseQuery, toQuery, defaults, paramsOf, PANELS, expectation } from '../../www/state.js';
+
+test('rate slider: log10 |ω_b| both ways, sign kept, zero at the left end, range kept', () => {
+  assert.equal(sliderOfRate(1), 0);
+  assert.equal(sliderOfRate(-0.01), -2);
+  assert.equal(sliderOfRate(0), RATE_SLIDER.min);
+  assert.equal(sliderOfRate(1e6), RATE_SLIDER.max);
+  assert.equal(rateOfSlider(0), 1);
+  assert.equal(rateOfSlider(-3, -5), -0.001);
+  assert.equal(rateOfSlider(Math.log10(0.5)), 0.5);
+  assert.equal(rateOfSlider(99), BODY_RATE.max);
+  for (let p = RATE_SLIDER.min; p <= RATE_SLIDER.max; p += RATE_SLIDER.step) {
+    const r = rateOfSlider(p);
+    assert.ok(r >= BODY_RATE.min && r <= BODY_RATE.max);
+    assert.ok(Math.abs(sliderOfRate(r) - p) < 0.003, `${p} → ${r} → ${sliderOfRate(r)}`);
+  }
+});
+
+test('map scale: fixed log scale, 0 for D ≤ 10^MAP_LO, zero or NaN; scaling D moves the colours', () => {
+  const s = mapScale([0, 1e-9, 10 ** MAP_LO, 1, 10 ** MAP_HI, 1e9, NaN]);
+  assert.equal(s.max, 1e9);
+  assert.equal(s.t(0), 0);
+  assert.equal(s.t(NaN), 0);
+  assert.equal(s.t(1e-9), 0);
+  assert.equal(s.t(10 ** MAP_LO), 0);
+  assert.equal(s.t(10 ** MAP_HI), 1);
+  assert.equal(s.t(1e9), 1);
+  assert.ok(Math.abs(s.t(1) - (0 - MAP_LO) / (MAP_HI - MAP_LO)) < 1e-12);
+  // four times the rate: D × 16, visibly higher on the scale
+  const a = mapScale([1e-3]), b = mapScale([16e-3]);
+  assert.ok(b.t(16e-3) - a.t(1e-3) > 0.1);
+  assert.equal(mapScale(new Float64Array(4)).max, 0);
+});
+
+test('deltaAt: Σ_k ε_k Δq_k per component, exactly zero for zero Δq', () => {
+  const modal = [{ eps_x: 2, eps_y: -1, gamma_xy: 0.5 }, { eps_x: 1, eps_y: 3, gamma_xy: -2 }];
+  const dq = [Float64Array.of(1, 0, -1), Float64Array.of(0.5, 2, 0)];
+  const d = deltaAt(modal, dq);
+  assert.deepEqual(Array.from(d.eps_x), [2.5, 2, -2]);
+  assert.deepEqual(Array.from(d.eps_y), [0.5, 6, 1]);
+  assert.deepEqual(Array.from(d.gamma_xy), [-0.5, -4, -0.5]);
+  const z = deltaAt(modal, [new Float64Array(5), new Float64Array(5)]);
+  assert.ok([...z.eps_x, ...z.eps_y, ...z.gamma_xy].every((v) => v === 0 && !Object.is(v, -0)));
+  assert.equal(deltaAt([], []).eps_x.length, 0);
+});
+
+test('curve data and the K for P_d ≥ 0.9', () => {
+  const r = { pd: [0.2, 0.7, 0.95], d_prime: [1, 2, 4], d_prime_all: 8 };
+  assert.deepEqual(curveData(r), [[1, 2, 3], [0.2, 0.7, 0.95], [0.125, 0.25, 0.5]]);
+  assert.deepEqual(curveData({ pd: [0.01], d_prime: [0], d_prime_all: 0 })[2], [null]);
+  assert.equal(sensorsFor(r.pd), 3);
+  assert.equal(sensorsFor(r.pd, 0.5), 2);
+  assert.equal(sensorsFor([0.1, 0.2]), null);
+});
+
+test('body rate URL parameters: parsed in range, written only when not the default, vector per axis', () => {
+  assert.ok(PANELS.includes('sensing'));
+  const d = defaults();
+  assert.equal(d.body_rate, BODY_RATE.def);
+  assert.equal(d.body_axis, BODY_AXIS.def);
+  assert.doesNotMatch(toQuery(d), /body_/);
+  const { state, rejected } = parseQuery('?body_rate=-2.5&body_axis=x&panels=controls,sensing');
+  assert.deepEqual(rejected, []);
+  assert.equal(state.body_rate, -2.5);
+  assert.equal(state.body_axis, 'x');
+  assert.deepEqual(state.panels, ['controls', 'sensing']);
+  assert.deepEqual(bodyRateVector(state), [-2.5, 0, 0]);
+  assert.deepEqual(bodyRateVector({ body_rate: 3, body_axis: 'y' }), [0, 3, 0]);
+  assert.deepEqual(bodyRateVector({}), [0, 0, BODY_RATE.def]);
+  const q = new URLSearchParams(toQuery(state));
+  assert.equal(q.get('body_rate'), '-2.5');
+  assert.equal(q.get('body_axis'), 'x');
+  const again = parseQuery(`?${toQuery(state)}`);
+  assert.deepEqual(again.rejected, []);
+  assert.deepEqual(paramsOf(again.state), paramsOf(state));
+  for (const bad of ['body_rate=101', 'body_rate=-100.5', 'body_rate=abc', 'body_rate=1e999', 'body_axis=w', 'body_axis=']) {
+    const r = parseQuery(`?${bad}`);
+    assert.equal(r.rejected.length, 1, bad);
+    assert.equal(r.rejected[0].why, `expected ${expectation(bad.split('=')[0])}`);
+  }
+  assert.equal(parseQuery('?body_rate=100').state.body_rate, 100);
+  assert.equal(parseQuery('?body_rate=0').state.body_rate, 0);
+  assert.match(expectation('body_rate'), /\[-100, 100\] rad\/s/);
+});
