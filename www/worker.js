@@ -4,7 +4,10 @@
 // (Floquet numbers over flap frequency and α0), the paper report, the FE wing (`fe`) and the
 // sensing analysis (`sense`).
 // Protocol: in { id, kind, cfg, opts }; out { id, progress: [done, total] } | { id, result, ms }
-// | { id, error }. Typed arrays are transferred, not copied.
+// | { id, error }, and once { ready: true } when the wasm has loaded. Typed arrays are
+// transferred, not copied. The lab runs two of these workers: one for the studies (and `fe`),
+// one for the live `analyze` of the sliders (www/engine.js requestLive), so neither waits for
+// the other.
 import init, * as wb from './pkg/wingbeat.js';
 import { decimate } from './decimate.js';
 import { errorText } from './format.js';
@@ -47,6 +50,24 @@ const jobs = {
   reproduce() {
     return wb.reproduce();
   },
+  analyze({ cfg, opts, k }) {
+    // The live analysis (engine.requestLive, run in the lab's own live worker so that a study
+    // or the FE wing never delays it): the same wasm `analyze` the main thread would call, with
+    // the angles on sim.t (one anglesAt call for builds whose analyze lacks them).
+    const a = wb.analyze(cfg, opts, k);
+    if (!(a.angles && a.angles.alpha) && typeof wb.anglesAt === 'function') {
+      const flat = wb.anglesAt(cfg, a.sim.t);
+      const n = Math.floor(flat.length / 3);
+      const alpha = new Float64Array(n), beta = new Float64Array(n), gamma = new Float64Array(n);
+      for (let i = 0; i < n; i++) {
+        alpha[i] = flat[3 * i];
+        beta[i] = flat[3 * i + 1];
+        gamma[i] = flat[3 * i + 2];
+      }
+      /** @type {any} */ (a).angles = { alpha, beta, gamma };
+    }
+    return a;
+  },
   fe({ input, opts }, progress) {
     // Shell FE modes of the wing (mesh, assembly, shift-invert eigen-solve): about a second for
     // the default wing. `opts` = { json?, strain_point_mm? } (the modes JSON document for
@@ -77,6 +98,9 @@ function transferList(v) {
 
 /** The worker's global scope (a DedicatedWorkerGlobalScope; tsconfig's lib is the page's DOM). */
 const scope = /** @type {{ postMessage(message: unknown, transfer?: Transferable[]): void, onmessage: ((ev: MessageEvent) => void) | null }} */ (/** @type {unknown} */ (self));
+
+// Tells the engine that the wasm is loaded (a live worker is used once it is; study jobs ignore it).
+ready.then(() => scope.postMessage({ ready: true }), () => {});
 
 scope.onmessage = async (ev) => {
   const { id, kind } = ev.data || {};
