@@ -1,6 +1,7 @@
 //! Global assembly of the shell stiffness (skyline storage, RCM-ordered equations) and the
 //! lumped mass diagonal, with clamped DOFs eliminated.
 
+use super::blocksparse::BlockSym;
 use super::element::{global_stiffness, lumped_mass, Frame, ShellMaterial};
 use super::mesh::Mesh;
 use super::sparse::{rcm_order, Skyline};
@@ -11,9 +12,10 @@ pub const CLAMPED: usize = usize::MAX;
 
 /// Assembled system K φ = λ M φ over the free DOFs.
 #[derive(Debug, Clone)]
-pub struct Assembled {
-    /// Stiffness (N/m, N, N·m blocks), skyline storage.
-    pub k: Skyline,
+pub struct Assembled<K = Skyline> {
+    /// Stiffness (N/m, N, N·m blocks): skyline storage ([`assemble`]) or 6 × 6 node blocks
+    /// ([`assemble_blocks`]).
+    pub k: K,
     /// Lumped mass diagonal (kg for translations, kg·m² for rotations).
     pub m: Vec<f64>,
     /// Equation number of each node's 6 DOFs (u, v, w, θx, θy, θz), or [`CLAMPED`].
@@ -74,10 +76,53 @@ fn equations(mesh: &Mesh, clamped: &[bool]) -> (Vec<[usize; 6]>, usize, Vec<usiz
 pub struct SystemSize {
     /// Free DOFs (equations).
     pub n_dofs: usize,
-    /// Entries of the skyline envelope of K (8 bytes each, stored twice: K and its factor).
+    /// Entries of the skyline envelope of K (8 bytes each, stored twice: K and its factor);
+    /// for the sparse backend ([`system_size_for`]), the entries of its factor.
     pub envelope: usize,
-    /// Multiply–adds of one LDLᵀ factorisation, Σ_i h_i² / 2 over the envelope heights h_i.
+    /// Multiply–adds of one LDLᵀ factorisation, Σ_i h_i² / 2 over the envelope heights h_i
+    /// (skyline), or the block-sparse factor's count ([`system_size_for`]).
     pub factor_work: f64,
+}
+
+/// [`SystemSize`] of `mesh` with the nodes flagged in `clamped` held, for the factorisation
+/// `backend` uses: the minimum-degree symbolic factorisation of the node graph for
+/// [`super::Backend::Sparse`] (`envelope` = entries of L and D, `factor_work` = its
+/// multiply–adds, [`super::blocksparse::Symbolic`]); the RCM envelope ([`system_size`])
+/// for the skyline (and faer, for which it is an upper bound).
+pub fn system_size_for(mesh: &Mesh, clamped: &[bool], backend: super::Backend) -> SystemSize {
+    if backend != super::Backend::Sparse {
+        return system_size(mesh, clamped);
+    }
+    let nn = mesh.nodes.len();
+    let mut block = vec![CLAMPED; nn];
+    let mut nb = 0;
+    for node in 0..nn {
+        if !clamped.get(node).copied().unwrap_or(false) {
+            block[node] = nb;
+            nb += 1;
+        }
+    }
+    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); nb];
+    for t in &mesh.triangles {
+        for a in 0..3 {
+            for b in 0..3 {
+                let (ba, bb) = (block[t[a]], block[t[b]]);
+                if a != b && ba != CLAMPED && bb != CLAMPED {
+                    adj[ba].push(bb);
+                }
+            }
+        }
+    }
+    for a in adj.iter_mut() {
+        a.sort_unstable();
+        a.dedup();
+    }
+    let sym = super::blocksparse::minimum_degree(adj);
+    SystemSize {
+        n_dofs: 6 * nb,
+        envelope: 36 * sym.fill_blocks() + 21 * nb,
+        factor_work: sym.factor_work(),
+    }
 }
 
 /// [`SystemSize`] of `mesh` with the nodes flagged in `clamped` held (the same RCM numbering
@@ -141,6 +186,96 @@ pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<As
         }
     }
     if k.data.iter().any(|v| !v.is_finite()) {
+        return Err(WingbeatError::NonFinite {
+            what: "stiffness assembly".into(),
+            detail: "check the material values and the outline".into(),
+        });
+    }
+    Ok(Assembled {
+        k,
+        m,
+        eq,
+        node_mass,
+    })
+}
+
+/// Assembles K (as 6 × 6 node blocks, [`BlockSym`]) and M for `mesh` with the nodes flagged
+/// in `clamped` fixed in all 6 DOFs. The free nodes keep their mesh order (block j is the
+/// j-th free node, its equations 6j .. 6j + 5): the factorisation orders them itself.
+pub fn assemble_blocks(
+    mesh: &Mesh,
+    mat: &ShellMaterial,
+    clamped: &[bool],
+) -> Result<Assembled<BlockSym>> {
+    let nn = mesh.nodes.len();
+    let mut eq = vec![[CLAMPED; 6]; nn];
+    let mut block = vec![CLAMPED; nn];
+    let mut nb = 0;
+    for node in 0..nn {
+        if clamped.get(node).copied().unwrap_or(false) {
+            continue;
+        }
+        block[node] = nb;
+        for d in 0..6 {
+            eq[node][d] = 6 * nb + d;
+        }
+        nb += 1;
+    }
+    if nb == 0 {
+        return Err(WingbeatError::Geometry(
+            "every node is clamped: nothing can vibrate".into(),
+        ));
+    }
+    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); nb];
+    for t in &mesh.triangles {
+        for a in 0..3 {
+            for b in 0..3 {
+                let (ba, bb) = (block[t[a]], block[t[b]]);
+                if a != b && ba != CLAMPED && bb != CLAMPED {
+                    adj[ba].push(bb);
+                }
+            }
+        }
+    }
+    let mut k = BlockSym::with_pattern(&adj);
+    drop(adj);
+    let mut m = vec![0.0; 6 * nb];
+    let mut node_mass = vec![0.0; nn];
+    for (ti, t) in mesh.triangles.iter().enumerate() {
+        let p = [mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]];
+        let f = Frame::new(&p);
+        let ke = global_stiffness(&p, mat);
+        let (Some(f), Some(ke)) = (f, ke) else {
+            return Err(WingbeatError::Geometry(format!(
+                "triangle {ti} is degenerate (zero area)"
+            )));
+        };
+        let (mt, mr) = lumped_mass(f.area, mat);
+        for a in 0..3 {
+            node_mass[t[a]] += mt;
+            let ba = block[t[a]];
+            if ba == CLAMPED {
+                continue;
+            }
+            for d in 0..6 {
+                m[6 * ba + d] += if d < 3 { mt } else { mr };
+            }
+            for b in 0..3 {
+                let bb = block[t[b]];
+                if bb == CLAMPED || bb > ba {
+                    continue;
+                }
+                let pos = k.find(ba, bb).expect("block in the pattern");
+                let blk = &mut k.val[pos];
+                for d in 0..6 {
+                    for e in 0..6 {
+                        blk[6 * d + e] += ke[(6 * a + d, 6 * b + e)];
+                    }
+                }
+            }
+        }
+    }
+    if k.val.iter().flatten().any(|v| !v.is_finite()) {
         return Err(WingbeatError::NonFinite {
             what: "stiffness assembly".into(),
             detail: "check the material values and the outline".into(),

@@ -11,7 +11,8 @@
 //! capped: when the requested modes have not met the tolerance by then, the solver returns
 //! [`WingbeatError::NoConvergence`] — it never loops without bound.
 
-use super::linalg::{Backend, SkylineLdlt, SpdFactor};
+use super::blocksparse::BlockSym;
+use super::linalg::{Backend, SkylineLdlt, SparseLdlt, SpdFactor, SymOperator};
 use super::sparse::{dot, Skyline};
 use crate::error::{Result, WingbeatError};
 use nalgebra::DMatrix;
@@ -82,6 +83,9 @@ pub fn lowest_modes(
     opt: EigenOptions,
 ) -> Result<EigenResult> {
     match opt.backend {
+        Backend::Sparse => {
+            lowest_modes_with::<SparseLdlt>(&BlockSym::from_skyline(k), m_diag, n_modes, opt)
+        }
         Backend::Skyline => lowest_modes_with::<SkylineLdlt>(k, m_diag, n_modes, opt),
         #[cfg(feature = "faer")]
         Backend::Faer => lowest_modes_with::<super::linalg::FaerLlt>(k, m_diag, n_modes, opt),
@@ -102,12 +106,12 @@ wing (`material.e_pa`, `material.thickness_m`, `material.rho_kg_m3`)";
 /// [`lowest_modes`] with the factorisation backend `F` fixed at compile time
 /// (`opt.backend` is ignored).
 pub fn lowest_modes_with<F: SpdFactor>(
-    k: &Skyline,
+    k: &F::Matrix,
     m_diag: &[f64],
     n_modes: usize,
     opt: EigenOptions,
 ) -> Result<EigenResult> {
-    let n = k.n;
+    let n = k.dim();
     if n_modes == 0 || n_modes > n {
         return Err(WingbeatError::invalid(
             "n_modes",
@@ -119,7 +123,7 @@ pub fn lowest_modes_with<F: SpdFactor>(
     // the lowest eigenvalue × (L/h)⁴ — far below the wanted eigenvalues but far above rounding.
     let mut ratio = f64::INFINITY;
     for i in 0..n {
-        let r = k.diag(i) / m_diag[i];
+        let r = k.diag_entry(i) / m_diag[i];
         if r > 0.0 {
             ratio = ratio.min(r);
         }
@@ -214,7 +218,7 @@ pub fn lowest_modes_with<F: SpdFactor>(
                     }
                     let nm = mdot(&phi, &phi, m_diag).sqrt();
                     phi.iter_mut().for_each(|a| *a /= nm);
-                    k.matvec(&phi, &mut kv);
+                    k.mul(&phi, &mut kv);
                     let mut rr = 0.0;
                     let mut kk = 0.0;
                     let mut mm = 0.0;
@@ -276,15 +280,15 @@ pub fn lowest_modes_with<F: SpdFactor>(
 
 /// Adds M-orthonormalised copies of `block` to `basis` (two Gram–Schmidt passes; vectors
 /// already in the span are dropped) and the new columns of VᵀKV to `kr`. Returns the count.
-fn extend(
-    k: &Skyline,
+fn extend<K: SymOperator>(
+    k: &K,
     m_diag: &[f64],
     max_basis: usize,
     block: Vec<Vec<f64>>,
     basis: &mut Vec<Vec<f64>>,
     kr: &mut Vec<Vec<f64>>,
 ) -> usize {
-    let mut kv = vec![0.0; k.n];
+    let mut kv = vec![0.0; k.dim()];
     let mut added = 0;
     for mut w in block {
         if basis.len() >= max_basis {
@@ -306,7 +310,7 @@ fn extend(
             continue; // numerically in the span already: deflate
         }
         w.iter_mut().for_each(|a| *a /= norm);
-        k.matvec(&w, &mut kv);
+        k.mul(&w, &mut kv);
         let mut col: Vec<f64> = basis.iter().map(|v| dot(v, &kv)).collect();
         col.push(dot(&w, &kv));
         kr.push(col);

@@ -19,6 +19,7 @@
 //! factorisation backends", for the measurements behind that choice); selecting
 //! [`Backend::Faer`] in a build without it is an [`WingbeatError::InvalidInput`] error.
 
+use super::blocksparse::{BlockLdlt, BlockSym};
 use super::sparse::Skyline;
 use crate::error::{Result, WingbeatError};
 use serde::{Deserialize, Serialize};
@@ -27,8 +28,12 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Backend {
-    /// The built-in envelope LDLᵀ on the RCM ordering (default; no dependency).
+    /// The built-in node-block sparse LDLᵀ on a minimum-degree ordering (default; no
+    /// dependency; [`super::blocksparse`]).
     #[default]
+    Sparse,
+    /// The built-in envelope LDLᵀ on the RCM ordering (the former default; kept for
+    /// cross-checks).
     Skyline,
     /// faer's sparse Cholesky with AMD ordering (needs the `faer` cargo feature).
     Faer,
@@ -38,25 +43,62 @@ impl Backend {
     /// Whether this build can use the backend.
     pub fn available(self) -> bool {
         match self {
-            Backend::Skyline => true,
+            Backend::Sparse | Backend::Skyline => true,
             Backend::Faer => cfg!(feature = "faer"),
         }
     }
 
-    /// Lower-case name (`skyline`, `faer`), as in JSON.
+    /// Lower-case name (`sparse`, `skyline`, `faer`), as in JSON.
     pub fn name(self) -> &'static str {
         match self {
+            Backend::Sparse => "sparse",
             Backend::Skyline => "skyline",
             Backend::Faer => "faer",
         }
     }
 }
 
+/// What the eigen-solver needs of the stiffness matrix itself.
+pub trait SymOperator {
+    /// Dimension.
+    fn dim(&self) -> usize;
+    /// Diagonal entry i.
+    fn diag_entry(&self, i: usize) -> f64;
+    /// y = A x.
+    fn mul(&self, x: &[f64], y: &mut [f64]);
+}
+
+impl SymOperator for Skyline {
+    fn dim(&self) -> usize {
+        self.n
+    }
+    fn diag_entry(&self, i: usize) -> f64 {
+        self.diag(i)
+    }
+    fn mul(&self, x: &[f64], y: &mut [f64]) {
+        self.matvec(x, y)
+    }
+}
+
+impl SymOperator for BlockSym {
+    fn dim(&self) -> usize {
+        self.n()
+    }
+    fn diag_entry(&self, i: usize) -> f64 {
+        self.diag(i)
+    }
+    fn mul(&self, x: &[f64], y: &mut [f64]) {
+        self.matvec(x, y)
+    }
+}
+
 /// A factorisation of K − σM (K symmetric, M diagonal) that can solve with it.
 pub trait SpdFactor: Sized {
+    /// The storage of K this backend factors.
+    type Matrix: SymOperator;
     /// Factors K − `shift`·diag(`m_diag`). An error means the backend could not factor it
     /// (a zero or non-finite pivot; for a Cholesky backend also "not positive definite").
-    fn factor(k: &Skyline, shift: f64, m_diag: &[f64]) -> Result<Self>;
+    fn factor(k: &Self::Matrix, shift: f64, m_diag: &[f64]) -> Result<Self>;
     /// Overwrites `x` with (K − σM)⁻¹ x.
     fn solve_in_place(&self, x: &mut [f64]);
     /// Number of negative pivots (the Sturm count: eigenvalues of K φ = λMφ below σ), when
@@ -72,6 +114,7 @@ pub struct SkylineLdlt {
 }
 
 impl SpdFactor for SkylineLdlt {
+    type Matrix = Skyline;
     fn factor(k: &Skyline, shift: f64, m_diag: &[f64]) -> Result<Self> {
         let mut fac = k.clone();
         for (i, &m) in m_diag.iter().enumerate() {
@@ -92,6 +135,30 @@ impl SpdFactor for SkylineLdlt {
 
     fn negative_pivots(&self) -> Option<usize> {
         Some(self.negatives)
+    }
+}
+
+/// The node-block sparse LDLᵀ ([`BlockLdlt`], minimum-degree order) behind [`SpdFactor`].
+#[derive(Debug, Clone)]
+pub struct SparseLdlt(pub BlockLdlt);
+
+impl SpdFactor for SparseLdlt {
+    type Matrix = BlockSym;
+    fn factor(k: &BlockSym, shift: f64, m_diag: &[f64]) -> Result<Self> {
+        BlockLdlt::factor(k, shift, m_diag)
+            .map(SparseLdlt)
+            .ok_or_else(|| WingbeatError::NonFinite {
+                what: "sparse LDLᵀ of K − σM".into(),
+                detail: format!("zero or non-finite pivot at σ = {shift:e}"),
+            })
+    }
+
+    fn solve_in_place(&self, x: &mut [f64]) {
+        self.0.solve_in_place(x);
+    }
+
+    fn negative_pivots(&self) -> Option<usize> {
+        Some(self.0.negatives())
     }
 }
 
@@ -132,6 +199,7 @@ impl FaerLlt {
 
 #[cfg(feature = "faer")]
 impl SpdFactor for FaerLlt {
+    type Matrix = Skyline;
     fn factor(k: &Skyline, shift: f64, m_diag: &[f64]) -> Result<Self> {
         use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
         let n = k.n;
@@ -163,6 +231,6 @@ impl SpdFactor for FaerLlt {
 /// Sturm count of K − μM with the backend's inertia: the number of eigenvalues of
 /// K φ = λ M φ below μ, or `None` where the backend cannot tell (faer: any μ above the
 /// lowest eigenvalue, where its Cholesky fails).
-pub fn sturm_count<F: SpdFactor>(k: &Skyline, m_diag: &[f64], mu: f64) -> Option<usize> {
+pub fn sturm_count<F: SpdFactor>(k: &F::Matrix, m_diag: &[f64], mu: f64) -> Option<usize> {
     F::factor(k, mu, m_diag).ok()?.negative_pivots()
 }

@@ -35,6 +35,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod assembly;
+pub mod blocksparse;
 pub mod eigen;
 pub mod element;
 pub mod geometry;
@@ -360,7 +361,7 @@ pub fn check_fe_work(
     opt: &EigenOptions,
     max_work: f64,
 ) -> Result<assembly::SystemSize> {
-    let size = assembly::system_size(mesh, clamped);
+    let size = assembly::system_size_for(mesh, clamped, opt.backend);
     let work = fe_work(&size, n_modes, opt);
     let num = crate::error::num;
     let remedy = "a coarser mesh (`mesh_size_mm`), fewer outline points (a smoother outline), or fewer modes (`n_modes`)";
@@ -645,6 +646,18 @@ pub fn solve_mesh_with(
     opt: EigenOptions,
 ) -> Result<FemModes> {
     material.validate()?;
+    if opt.backend == Backend::Sparse {
+        let asm = assembly::assemble_blocks(mesh, material, clamped)?;
+        let eig = eigen::lowest_modes_with::<linalg::SparseLdlt>(&asm.k, &asm.m, n_modes, opt)?;
+        return Ok(postprocess(
+            mesh,
+            clamped,
+            material,
+            &asm,
+            &eig,
+            planform_note,
+        ));
+    }
     let asm = assembly::assemble(mesh, material, clamped)?;
     let eig = eigen::lowest_modes(&asm.k, &asm.m, n_modes, opt)?;
     Ok(postprocess(
@@ -657,11 +670,11 @@ pub fn solve_mesh_with(
     ))
 }
 
-fn postprocess(
+fn postprocess<K>(
     mesh: &Mesh,
     clamped: &[bool],
     material: &ShellMaterial,
-    asm: &assembly::Assembled,
+    asm: &assembly::Assembled<K>,
     eig: &eigen::EigenResult,
     note: &str,
 ) -> FemModes {
