@@ -1,0 +1,191 @@
+// The sensing panel (www/views/sensing.js, issue 14) end to end: it opens from a URL with the
+// body rate in it; a different rate gives different numbers (D ∝ ω_b² for small rates) and a
+// different picture on the map canvas; a zero rate gives a Δε that is exactly zero in the wasm
+// result; the point is picked with the keyboard alone; axe finds nothing in the panel; the
+// paper's mode set says why there is no map and offers the switch. Logs the browser timing of
+// the map (request → drawn) at the default mesh.
+// Run after scripts/build-web.sh www:  node --test --test-concurrency=1 tests/e2e/sensing.test.mjs
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { createRequire } from 'node:module';
+import { setup, openPage, waitRenders, OUT } from './helpers.mjs';
+import { experimentQuery } from '../../www/experiments.js';
+
+const require = createRequire(import.meta.url);
+const AXE = require.resolve('axe-core/axe.min.js');
+const SEC = 'section.wl-sensing';
+
+let env;
+before(async () => { env = await setup(); });
+after(async () => { if (env) await env.close(); });
+
+/** The view's last wasm result, summarised (typed arrays read in the page). */
+const summary = (page) => page.evaluate(() => {
+  const r = document.querySelector('wing-lab').views.sensing.result;
+  if (!r) return null;
+  const all = (a) => Array.from(a);
+  return {
+    body_rate: r.body_rate,
+    d_best: all(r.d_best),
+    dq_nonzero: r.dq.map((q) => q.filter((v) => v !== 0).length),
+    delta_nonzero: ['eps_x', 'eps_y', 'gamma_xy'].map((c) => r.delta[c].filter((v) => v !== 0).length),
+    delta_peak: Math.max(...['eps_x', 'eps_y', 'gamma_xy'].map((c) => Math.max(...all(r.delta[c]).map(Math.abs)))),
+    n: r.t.length,
+    sensors: r.sensors.length,
+    pd: all(r.pd),
+    point_mm: r.point_mm,
+    point_source: r.point_source,
+  };
+});
+
+/** Waits for a new result after `before` drawings of the map, then returns the map's state. */
+async function waitReady(page, drawnBefore = -1) {
+  await page.waitForFunction(([d]) => {
+    const b = __wl.q('[data-sensemap]');
+    const c = __wl.q('.wl-sense-canvas');
+    return b && b.dataset.state === 'ready' && c && Number(c.dataset.drawn || 0) > d && document.querySelector('wing-lab').views.sensing.result;
+  }, [drawnBefore], { timeout: 90000 });
+  return page.evaluate(() => ({ ms: Number(__wl.q('[data-sensemap]').dataset.ms), worker: Number(__wl.q('[data-sensemap]').dataset.workerMs), drawn: Number(__wl.q('.wl-sense-canvas').dataset.drawn) }));
+}
+
+/** Sets the rate through the panel's number input (as a user types it). */
+async function setRate(page, v) {
+  const drawn = await page.evaluate(() => Number(__wl.q('.wl-sense-canvas').dataset.drawn));
+  await page.evaluate((x) => {
+    const i = __wl.q('.wl-sense-controls input[type=number]');
+    i.value = String(x);
+    i.dispatchEvent(new Event('change', { bubbles: true }));
+  }, v);
+  await page.waitForFunction((x) => document.querySelector('wing-lab').views.sensing.result?.body_rate.some((w) => w === x) || (x === 0 && document.querySelector('wing-lab').views.sensing.result?.body_rate.every((w) => w === 0)), v, { timeout: 90000 });
+  return waitReady(page, drawn);
+}
+
+const mapShot = (page) => page.locator(`wing-lab ${SEC} .wl-sense-canvas`).screenshot();
+
+test('the panel opens from a URL; the rate changes the numbers and the map; zero rate gives Δε = 0 exactly', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  await page.goto(`${env.url}?panels=controls,sensing&modes=fe&body_rate=0.05&body_axis=x`);
+  await waitRenders(page, 1);
+  const t = await waitReady(page);
+  const st = await page.evaluate(() => { const s = document.querySelector('wing-lab').store.get(); return { r: s.body_rate, a: s.body_axis }; });
+  assert.deepEqual(st, { r: 0.05, a: 'x' });
+  assert.equal(await page.evaluate(() => __wl.q('.wl-sense-controls select').value), 'x');
+  const a = await summary(page);
+  assert.deepEqual(a.body_rate, [0.05, 0, 0]);
+  assert.equal(a.sensors, 30);
+  assert.equal(a.pd.length, 30);
+  assert.ok(a.n > 10000, `samples ${a.n}`);
+  assert.ok(a.delta_peak > 0 && a.d_best.some((v) => v > 0), `peak ${a.delta_peak}`);
+  assert.equal(a.point_source, 'best_sensor');
+  console.log(`# sensing map in the browser: ${t.ms} ms from request to drawn map (${t.worker} ms of wasm in the worker), default FE wing, ${a.d_best.length} nodes, ${a.n} samples`);
+  fs.mkdirSync(OUT, { recursive: true });
+  fs.writeFileSync(path.join(OUT, 'sensing-timing.json'), JSON.stringify({ ...t, nodes: a.d_best.length, samples: a.n }));
+  const shotA = await mapShot(page);
+
+  // a rate 4× larger: every D about 16× (Δε linear in ω_b to first order), and a brighter map
+  await setRate(page, 0.2);
+  const b = await summary(page);
+  assert.deepEqual(b.body_rate, [0.2, 0, 0]);
+  const ratios = b.d_best.map((v, i) => v / a.d_best[i]).filter(Number.isFinite).sort((x, y) => x - y);
+  const med = ratios[ratios.length >> 1];
+  assert.ok(Math.abs(med - 16) < 0.8, `median D ratio ${med}`);
+  const shotB = await mapShot(page);
+  assert.notDeepEqual(shotA, shotB, 'the map canvas changed');
+  const moved = await page.evaluate(async ([x, y]) => {
+    const px = async (b64) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width; c.height = img.height;
+      const g = c.getContext('2d');
+      g.drawImage(img, 0, 0);
+      return g.getImageData(0, 0, c.width, c.height).data;
+    };
+    const p = await px(x), q = await px(y);
+    let n = 0;
+    for (let i = 0; i < Math.min(p.length, q.length); i += 4) if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 30) n++;
+    return n / (p.length / 4);
+  }, [shotA.toString('base64'), shotB.toString('base64')]);
+  assert.ok(moved > 0.2, `share of map pixels that changed colour: ${moved}`);
+
+  // the URL carries the rate (sync-url is on for the lab page)
+  await page.waitForFunction(() => /body_rate=0\.2(&|$)/.test(location.search) && /body_axis=x/.test(location.search), null, { timeout: 5000 });
+
+  // zero rate: Δq and Δε exactly 0 in the wasm result, D = 0 everywhere
+  await setRate(page, 0);
+  const z = await summary(page);
+  assert.deepEqual(z.body_rate, [0, 0, 0]);
+  assert.ok(z.dq_nonzero.every((n) => n === 0), `dq non-zero samples ${JSON.stringify(z.dq_nonzero)}`);
+  assert.deepEqual(z.delta_nonzero, [0, 0, 0]);
+  assert.equal(z.delta_peak, 0);
+  assert.ok(z.d_best.every((v) => v === 0), 'D = 0 at every node');
+  assert.match(await page.evaluate(() => __wl.q('.wl-sense-canvas').closest('[data-sensemap]').textContent), /D = 0 everywhere/);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('keyboard only: Tab to the map, arrow keys move the point, Δε follows', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  await page.goto(`${env.url}?panels=sensing&modes=fe&body_rate=1`);
+  await waitRenders(page, 1);
+  await waitReady(page);
+  const p0 = await page.evaluate(() => __wl.q('.wl-sense-canvas').dataset.point);
+  // from the K slider, Tab reaches the export buttons and then the map
+  await page.evaluate(() => __wl.q('.wl-sense-controls input[type=range][id$="sense-k"]').focus());
+  for (let i = 0; i < 6; i++) {
+    if (await page.evaluate(() => __wl.active()?.classList.contains('wl-sense-canvas'))) break;
+    await page.keyboard.press('Tab');
+  }
+  assert.equal(await page.evaluate(() => __wl.active()?.classList.contains('wl-sense-canvas')), true, 'the map is reachable with Tab');
+  const peak0 = await page.evaluate(() => Number(__wl.q('[data-sensemap]').dataset.deltaPeak));
+  for (let i = 0; i < 8; i++) await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('Shift+ArrowRight');
+  const p1 = await page.evaluate(() => __wl.q('.wl-sense-canvas').dataset.point);
+  assert.notEqual(p1, p0);
+  const [x0] = p0.split(',').map(Number), [x1] = p1.split(',').map(Number);
+  assert.ok(Math.abs(x1 - x0 - 6) < 1e-9, `${p0} → ${p1}`);
+  // the job for the picked point comes back with its series and spectrum
+  await page.waitForFunction((p) => { const r = document.querySelector('wing-lab').views.sensing.result; return r && r.point_source === 'opts' && `${r.point_mm[0]},${r.point_mm[1]}` === p; }, p1, { timeout: 60000 });
+  const peak1 = await page.evaluate(() => Number(__wl.q('[data-sensemap]').dataset.deltaPeak));
+  assert.ok(peak1 > 0 && peak1 !== peak0, `${peak0} → ${peak1}`);
+  assert.match(await page.evaluate(() => __wl.q('section.wl-sensing .wl-smap-point').textContent), /picked point/);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('the paper mode set says why there is no map and switches to the FE wing', async () => {
+  const { page, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  await page.goto(`${env.url}?panels=controls,sensing`);
+  await waitRenders(page, 1);
+  const txt = await page.evaluate(() => __wl.q('.wl-sense-needfe').textContent);
+  assert.match(txt, /only the FE wing has/);
+  await page.locator(`wing-lab ${SEC} .wl-sense-needfe button`).click();
+  await waitReady(page);
+  assert.equal(await page.evaluate(() => document.querySelector('wing-lab').store.get().modes), 'fe');
+  await context.close();
+});
+
+for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+  test(`axe: the sensing panel has no violations (${viewport.width}×${viewport.height}); screenshot`, async () => {
+    const { page, problems, context } = await openPage(env.browser, env.url, viewport);
+    await page.goto(`${env.url}?${experimentQuery('sensing', { panels: 'controls,experiments,sensing' })}`);
+    await waitRenders(page, 1);
+    // the panel computes only when it is on screen
+    await page.locator(`wing-lab ${SEC}`).scrollIntoViewIfNeeded();
+    await waitReady(page);
+    await page.evaluate(() => { for (const d of __wl.qa('.wl-sense-details')) d.open = true; });
+    await page.addScriptTag({ path: AXE });
+    const vs = await page.evaluate(async () => {
+      const r = await window.axe.run({ include: [__wl.axe('section.wl-sensing')] }, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
+      return r.violations.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+    });
+    assert.deepEqual(vs, []);
+    await page.locator(`wing-lab ${SEC}`).scrollIntoViewIfNeeded();
+    await page.screenshot({ path: path.join(OUT, `sensing-${viewport.width}.png`) });
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+}
