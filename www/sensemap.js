@@ -40,21 +40,31 @@ export function rateOfSlider(pos, sign = 1) {
 export const MAP_LO = -6;
 export const MAP_HI = 2;
 
+/** Decades below the map's largest D that the relative scale shows. */
+export const REL_DECADES = 2;
+
 /**
- * The colour scale of a detectability map: `t(v)` is the position in [0, 1] of a value on the
- * fixed log scale (0 for D ≤ 10^MAP_LO, zero or not finite), `max` the largest D (0 when no
- * node has a positive D: a zero body rate).
+ * The colour scale of a detectability map: `t(v)` is the position in [0, 1] of a value on a log
+ * scale (0 for D at or below the scale's bottom, zero or not finite); `max` is the largest D (0
+ * when no node has a positive D: a zero body rate). `mode` 'relative' (the default: where on
+ * this wing rotation shows up best) spans REL_DECADES decades below `max`; 'absolute' is the
+ * fixed scale MAP_LO … MAP_HI (how strongly: the same colour means the same D on every map).
  * @param {ArrayLike<number>} d
+ * @param {'relative' | 'absolute'} [mode]
  */
-export function mapScale(d) {
+export function mapScale(d, mode = 'relative') {
   let max = 0;
   for (let i = 0; i < d.length; i++) if (Number.isFinite(d[i]) && d[i] > max) max = d[i];
+  const rel = mode !== 'absolute';
+  const hi = rel ? (max > 0 ? Math.log10(max) : 0) : MAP_HI;
+  const lo = rel ? hi - REL_DECADES : MAP_LO;
   return {
     max,
-    lo: MAP_LO,
-    hi: MAP_HI,
+    lo,
+    hi,
+    mode: rel ? 'relative' : 'absolute',
     /** @param {number} v */
-    t: (v) => (Number.isFinite(v) && v > 0 ? Math.min(1, Math.max(0, (Math.log10(v) - MAP_LO) / (MAP_HI - MAP_LO))) : 0),
+    t: (v) => (Number.isFinite(v) && v > 0 && (!rel || max > 0) ? Math.min(1, Math.max(0, (Math.log10(v) - lo) / (hi - lo))) : 0),
   };
 }
 

@@ -79,6 +79,8 @@ test('the panel opens from a URL; the rate changes the numbers and the map; zero
   assert.ok(a.n > 10000, `samples ${a.n}`);
   assert.ok(a.delta_peak > 0 && a.d_best.some((v) => v > 0), `peak ${a.delta_peak}`);
   assert.equal(a.point_source, 'best_sensor');
+  // the absolute colour scale: the same D, the same colour on every map
+  await page.evaluate(() => { const s = __wl.q('.wl-sense-controls select[id$="sense-scale"]'); s.value = 'absolute'; s.dispatchEvent(new Event('change', { bubbles: true })); });
   console.log(`# sensing map in the browser: ${t.ms} ms from request to drawn map (${t.worker} ms of wasm in the worker), default FE wing, ${a.d_best.length} nodes, ${a.n} samples`);
   fs.mkdirSync(OUT, { recursive: true });
   fs.writeFileSync(path.join(OUT, 'sensing-timing.json'), JSON.stringify({ ...t, nodes: a.d_best.length, samples: a.n }));
@@ -113,6 +115,14 @@ test('the panel opens from a URL; the rate changes the numbers and the map; zero
 
   // the URL carries the rate (sync-url is on for the lab page)
   await page.waitForFunction(() => /body_rate=0\.2(&|$)/.test(location.search) && /body_axis=x/.test(location.search), null, { timeout: 5000 });
+
+  // the relative scale (default) shows the pattern: another axis, another picture
+  await page.evaluate(() => { const s = __wl.q('.wl-sense-controls select[id$="sense-scale"]'); s.value = 'relative'; s.dispatchEvent(new Event('change', { bubbles: true })); });
+  const shotX = await mapShot(page);
+  await page.evaluate(() => { const s = __wl.q('.wl-sense-controls select[id$="sense-axis"]'); s.value = 'y'; s.dispatchEvent(new Event('change', { bubbles: true })); });
+  await page.waitForFunction(() => document.querySelector('wing-lab').views.sensing.result?.body_rate[1] === 0.2, null, { timeout: 90000 });
+  await waitReady(page, await page.evaluate(() => Number(__wl.q('.wl-sense-canvas').dataset.drawn)) - 1);
+  assert.notDeepEqual(await mapShot(page), shotX, 'pitch and roll give different maps');
 
   // zero rate: Δq and Δε exactly 0 in the wasm result, D = 0 everywhere
   await setRate(page, 0);

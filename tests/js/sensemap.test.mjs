@@ -2,7 +2,7 @@
 // parameters (www/state.js BODY_RATE, BODY_AXIS). Run: node --test tests/js/sensemap.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { RATE_SLIDER, MAP_LO, MAP_HI, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor } from '../../www/sensemap.js';
+import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor } from '../../www/sensemap.js';
 import { BODY_RATE, BODY_AXIS, bodyRateVector, parseQuery, toQuery, defaults, paramsOf, PANELS, expectation } from '../../www/state.js';
 
 test('rate slider: log10 |ω_b| both ways, sign kept, zero at the left end, range kept', () => {
@@ -21,8 +21,8 @@ test('rate slider: log10 |ω_b| both ways, sign kept, zero at the left end, rang
   }
 });
 
-test('map scale: fixed log scale, 0 for D ≤ 10^MAP_LO, zero or NaN; scaling D moves the colours', () => {
-  const s = mapScale([0, 1e-9, 10 ** MAP_LO, 1, 10 ** MAP_HI, 1e9, NaN]);
+test('map scale (absolute): fixed log scale, 0 for D ≤ 10^MAP_LO, zero or NaN; scaling D moves the colours', () => {
+  const s = mapScale([0, 1e-9, 10 ** MAP_LO, 1, 10 ** MAP_HI, 1e9, NaN], 'absolute');
   assert.equal(s.max, 1e9);
   assert.equal(s.t(0), 0);
   assert.equal(s.t(NaN), 0);
@@ -32,9 +32,25 @@ test('map scale: fixed log scale, 0 for D ≤ 10^MAP_LO, zero or NaN; scaling D 
   assert.equal(s.t(1e9), 1);
   assert.ok(Math.abs(s.t(1) - (0 - MAP_LO) / (MAP_HI - MAP_LO)) < 1e-12);
   // four times the rate: D × 16, visibly higher on the scale
-  const a = mapScale([1e-3]), b = mapScale([16e-3]);
+  const a = mapScale([1e-3], 'absolute'), b = mapScale([16e-3], 'absolute');
   assert.ok(b.t(16e-3) - a.t(1e-3) > 0.1);
-  assert.equal(mapScale(new Float64Array(4)).max, 0);
+  assert.equal(mapScale(new Float64Array(4), 'absolute').max, 0);
+});
+
+test('map scale (relative, the default): REL_DECADES below the largest D, unchanged by scaling D', () => {
+  const d = [0.12, 0.012, 0.0012, 1e-5, 0];
+  const s = mapScale(d);
+  assert.equal(s.mode, 'relative');
+  assert.equal(s.t(0.12), 1);
+  assert.ok(Math.abs(s.t(0.012) - (1 - 1 / REL_DECADES)) < 1e-12);
+  assert.equal(s.t(1e-5), 0);
+  assert.equal(s.t(0), 0);
+  const k = mapScale(d.map((v) => 16 * v));
+  for (const v of d) assert.ok(Math.abs(k.t(16 * v) - s.t(v)) < 1e-12);
+  const z = mapScale([0, 0]);
+  assert.equal(z.max, 0);
+  assert.equal(z.t(0), 0);
+  assert.equal(z.t(1), 0);
 });
 
 test('deltaAt: Σ_k ε_k Δq_k per component, exactly zero for zero Δq', () => {

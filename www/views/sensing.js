@@ -12,7 +12,7 @@ import { fmt, errorText } from '../format.js';
 import { decimate } from '../decimate.js';
 import { linePlot, color, log10OrNull, viridis } from '../plot.js';
 import { BODY_RATE, BODY_AXIS, BODY_AXIS_LABELS, bodyRateVector, toQuery } from '../state.js';
-import { RATE_SLIDER, MAP_LO, MAP_HI, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor } from '../sensemap.js';
+import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor } from '../sensemap.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
 
@@ -40,12 +40,16 @@ export function mount(ctx) {
   const rateRange = el('input', { type: 'range', id: `${uid}-sense-log`, min: RATE_SLIDER.min, max: RATE_SLIDER.max, step: RATE_SLIDER.step, 'aria-label': 'Body rotation rate, logarithmic slider (|ω_b| from 0.0001 to 100 rad/s)' });
   const kRange = el('input', { type: 'range', id: `${uid}-sense-k`, min: 1, max: 30, step: 1, value: 5 });
   const kOut = el('output', { for: kRange.id, text: '5' });
+  const scaleSel = el('select', { id: `${uid}-sense-scale` },
+    el('option', { value: 'relative', text: `relative: ${REL_DECADES} decades below this map’s largest D` }),
+    el('option', { value: 'absolute', text: `absolute: D from 10⁻⁶ to 10² on every map` }));
   const field = (label, id, ...inputs) => el('span', { class: 'wl-sense-field' }, el('label', { for: id, rich: label }), ...inputs);
   const controls = el('div', { class: 'wl-sense-controls' },
     field('rotation axis', axis.id, axis),
     field('ω_b (rad/s)', rateNum.id, rateNum),
     el('span', { class: 'wl-sense-field wl-sense-log' }, rateRange),
-    field('sensors K', kRange.id, kRange, kOut));
+    field('sensors K', kRange.id, kRange, kOut),
+    field('colour scale', scaleSel.id, scaleSel));
   const rateHelp = el('p', { class: 'wl-note', id: `${uid}-sense-rate-help`, text: `Rate from ${BODY_RATE.min} to ${BODY_RATE.max} rad/s (the sign turns the rotation around); the slider moves |ω_b| on a log scale. Hawkmoths turn at a few rad/s.` });
   const status = el('p', { class: 'wl-sense-status', 'aria-live': 'polite' });
   const prog = el('progress', { class: 'wl-progress', max: 1, value: 0, hidden: true, 'aria-label': 'sensing analysis progress' });
@@ -182,6 +186,7 @@ export function mount(ctx) {
     store.set({ body_rate: rateOfSlider(Number(rateRange.value), s.body_rate < 0 ? -1 : 1) });
   });
   kRange.addEventListener('input', () => { kOut.textContent = kRange.value; drawMap(); drawCurve(); });
+  scaleSel.addEventListener('change', () => drawMap());
   cancel.addEventListener('click', () => { if (running) engine.cancel(running.id); });
 
   /** Asks for a new analysis SENSE_DELAY_MS after the last change (one at a time). */
@@ -290,7 +295,7 @@ export function mount(ctx) {
     const f = frame;
     const px = (x) => (x - f.x0) * kk;
     const py = (y) => (f.y1 - y) * kk;
-    const scale = have ? mapScale(result.d_best) : null;
+    const scale = have ? mapScale(result.d_best, /** @type {any} */ (scaleSel.value)) : null;
     const tri = fe.triangles;
     for (let t = 0; t + 2 < tri.length; t += 3) {
       const a = tri[t], b = tri[t + 1], c = tri[t + 2];
@@ -344,7 +349,9 @@ export function mount(ctx) {
     if (!have) {
       legendText.textContent = running ? 'computing…' : '';
     } else if (scale && scale.max > 0) {
-      legendText.textContent = `detectability D, log scale from 10^${MAP_LO} (and below) to 10^${MAP_HI} (and above); largest on this wing ${fmt(scale.max, 3)}. D = 1: the rotation’s strain as large as the flapping variation plus noise.`;
+      legendText.replaceChildren(rich(scale.mode === 'absolute'
+        ? `detectability D, log scale from 10^{${MAP_LO}} (and below) to 10^{${MAP_HI}} (and above); largest on this wing ${fmt(scale.max, 3)}. D = 1: the rotation’s strain as large as the flapping variation plus noise.`
+        : `detectability D, log scale from ${fmt(10 ** scale.lo, 3)} (and below) to ${fmt(scale.max, 3)}, the largest on this wing (brightest: where rotation shows up best). D = 1: the rotation’s strain as large as the flapping variation plus noise.`));
     } else {
       legendText.textContent = 'D = 0 everywhere: no rotation, so nothing to detect';
     }
