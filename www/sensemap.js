@@ -41,7 +41,7 @@ export const MAP_LO = -6;
 export const MAP_HI = 2;
 
 /** Decades below the map's largest D that the relative scale shows. */
-export const REL_DECADES = 2;
+export const REL_DECADES = 1;
 
 /**
  * The colour scale of a detectability map: `t(v)` is the position in [0, 1] of a value on a log

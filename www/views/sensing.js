@@ -156,6 +156,8 @@ export function mount(ctx) {
   /** @type {{ x0: number, y1: number, k: number } | null} */
   let frame = null;
   let drawn = 0;
+  /** The wing and mode set the map was last drawn for. */
+  let lastFe = null, lastModes = '';
 
   const feOf = (s) => (s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null);
   /** What an analysis depends on: the body rate, the point and the config (kinematics, modes, run). */
@@ -352,6 +354,7 @@ export function mount(ctx) {
       legendText.replaceChildren(rich(scale.mode === 'absolute'
         ? `detectability D, log scale from 10^{${MAP_LO}} (and below) to 10^{${MAP_HI}} (and above); largest on this wing ${fmt(scale.max, 3)}. D = 1: the rotation’s strain as large as the flapping variation plus noise.`
         : `detectability D, log scale from ${fmt(10 ** scale.lo, 3)} (and below) to ${fmt(scale.max, 3)}, the largest on this wing (brightest: where rotation shows up best). D = 1: the rotation’s strain as large as the flapping variation plus noise.`));
+      legendText.append(rich(' The colours rate each point alone, by energy; the numbered sensors are chosen by how well their time series tell a rotation from a slightly different stroke, which favours points whose Δε has a different time course from the flapping strain, not only the brightest ones.'));
     } else {
       legendText.textContent = 'D = 0 everywhere: no rotation, so nothing to detect';
     }
@@ -466,9 +469,12 @@ export function mount(ctx) {
   const unsubs = [
     store.subscribe(['body_rate', 'body_axis'], () => { syncControls(); schedule(); }),
     store.subscribe(['result', 'fe', 'modes'], () => {
+      // a new live result alone (a slider moved) only asks for a new analysis; the map is
+      // redrawn when that arrives, or now when the wing or the mode set changed
       const s = store.get();
-      if (result && resultFor && resultFor.fe !== feOf(s)) point = null;
-      drawMap();
+      const fe = feOf(s);
+      if (result && resultFor && resultFor.fe !== fe) point = null;
+      if (fe !== lastFe || s.modes !== lastModes) { lastFe = fe; lastModes = s.modes; drawMap(); }
       schedule();
     }),
   ];
