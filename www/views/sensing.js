@@ -41,7 +41,7 @@ export function mount(ctx) {
   const kRange = el('input', { type: 'range', id: `${uid}-sense-k`, min: 1, max: 30, step: 1, value: 5 });
   const kOut = el('output', { for: kRange.id, text: '5' });
   const scaleSel = el('select', { id: `${uid}-sense-scale` },
-    el('option', { value: 'relative', text: `relative: ${REL_DECADES} decades below this map’s largest D` }),
+    el('option', { value: 'relative', text: `relative: ${REL_DECADES} decade${REL_DECADES === 1 ? '' : 's'} below this map’s largest D` }),
     el('option', { value: 'absolute', text: `absolute: D from 10⁻⁶ to 10² on every map` }));
   const field = (label, id, ...inputs) => el('span', { class: 'wl-sense-field' }, el('label', { for: id, rich: label }), ...inputs);
   const controls = el('div', { class: 'wl-sense-controls' },
