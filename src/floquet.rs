@@ -13,7 +13,7 @@
 //!   with period 1 / |f_eff − n_b f_d|. The paper's mode-1 Coriolis beat uses n_b = 2.
 
 pub use crate::solve::propagator::multipliers;
-use crate::solve::propagator::period_map;
+use crate::solve::propagator::period_map_with;
 use crate::solve::LinearOde;
 use nalgebra::{Complex, Matrix2, Vector2};
 use serde::{Deserialize, Serialize};
@@ -111,7 +111,7 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
     let tp = ode.homogeneous_period();
     let fp = 1.0 / tp;
     // Full-period monodromy.
-    let mt = monodromy.unwrap_or_else(|| period_map(ode, t, &[]).monodromy);
+    let mt = monodromy.unwrap_or_else(|| period_map_with(ode, t, &[], false).monodromy);
     let lt = multipliers(&mt);
     let max_modulus = lt[0].norm().max(lt[1].norm());
 
@@ -122,7 +122,7 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
         .next_power_of_two()
         .clamp(32, 1 << 16);
     let phases: Vec<f64> = (0..nh).map(|j| j as f64 * tp / nh as f64).collect();
-    let pm = period_map(ode, tp, &phases);
+    let pm = period_map_with(ode, tp, &phases, false);
     let mp = pm.monodromy.map(|x| C64::new(x, 0.0));
     let lp = multipliers(&pm.monodromy);
     let lam = if lp[0].im.abs() > 0.0 {
@@ -151,11 +151,17 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
         .collect();
     let half = nh as i64 / 2;
     let mut best = (0i64, -1.0f64);
+    // Twiddles e^(−2πi m / nh), m = 0..nh (exact index arithmetic, one table).
+    let tw: Vec<C64> = (0..nh)
+        .map(|m| {
+            let th = -2.0 * PI * m as f64 / nh as f64;
+            C64::new(th.cos(), th.sin())
+        })
+        .collect();
     for n in (-half + 1)..=half {
         let mut c = C64::new(0.0, 0.0);
         for (j, yj) in y.iter().enumerate() {
-            let th = -2.0 * PI * (n * j as i64).rem_euclid(nh as i64) as f64 / nh as f64;
-            c += yj * C64::new(th.cos(), th.sin());
+            c += yj * tw[(n * j as i64).rem_euclid(nh as i64) as usize];
         }
         let mag = c.norm();
         // Ties (degenerate multipliers) resolve to the smaller |frequency|... either is valid.
@@ -195,23 +201,22 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
 }
 
 /// Estimated cost of the Floquet analysis ([`analyse`], as `resonance::floquet_for` runs it)
-/// for `mode` under the kinematics `kin`, in Gauss–Legendre step equivalents: the full period (plus its error-estimate rerun at twice the step), the
-/// homogeneous period sampled at the checkpoints the Floquet solution needs (plus its rerun),
-/// and the DFT over those checkpoints (counted as 1/25 step per term). It mirrors the step-size
-/// rule of [`crate::solve::propagator`] and the sampling rule of [`analyse`].
+/// for `mode` under the kinematics `kin`, in Gauss–Legendre step equivalents: the full period
+/// (plus, in a simulation, its error-estimate rerun at twice the step), the homogeneous period
+/// sampled at the checkpoints the Floquet solution needs, and the DFT over those checkpoints
+/// (a table lookup and a complex multiply per term, counted as 1/250 step). It follows the
+/// step-size rule of [`crate::solve::propagator::steps_per_span`] and the sampling rule of
+/// [`analyse`].
 pub fn analysis_cost(kin: &crate::kinematics::Compiled, mode: &crate::model::Mode) -> f64 {
-    use crate::solve::propagator::{MAX_OMEGA_H, MIN_STEPS_PER_PERIOD};
+    use crate::solve::propagator::steps_per_span;
     let ode = crate::solve::ModalOde::new(kin, mode);
     let s = ode.freq_scale().max(1e-300);
     let t = ode.period();
     let tp = ode.homogeneous_period();
-    let steps = |span: f64| {
-        let hmax = (MAX_OMEGA_H / s).min(span / MIN_STEPS_PER_PERIOD as f64);
-        (span / hmax).ceil()
-    };
+    let steps = |span: f64| steps_per_span(s, span);
     let ratio = s * tp / (2.0 * PI);
     let nh = ((4.0 * ratio + 16.0).min(1.0e9) as usize)
         .next_power_of_two()
         .clamp(32, 1 << 16) as f64;
-    1.5 * steps(t) + nh + 1.5 * steps(tp) + nh * nh / 25.0
+    1.5 * steps(t) + nh + steps(tp) + nh * nh / 250.0
 }

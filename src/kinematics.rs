@@ -242,10 +242,24 @@ pub struct Series {
 impl Series {
     /// Value, first and second time derivative at time `t` for angular flap frequency `wd` (rad/s).
     pub fn eval(&self, t: f64, wd: f64) -> (f64, f64, f64) {
+        self.eval_cached(t, wd, &mut [f64::NAN; 3])
+    }
+
+    /// [`Series::eval`] with a one-entry cache `[ω_n t, sin, cos]` of the last sine and cosine
+    /// computed: series that share a harmonic (the paper's three sines all have n = 1) then
+    /// evaluate it once. The same arithmetic, so the same bits.
+    pub fn eval_cached(&self, t: f64, wd: f64, cache: &mut [f64; 3]) -> (f64, f64, f64) {
         let (mut v, mut d, mut dd) = (self.mean, 0.0, 0.0);
         for term in &self.terms {
             let w = term.n * wd;
-            let (sn, cs) = (w * t).sin_cos();
+            let arg = w * t;
+            let (sn, cs) = if arg.to_bits() == cache[0].to_bits() {
+                (cache[1], cache[2])
+            } else {
+                let sc = arg.sin_cos();
+                *cache = [arg, sc.0, sc.1];
+                sc
+            };
             v += term.s * sn + term.c * cs;
             d += w * (term.s * cs - term.c * sn);
             dd -= w * w * (term.s * sn + term.c * cs);
@@ -428,6 +442,22 @@ impl RateState {
         ]
     }
 
+    /// [`RateState::omega`] and [`RateState::omega_dot`] together (one sine and cosine of β
+    /// shared; the same arithmetic, so the same bits).
+    pub fn omega_and_dot(&self) -> ([f64; 3], [f64; 3]) {
+        if self.body_rate != [0.0; 3] || self.body_rate_dot != [0.0; 3] {
+            return (self.omega(), self.omega_dot());
+        }
+        let (sb, cb) = self.beta.sin_cos();
+        let w = [self.alpha_dot * cb, self.beta_dot, self.alpha_dot * sb];
+        let wd = [
+            self.alpha_ddot * cb - self.alpha_dot * self.beta_dot * sb,
+            self.beta_ddot,
+            self.alpha_ddot * sb + self.alpha_dot * self.beta_dot * cb,
+        ];
+        (w, wd)
+    }
+
     /// Rᵀ v: a body-axes vector in wing-frame (I″, J″, K″) components, R = R_x(α)·R_y(β).
     pub fn to_wing_frame(&self, v: [f64; 3]) -> [f64; 3] {
         let (sa, ca) = self.alpha.sin_cos();
@@ -539,9 +569,10 @@ pub struct Compiled {
 impl Compiled {
     /// Angles and rates at time `t` (s).
     pub fn state(&self, t: f64) -> RateState {
-        let (alpha, alpha_dot, alpha_ddot) = self.alpha.eval(t, self.wd);
-        let (beta, beta_dot, beta_ddot) = self.beta.eval(t, self.wd);
-        let (gamma, gamma_dot, gamma_ddot) = self.gamma.eval(t, self.wd);
+        let mut cache = [f64::NAN; 3];
+        let (alpha, alpha_dot, alpha_ddot) = self.alpha.eval_cached(t, self.wd, &mut cache);
+        let (beta, beta_dot, beta_ddot) = self.beta.eval_cached(t, self.wd, &mut cache);
+        let (gamma, gamma_dot, gamma_ddot) = self.gamma.eval_cached(t, self.wd, &mut cache);
         let (mut body_rate, mut body_rate_dot) = ([0.0; 3], [0.0; 3]);
         if let Some(b) = &self.body_rate {
             for i in 0..3 {

@@ -186,8 +186,7 @@ pub fn stiffness_force(coefficient: &[f64], q: &[f64]) -> Vec<f64> {
 
 /// The Eq. 13 coefficients of `mode` for the rotation state `s` (angles and rates at one instant).
 pub fn coefficients(mode: &Mode, s: &RateState) -> Coefficients {
-    let om = s.omega();
-    let omd = s.omega_dot();
+    let (om, omd) = s.omega_and_dot();
     let a = mode.a;
     let b = mode.b();
     let g = s.gamma;
@@ -199,7 +198,8 @@ pub fn coefficients(mode: &Mode, s: &RateState) -> Coefficients {
     // Coriolis: − 2 γ̇ Ω · a.
     let coriolis = -2.0 * s.gamma_dot * (om[0] * a[0] + om[1] * a[1]);
     Coefficients {
-        stiffness: w * w - stiffness_coefficient(s),
+        // stiffness_coefficient(s), from the Ω already computed (same arithmetic).
+        stiffness: w * w - (om[0] * om[0] + om[1] * om[1]),
         euler,
         centrifugal,
         coriolis,

@@ -7,7 +7,7 @@ use crate::error::{Result, WingbeatError};
 use crate::floquet::{self, FloquetResult};
 use crate::kinematics::Compiled;
 use crate::model::{stiffness_coefficient, Mode};
-use crate::solve::propagator::{propagate, Propagated};
+use crate::solve::propagator::{propagate, propagate_responses, Propagated};
 use crate::solve::{LinearOde, ModalOde};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -202,7 +202,7 @@ fn check_cost_with(cfg: &SimConfig, kin: &Compiled, cap: f64, who: &str) -> Resu
                 "driven by {what} over one flap period of {} s (`kinematics.flap_freq_hz` = {} Hz); about {} steps per period",
                 num(1.0 / fd),
                 num(fd),
-                num((ode.period() * ode.freq_scale() / crate::solve::propagator::MAX_OMEGA_H).ceil())
+                num(crate::solve::propagator::steps_per_span(ode.freq_scale(), ode.period()))
             )
         }
         None => "driven by the output samples".into(),
@@ -215,6 +215,22 @@ fn check_cost_with(cfg: &SimConfig, kin: &Compiled, cap: f64, who: &str) -> Resu
     })
 }
 
+/// The sample rate nearest `sample_rate_hz` (Hz) with a whole number of samples per flap
+/// period: P·f_d with P = max(1, round(rate / f_d)). Opt-in: a front end that wants the exactly
+/// periodic output grid (every flap period sampled at the same phases) sets
+/// `cfg.sample_rate_hz` to it; [`simulate`] never changes the rate by itself. Non-finite or
+/// non-positive inputs come back unchanged. Example: 25.5 Hz at 10 kHz → 9996 Hz (392 samples
+/// per period).
+pub fn commensurate_sample_rate(flap_freq_hz: f64, sample_rate_hz: f64) -> f64 {
+    if !(flap_freq_hz.is_finite() && sample_rate_hz.is_finite())
+        || flap_freq_hz <= 0.0
+        || sample_rate_hz <= 0.0
+    {
+        return sample_rate_hz;
+    }
+    (sample_rate_hz / flap_freq_hz).round().max(1.0) * flap_freq_hz
+}
+
 /// Runs a simulation.
 pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     cfg.validate()?;
@@ -225,27 +241,25 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     let t: Vec<f64> = (0..n).map(|i| i as f64 * dt).collect();
     let mut modes = Vec::with_capacity(cfg.modes.len());
     for (k, mode) in cfg.modes.iter().enumerate() {
-        let mut p = propagate_mode(&kin, mode, dt, n)?;
-        let [q0, v0] = cfg.ic(k);
-        let free: Vec<f64> = (0..n)
-            .map(|i| q0 * p.h_q[0][i] + v0 * p.h_q[1][i])
-            .collect();
-        let total: Vec<f64> = (0..n).map(|i| p.q[ModalOde::TOTAL][i] + free[i]).collect();
-        let qdot_total: Vec<f64> = (0..n)
-            .map(|i| p.qdot[ModalOde::TOTAL][i] + q0 * p.h_qdot[0][i] + v0 * p.h_qdot[1][i])
-            .collect();
+        let ode = ModalOde::new(&kin, mode);
+        let mut p = propagate_responses(&ode, dt, n, ModalOde::TOTAL, cfg.ic(k))?;
         let q = Responses {
             euler: std::mem::take(&mut p.q[ModalOde::EULER]),
             centrifugal: std::mem::take(&mut p.q[ModalOde::CENTRIFUGAL]),
             coriolis: std::mem::take(&mut p.q[ModalOde::CORIOLIS]),
-            free,
-            total,
+            free: p.free,
+            total: p.total,
         };
+        let qdot_total = p.qdot_total;
         let contribution_percent = contributions(&q.euler, &q.centrifugal, &q.coriolis, &q.total);
         let floquet = floquet_with(&kin, mode, Some(p.monodromy));
         let accuracy = Accuracy {
-            method: "one-period Gauss–Legendre (order 8) propagator + exact period recursion"
-                .into(),
+            method: if p.dense {
+                "one-period Gauss–Legendre (order 8) propagator, dense output (Chebyshev degree 8) at the sample phases + exact period recursion"
+            } else {
+                "one-period Gauss–Legendre (order 8) propagator + exact period recursion"
+            }
+            .into(),
             period_error_estimate: p.period_error,
             periods: p.periods,
             run_error_bound: p.period_error * p.periods as f64,

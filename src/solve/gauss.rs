@@ -74,55 +74,139 @@ pub struct StepMap {
     pub p: [Vector2<f64>; MAX_FORCES],
 }
 
-const N: usize = 2 * STAGES;
+/// Columns of the reduced stage system: the two homogeneous starts and the forcings.
 const COLS: usize = 2 + MAX_FORCES;
 
 /// Computes the step map of `ode` from `t0` over `h` with the tableau `tab`.
+///
+/// The 8×8 stage system is reduced to 4×4 before it is solved: with stage values
+/// Y_i = (Q_i, V_i) = x0 + h Σ_j a_ij K_j and K_j = A_j Y_j + F_j, the q-rows give
+/// Q = q0·1 + h a V, and substituting them into the v-rows leaves
+///
+/// ```text
+/// (I + h c a + h² a K a) V = v0·1 − q0·h a k + h a f_j,     K = diag(k_1..k_4),
+/// ```
+///
+/// one small system with six right-hand sides (the starts e1, e2 and the forcings), solved by
+/// Gaussian elimination with partial pivoting. Same method, same order; only the linear algebra
+/// is cheaper.
 pub fn step_map<O: LinearOde + ?Sized>(ode: &O, tab: &Tableau, t0: f64, h: f64) -> StepMap {
     let nf = ode.n_forces();
-    let c = ode.damping();
     let mut ks = [0.0; STAGES];
     let mut fs = [[0.0; MAX_FORCES]; STAGES];
     for i in 0..STAGES {
         ks[i] = ode.eval(t0 + tab.c[i] * h, &mut fs[i][..nf]);
     }
-    // S = I − h (a_ij A_i), stage unknowns K = (K_1, ..., K_4), each K_i = (q̇-stage, q̈-stage).
-    let mut s = SMatrix::<f64, N, N>::identity();
-    let mut rhs = SMatrix::<f64, N, COLS>::zeros();
+    step_map_from(tab, ode.damping(), h, &ks, &fs, nf)
+}
+
+/// [`step_map`] from the stiffness `ks` and forcings `fs` already evaluated at the four stage
+/// times t0 + c_i h (so a caller can share one evaluation of the kinematics between modes).
+pub fn step_map_from(
+    tab: &Tableau,
+    c: f64,
+    h: f64,
+    ks: &[f64; STAGES],
+    fs: &[[f64; MAX_FORCES]; STAGES],
+    nf: usize,
+) -> StepMap {
+    let a = &tab.a;
+    // M = I + h c a + h² a K a, and the right-hand sides.
+    let mut m = [[0.0; STAGES]; STAGES];
     for i in 0..STAGES {
         for j in 0..STAGES {
-            let w = h * tab.a[i][j];
-            // A_i = [[0, 1], [−k_i, −c]]
-            s[(2 * i, 2 * j + 1)] -= w;
-            s[(2 * i + 1, 2 * j)] += w * ks[i];
-            s[(2 * i + 1, 2 * j + 1)] += w * c;
+            let mut aka = 0.0;
+            for l in 0..STAGES {
+                aka += a[i][l] * ks[l] * a[l][j];
+            }
+            m[i][j] = h * c * a[i][j] + h * h * aka;
         }
-        // Homogeneous columns: A_i x for x = e1, e2.
-        rhs[(2 * i, 1)] = 1.0;
-        rhs[(2 * i + 1, 0)] = -ks[i];
-        rhs[(2 * i + 1, 1)] = -c;
+        m[i][i] += 1.0;
+    }
+    let mut rhs = [[0.0; COLS]; STAGES];
+    for i in 0..STAGES {
+        let mut ak = 0.0;
+        for l in 0..STAGES {
+            ak += a[i][l] * ks[l];
+        }
+        rhs[i][0] = -h * ak; // start (q0, v0) = (1, 0)
+        rhs[i][1] = 1.0; // start (0, 1)
         for j in 0..nf {
-            rhs[(2 * i + 1, 2 + j)] = fs[i][j];
+            let mut af = 0.0;
+            for l in 0..STAGES {
+                af += a[i][l] * fs[l][j];
+            }
+            rhs[i][2 + j] = h * af;
         }
     }
-    let k = s
-        .lu()
-        .solve(&rhs)
-        .unwrap_or_else(|| SMatrix::<f64, N, COLS>::from_element(f64::NAN));
+    let ncol = 2 + nf;
+    // Gaussian elimination with partial pivoting.
+    for col in 0..STAGES {
+        let mut piv = col;
+        for r in col + 1..STAGES {
+            if m[r][col].abs() > m[piv][col].abs() {
+                piv = r;
+            }
+        }
+        if piv != col {
+            m.swap(piv, col);
+            rhs.swap(piv, col);
+        }
+        let d = m[col][col];
+        if d == 0.0 || !d.is_finite() {
+            return StepMap {
+                r: Matrix2::from_element(f64::NAN),
+                p: [Vector2::from_element(f64::NAN); MAX_FORCES],
+            };
+        }
+        let inv = 1.0 / d;
+        for r in col + 1..STAGES {
+            let f = m[r][col] * inv;
+            if f != 0.0 {
+                for k in col + 1..STAGES {
+                    m[r][k] -= f * m[col][k];
+                }
+                for k in 0..ncol {
+                    rhs[r][k] -= f * rhs[col][k];
+                }
+            }
+        }
+    }
+    for col in (0..STAGES).rev() {
+        let inv = 1.0 / m[col][col];
+        for k in 0..ncol {
+            let mut s = rhs[col][k];
+            for j in col + 1..STAGES {
+                s -= m[col][j] * rhs[j][k];
+            }
+            rhs[col][k] = s * inv;
+        }
+    }
+    // rhs now holds V for each column. x1 = x0 + h Σ b_i (V_i, −k_i Q_i − c V_i + f_i) with
+    // Q = q0 + h a V.
+    let column = |k: usize, q0: f64, v0: f64, fcol: Option<usize>| -> Vector2<f64> {
+        let mut dq = 0.0;
+        let mut dv = 0.0;
+        for i in 0..STAGES {
+            let mut av = 0.0;
+            for j in 0..STAGES {
+                av += a[i][j] * rhs[j][k];
+            }
+            let qi = q0 + h * av;
+            let fi = fcol.map_or(0.0, |j| fs[i][j]);
+            dq += tab.b[i] * rhs[i][k];
+            dv += tab.b[i] * (fi - ks[i] * qi - c * rhs[i][k]);
+        }
+        Vector2::new(q0 + h * dq, v0 + h * dv)
+    };
+    let c0 = column(0, 1.0, 0.0, None);
+    let c1 = column(1, 0.0, 1.0, None);
     let mut out = StepMap {
-        r: Matrix2::identity(),
+        r: Matrix2::new(c0[0], c1[0], c0[1], c1[1]),
         p: [Vector2::zeros(); MAX_FORCES],
     };
-    for i in 0..STAGES {
-        let w = h * tab.b[i];
-        out.r[(0, 0)] += w * k[(2 * i, 0)];
-        out.r[(0, 1)] += w * k[(2 * i, 1)];
-        out.r[(1, 0)] += w * k[(2 * i + 1, 0)];
-        out.r[(1, 1)] += w * k[(2 * i + 1, 1)];
-        for j in 0..nf {
-            out.p[j][0] += w * k[(2 * i, 2 + j)];
-            out.p[j][1] += w * k[(2 * i + 1, 2 + j)];
-        }
+    for j in 0..nf {
+        out.p[j] = column(2 + j, 0.0, 0.0, Some(j));
     }
     out
 }

@@ -18,8 +18,37 @@ use nalgebra::{Complex, Matrix2, Vector2};
 
 /// Fewest Gauss–Legendre steps per period, whatever the frequencies.
 pub const MIN_STEPS_PER_PERIOD: usize = 32;
-/// Largest ω·h used (ω from [`LinearOde::freq_scale`]).
+/// Largest ω·h ever used (ω from [`LinearOde::freq_scale`]); the accuracy rule of
+/// [`max_step`] usually asks for less.
 pub const MAX_OMEGA_H: f64 = 0.25;
+/// The one-span relative error the step-size rule aims at (issue 12: ≤ 1e-11 for every mode;
+/// the rule aims a factor 10 lower because its error constant is an asymptotic estimate).
+pub const TARGET_PERIOD_ERROR: f64 = 1.0e-12;
+/// Error constant of the 4-stage Gauss–Legendre method on an oscillation e^{iωt}: one step's
+/// relative error is about `GAUSS_ERROR_CONSTANT · (ωh)⁹` (the leading term of the Padé
+/// (4,4) approximant's error, (4!)⁴ / ((8!)² · 9) ≈ 2.3e-5; measured 2.1e-5 on a harmonic
+/// oscillator).
+pub const GAUSS_ERROR_CONSTANT: f64 = 2.3e-5;
+
+/// ω·h for an oscillation of angular frequency `w` (rad/s) integrated over `span` (s) so that
+/// the accumulated error over the span, (ω·span / ωh) steps × C (ωh)⁹ = C ω·span (ωh)⁸, stays at
+/// [`TARGET_PERIOD_ERROR`]; never above [`MAX_OMEGA_H`].
+pub fn omega_h_for(w: f64, span: f64) -> f64 {
+    let wt = (w * span).max(1.0);
+    (TARGET_PERIOD_ERROR / (GAUSS_ERROR_CONSTANT * wt))
+        .powf(0.125)
+        .min(MAX_OMEGA_H)
+}
+
+/// Number of Gauss–Legendre steps [`period_map`] takes over `span` (s) when the largest
+/// relevant angular frequency is `freq_scale` (rad/s): the accuracy rule of [`omega_h_for`],
+/// at least [`MIN_STEPS_PER_PERIOD`]. Cost estimates elsewhere (`floquet::analysis_cost`,
+/// `simulate::run_cost`) call this, so they follow the rule.
+pub fn steps_per_span(freq_scale: f64, span: f64) -> f64 {
+    let w = freq_scale.max(1e-300);
+    let hmax = (omega_h_for(w, span) / w).min(span / MIN_STEPS_PER_PERIOD as f64);
+    (span / hmax).ceil()
+}
 
 /// One period's transition data at a set of checkpoint phases.
 #[derive(Debug, Clone)]
@@ -36,66 +65,66 @@ pub struct PeriodMap {
     pub monodromy: Matrix2<f64>,
     /// p_j(span).
     pub part_end: [Vector2<f64>; MAX_FORCES],
-    /// Estimated relative error of one span's integration (difference to a run with twice the
-    /// step, which bounds the error of the finer run from above).
+    /// Estimated relative error of one span's integration: the difference to a run with twice
+    /// the largest step, divided by 2⁸ − 1 (Richardson: the method has order 8, so that is the
+    /// error of a run at the largest step; the run itself never steps longer). Zero when the
+    /// estimate was not asked for.
     pub error_estimate: f64,
 }
 
-/// The step size bound used for `ode`.
+/// The step size bound used for `ode` over `span`: ω·h from [`omega_h_for`] with ω the
+/// equation's [`LinearOde::freq_scale`], and at least [`MIN_STEPS_PER_PERIOD`] steps.
 pub fn max_step<O: LinearOde + ?Sized>(ode: &O, span: f64) -> f64 {
-    let by_freq = MAX_OMEGA_H / ode.freq_scale().max(1e-300);
-    by_freq.min(span / MIN_STEPS_PER_PERIOD as f64)
+    span / steps_per_span(ode.freq_scale(), span)
 }
 
 /// Integrates `ode` over [0, span], recording Φ and p_j at each of `phases` (ascending, in
 /// [0, span)). Each interval between checkpoints is split into equal steps no longer than
-/// [`max_step`].
+/// [`max_step`]. Also estimates the error (see [`PeriodMap::error_estimate`]).
 pub fn period_map<O: LinearOde + ?Sized>(ode: &O, span: f64, phases: &[f64]) -> PeriodMap {
-    let tab = Tableau::new();
-    let nf = ode.n_forces();
-    let hmax = max_step(ode, span);
-    let mut phi = Matrix2::identity();
-    let mut part = [Vector2::zeros(); MAX_FORCES];
-    let mut out_phi = Vec::with_capacity(phases.len());
-    let mut out_part = Vec::with_capacity(phases.len());
-    let mut t = 0.0;
-    let advance =
-        |from: f64, to: f64, phi: &mut Matrix2<f64>, part: &mut [Vector2<f64>; MAX_FORCES]| {
-            let len = to - from;
-            if len <= 0.0 {
-                return;
-            }
-            let n = (len / hmax).ceil().max(1.0) as usize;
-            let h = len / n as f64;
-            for s in 0..n {
-                let m = step_map(ode, &tab, from + s as f64 * h, h);
-                *phi = m.r * *phi;
-                for j in 0..nf {
-                    part[j] = m.r * part[j] + m.p[j];
-                }
-            }
-        };
-    for &tau in phases {
-        advance(t, tau, &mut phi, &mut part);
-        t = t.max(tau);
-        out_phi.push(phi);
-        out_part.push(part);
-    }
-    advance(t, span, &mut phi, &mut part);
+    period_map_with(ode, span, phases, true)
+}
 
-    // Error estimate: the same span with uniform steps of twice the bound.
-    let mut phi_c = Matrix2::identity();
-    let mut part_c = [Vector2::zeros(); MAX_FORCES];
-    let nc = (span / (2.0 * hmax)).ceil().max(1.0) as usize;
-    let hc = span / nc as f64;
-    for s in 0..nc {
-        let m = step_map(ode, &tab, s as f64 * hc, hc);
-        phi_c = m.r * phi_c;
+/// Advances Φ and p_j from `from` to `to` in equal steps no longer than `hmax`.
+fn advance<O: LinearOde + ?Sized>(
+    ode: &O,
+    tab: &Tableau,
+    hmax: f64,
+    from: f64,
+    to: f64,
+    phi: &mut Matrix2<f64>,
+    part: &mut [Vector2<f64>; MAX_FORCES],
+) {
+    let nf = ode.n_forces();
+    let len = to - from;
+    if len <= 0.0 {
+        return;
+    }
+    let n = (len / hmax).ceil().max(1.0) as usize;
+    let h = len / n as f64;
+    for s in 0..n {
+        let m = step_map(ode, tab, from + s as f64 * h, h);
+        *phi = m.r * *phi;
         for j in 0..nf {
-            part_c[j] = m.r * part_c[j] + m.p[j];
+            part[j] = m.r * part[j] + m.p[j];
         }
     }
-    // Compare in a scaled state norm: q and q̇/ω have the same units.
+}
+
+/// The error estimate of a span integrated to `phi`, `part`: the same span with uniform steps
+/// of twice `hmax`, compared in a scaled state norm (q and q̇/ω), divided by 2⁸ − 1.
+fn error_estimate<O: LinearOde + ?Sized>(
+    ode: &O,
+    tab: &Tableau,
+    span: f64,
+    hmax: f64,
+    phi: &Matrix2<f64>,
+    part: &[Vector2<f64>; MAX_FORCES],
+) -> f64 {
+    let nf = ode.n_forces();
+    let mut phi_c = Matrix2::identity();
+    let mut part_c = [Vector2::zeros(); MAX_FORCES];
+    advance(ode, tab, 2.0 * hmax, 0.0, span, &mut phi_c, &mut part_c);
     let w = ode.freq_scale().max(1e-300);
     let scale = Matrix2::new(1.0, 0.0, 0.0, 1.0 / w);
     let unscale = Matrix2::new(1.0, 0.0, 0.0, w);
@@ -107,6 +136,36 @@ pub fn period_map<O: LinearOde + ?Sized>(ode: &O, span: f64, phases: &[f64]) -> 
             err = err.max((scale * (part[j] - part_c[j])).norm() / pref);
         }
     }
+    err / 255.0
+}
+
+/// [`period_map`], with the error estimate (one more integration of the span at twice the
+/// step) only when `estimate` is true.
+pub fn period_map_with<O: LinearOde + ?Sized>(
+    ode: &O,
+    span: f64,
+    phases: &[f64],
+    estimate: bool,
+) -> PeriodMap {
+    let tab = Tableau::new();
+    let hmax = max_step(ode, span);
+    let mut phi = Matrix2::identity();
+    let mut part = [Vector2::zeros(); MAX_FORCES];
+    let mut out_phi = Vec::with_capacity(phases.len());
+    let mut out_part = Vec::with_capacity(phases.len());
+    let mut t = 0.0;
+    for &tau in phases {
+        advance(ode, &tab, hmax, t, tau, &mut phi, &mut part);
+        t = t.max(tau);
+        out_phi.push(phi);
+        out_part.push(part);
+    }
+    advance(ode, &tab, hmax, t, span, &mut phi, &mut part);
+    let error_estimate = if estimate {
+        error_estimate(ode, &tab, span, hmax, &phi, &part)
+    } else {
+        0.0
+    };
     PeriodMap {
         span,
         phases: phases.to_vec(),
@@ -114,7 +173,131 @@ pub fn period_map<O: LinearOde + ?Sized>(ode: &O, span: f64, phases: &[f64]) -> 
         part: out_part,
         monodromy: phi,
         part_end: part,
-        error_estimate: err,
+        error_estimate,
+    }
+}
+
+/// Degree of the dense-output interpolant ([`DenseMap`]).
+pub const DENSE_DEGREE: usize = 8;
+/// Largest ω·H of one dense-output interval (ω the equation's [`LinearOde::freq_scale`]).
+/// Chebyshev interpolation of degree m of e^{iωt} over an interval of length H errs by about
+/// 4 (ωH/4)^(m+1) / (m+1)!: 1.5e-13 at ωH = 0.5, m = 8.
+pub const DENSE_OMEGA_H: f64 = 0.5;
+
+/// Φ(τ) and p_j(τ) at any phase of one span, from their values at the Chebyshev–Lobatto points
+/// of equal intervals (integrated as in [`period_map`]) and barycentric interpolation of
+/// degree [`DENSE_DEGREE`] between them. Used when a run needs many more distinct phases
+/// than steps (an output grid incommensurate with the period), where one Gauss–Legendre step
+/// per sample phase would cost far more than the integration itself.
+#[derive(Debug, Clone)]
+pub struct DenseMap {
+    /// Interval length H, s.
+    pub h: f64,
+    /// Number of intervals.
+    pub intervals: usize,
+    /// Chebyshev–Lobatto nodes on [0, 1].
+    nodes: [f64; DENSE_DEGREE + 1],
+    /// Barycentric weights.
+    weights: [f64; DENSE_DEGREE + 1],
+    /// Per interval and node: Φ row-major (4) then p_j (q, q̇) for j < MAX_FORCES.
+    values: Vec<[[f64; 4 + 2 * MAX_FORCES]; DENSE_DEGREE + 1]>,
+    /// Φ(span).
+    pub monodromy: Matrix2<f64>,
+    /// p_j(span).
+    pub part_end: [Vector2<f64>; MAX_FORCES],
+    /// As [`PeriodMap::error_estimate`].
+    pub error_estimate: f64,
+}
+
+impl DenseMap {
+    /// Integrates `ode` over [0, span] and records the interpolation data.
+    pub fn new<O: LinearOde + ?Sized>(ode: &O, span: f64, estimate: bool) -> Self {
+        let tab = Tableau::new();
+        let hmax = max_step(ode, span);
+        let w = ode.freq_scale().max(1e-300);
+        let intervals = ((span * w / DENSE_OMEGA_H).ceil().max(1.0) as usize).max(1);
+        let h = span / intervals as f64;
+        let m = DENSE_DEGREE;
+        let nodes: [f64; DENSE_DEGREE + 1] = std::array::from_fn(|l| {
+            0.5 * (1.0 - (std::f64::consts::PI * l as f64 / m as f64).cos())
+        });
+        let weights: [f64; DENSE_DEGREE + 1] = std::array::from_fn(|l| {
+            let s = if l % 2 == 0 { 1.0 } else { -1.0 };
+            if l == 0 || l == m {
+                0.5 * s
+            } else {
+                s
+            }
+        });
+        let mut phi = Matrix2::identity();
+        let mut part = [Vector2::zeros(); MAX_FORCES];
+        let mut values = Vec::with_capacity(intervals);
+        let mut t = 0.0;
+        for k in 0..intervals {
+            let t0 = k as f64 * h;
+            let mut row = [[0.0; 4 + 2 * MAX_FORCES]; DENSE_DEGREE + 1];
+            for (l, node) in nodes.iter().enumerate() {
+                let tau = if l == m && k + 1 == intervals {
+                    span
+                } else {
+                    t0 + node * h
+                };
+                advance(ode, &tab, hmax, t, tau, &mut phi, &mut part);
+                t = t.max(tau);
+                let v = &mut row[l];
+                v[0] = phi[(0, 0)];
+                v[1] = phi[(0, 1)];
+                v[2] = phi[(1, 0)];
+                v[3] = phi[(1, 1)];
+                for j in 0..MAX_FORCES {
+                    v[4 + 2 * j] = part[j][0];
+                    v[5 + 2 * j] = part[j][1];
+                }
+            }
+            values.push(row);
+        }
+        let error_estimate = if estimate {
+            error_estimate(ode, &tab, span, hmax, &phi, &part)
+        } else {
+            0.0
+        };
+        DenseMap {
+            h,
+            intervals,
+            nodes,
+            weights,
+            values,
+            monodromy: phi,
+            part_end: part,
+            error_estimate,
+        }
+    }
+
+    /// Φ row-major and p_j (q, q̇) at phase `tau` ∈ [0, span].
+    pub fn eval(&self, tau: f64) -> [f64; 4 + 2 * MAX_FORCES] {
+        let x = tau / self.h;
+        let k = (x.floor().max(0.0) as usize).min(self.intervals - 1);
+        let x = x - k as f64;
+        let vals = &self.values[k];
+        let mut lw = [0.0; DENSE_DEGREE + 1];
+        let mut sum = 0.0;
+        for l in 0..=DENSE_DEGREE {
+            let d = x - self.nodes[l];
+            if d == 0.0 {
+                return vals[l];
+            }
+            lw[l] = self.weights[l] / d;
+            sum += lw[l];
+        }
+        let inv = 1.0 / sum;
+        let mut out = [0.0; 4 + 2 * MAX_FORCES];
+        for (l, v) in vals.iter().enumerate() {
+            let wl = lw[l] * inv;
+            for (o, vi) in out.iter_mut().zip(v) {
+                *o += wl * vi;
+            }
+        }
+        out
     }
 }
 
@@ -264,6 +447,248 @@ pub fn propagate<O: LinearOde + ?Sized>(ode: &O, dt: f64, n: usize) -> Result<Pr
         monodromy: map.monodromy,
         period_error: map.error_estimate,
         periods,
+    })
+}
+
+/// What [`propagate_responses`] returns: the series a simulation outputs, nothing more.
+#[derive(Debug, Clone)]
+pub struct Responses {
+    /// q_j(t_i) of each forcing column from a zero initial state; the column `total` asked for
+    /// is left empty (its response is in [`Responses::total`]).
+    pub q: Vec<Vec<f64>>,
+    /// Free response to the initial state (zeros when it is zero).
+    pub free: Vec<f64>,
+    /// Response of the `total` column plus the free response.
+    pub total: Vec<f64>,
+    /// q̇ of [`Responses::total`].
+    pub qdot_total: Vec<f64>,
+    /// Monodromy over one period T.
+    pub monodromy: Matrix2<f64>,
+    /// Estimated relative error of the one-period integration.
+    pub period_error: f64,
+    /// Number of periods spanned.
+    pub periods: u64,
+    /// Whether the phases came from the dense interpolant ([`DenseMap`]) rather than from
+    /// checkpoints on the sample grid.
+    pub dense: bool,
+}
+
+/// Samples per period, when the output step `dt` divides `period` to 1e-12 relative.
+pub fn commensurate_samples(dt: f64, period: f64) -> Option<usize> {
+    let pr = (period / dt).round();
+    (pr >= 1.0 && (pr * dt - period).abs() <= 1e-12 * period).then_some(pr as usize)
+}
+
+/// Propagates `ode` to the samples t_i = i·dt, i = 0..n, and forms what a simulation outputs:
+/// every forcing column's response from rest, and for the column `total` the response with the
+/// initial state `ic` = (q0, q̇0) added, its q̇, and the free response alone. The same numbers
+/// as [`propagate`] (the same arithmetic per sample), without the series nobody reads.
+///
+/// Phases: on a grid commensurate with the period (P samples per period) one period is
+/// integrated with a checkpoint at each of the P phases, unless P is so large that the dense
+/// interpolant ([`DenseMap`]) needs fewer steps; on an incommensurate grid (a flap frequency
+/// that does not divide the sample rate) every sample phase comes from the dense interpolant,
+/// so the cost no longer grows with the number of samples per period.
+pub fn propagate_responses<O: LinearOde + ?Sized>(
+    ode: &O,
+    dt: f64,
+    n: usize,
+    total: usize,
+    ic: [f64; 2],
+) -> Result<Responses> {
+    let period = ode.period();
+    let nf = ode.n_forces();
+    let hmax = max_step(ode, period);
+    let w = ode.freq_scale().max(1e-300);
+    let dense_steps = {
+        let intervals = (period * w / DENSE_OMEGA_H).ceil().max(1.0);
+        let per = (period / intervals / hmax).ceil().max(1.0) * DENSE_DEGREE as f64;
+        intervals * per
+    };
+    let pp = commensurate_samples(dt, period);
+    // Per phase: Φ row-major and p_j (q, q̇).
+    let (table, dense, monodromy, part_end, period_error): (
+        Vec<[f64; 4 + 2 * MAX_FORCES]>,
+        Option<DenseMap>,
+        _,
+        _,
+        _,
+    ) = match pp {
+        Some(p) if (p.min(n.max(1)) as f64) <= dense_steps.max(4.0 * period / hmax) => {
+            let count = p.min(n.max(1));
+            let phases: Vec<f64> = (0..count).map(|j| j as f64 * dt).collect();
+            let map = period_map_with(ode, period, &phases, true);
+            let table = map
+                .phi
+                .iter()
+                .zip(&map.part)
+                .map(|(m, pt)| {
+                    let mut v = [0.0; 4 + 2 * MAX_FORCES];
+                    v[..4].copy_from_slice(&[m[(0, 0)], m[(0, 1)], m[(1, 0)], m[(1, 1)]]);
+                    for j in 0..MAX_FORCES {
+                        v[4 + 2 * j] = pt[j][0];
+                        v[5 + 2 * j] = pt[j][1];
+                    }
+                    v
+                })
+                .collect();
+            (table, None, map.monodromy, map.part_end, map.error_estimate)
+        }
+        Some(p) => {
+            let d = DenseMap::new(ode, period, true);
+            let count = p.min(n.max(1));
+            let table = (0..count).map(|j| d.eval(j as f64 * dt)).collect();
+            let (m, pe, e) = (d.monodromy, d.part_end, d.error_estimate);
+            (table, None, m, pe, e)
+        }
+        None => {
+            let d = DenseMap::new(ode, period, true);
+            let (m, pe, e) = (d.monodromy, d.part_end, d.error_estimate);
+            (Vec::new(), Some(d), m, pe, e)
+        }
+    };
+    let used_dense = dense.is_some() || pp.is_some_and(|p| table.len() < p.min(n.max(1)));
+    let with_ic = ic != [0.0, 0.0];
+    let [q0, v0] = ic;
+    let mut q: Vec<Vec<f64>> = (0..nf)
+        .map(|j| {
+            if j == total {
+                Vec::new()
+            } else {
+                Vec::with_capacity(n)
+            }
+        })
+        .collect();
+    let mut tot = Vec::with_capacity(n);
+    let mut qdot_tot = Vec::with_capacity(n);
+    let mut free = if with_ic {
+        Vec::with_capacity(n)
+    } else {
+        vec![0.0; n]
+    };
+    // Writes the samples whose phases are `vals` (Φ row-major, p_j) in period `k`, from the
+    // states at the start of that period and M^k. Column by column, so each loop is tight.
+    let mut write = |vals: &mut dyn Iterator<Item = &[f64; 4 + 2 * MAX_FORCES]>,
+                     x_arr: &[[f64; 2]; MAX_FORCES],
+                     m: &[f64; 4]| {
+        let start = tot.len();
+        for v in vals {
+            let x = &x_arr[total];
+            let ph = &v[..4];
+            let qj = ph[0] * x[0] + ph[1] * x[1] + v[4 + 2 * total];
+            let qd = ph[2] * x[0] + ph[3] * x[1] + v[5 + 2 * total];
+            if with_ic {
+                let hq0 = ph[0] * m[0] + ph[1] * m[2];
+                let hq1 = ph[0] * m[1] + ph[1] * m[3];
+                let hqd0 = ph[2] * m[0] + ph[3] * m[2];
+                let hqd1 = ph[2] * m[1] + ph[3] * m[3];
+                let fr = q0 * hq0 + v0 * hq1;
+                free.push(fr);
+                tot.push(qj + fr);
+                qdot_tot.push(qd + q0 * hqd0 + v0 * hqd1);
+            } else {
+                tot.push(qj);
+                qdot_tot.push(qd);
+            }
+        }
+        start..tot.len()
+    };
+    let mut cur: u64 = 0;
+    let mut xs = [Vector2::zeros(); MAX_FORCES];
+    let mut mn = Matrix2::identity();
+    let mut periods = 0;
+    let step_to =
+        |k: u64, cur: &mut u64, xs: &mut [Vector2<f64>; MAX_FORCES], mn: &mut Matrix2<f64>| {
+            while *cur < k {
+                for j in 0..nf {
+                    xs[j] = monodromy * xs[j] + part_end[j];
+                }
+                *mn = monodromy * *mn;
+                *cur += 1;
+            }
+        };
+    let arrs = |xs: &[Vector2<f64>; MAX_FORCES], mn: &Matrix2<f64>| {
+        (
+            std::array::from_fn::<[f64; 2], MAX_FORCES, _>(|j| [xs[j][0], xs[j][1]]),
+            [mn[(0, 0)], mn[(0, 1)], mn[(1, 0)], mn[(1, 1)]],
+        )
+    };
+    let mut vals: Vec<[f64; 4 + 2 * MAX_FORCES]> = Vec::new();
+    if let Some(d) = &dense {
+        // Incommensurate grid: each sample's own phase; periods advance monotonically.
+        let mut i = 0;
+        while i < n {
+            let t = i as f64 * dt;
+            let k = (t / period).floor();
+            step_to(k as u64, &mut cur, &mut xs, &mut mn);
+            let (x_arr, m) = arrs(&xs, &mn);
+            // Samples of this period, their phase tables, then the columns.
+            vals.clear();
+            while i < n {
+                let t = i as f64 * dt;
+                let kk = (t / period).floor();
+                if kk != k {
+                    break;
+                }
+                vals.push(d.eval((t - kk * period).clamp(0.0, period)));
+                i += 1;
+            }
+            write(&mut vals.iter(), &x_arr, &m);
+            for j in (0..nf).filter(|&j| j != total) {
+                let x = x_arr[j];
+                q[j].extend(
+                    vals.iter()
+                        .map(|v| v[0] * x[0] + v[1] * x[1] + v[4 + 2 * j]),
+                );
+            }
+            periods = k as u64 + 1;
+        }
+    } else if let Some(p) = pp {
+        let mut i = 0;
+        let mut k = 0u64;
+        while i < n {
+            step_to(k, &mut cur, &mut xs, &mut mn);
+            let (x_arr, m) = arrs(&xs, &mn);
+            let cnt = (n - i).min(p);
+            write(&mut table[..cnt].iter(), &x_arr, &m);
+            for j in (0..nf).filter(|&j| j != total) {
+                let x = x_arr[j];
+                q[j].extend(
+                    table[..cnt]
+                        .iter()
+                        .map(|v| v[0] * x[0] + v[1] * x[1] + v[4 + 2 * j]),
+                );
+            }
+            periods = k + 1;
+            i += p;
+            k += 1;
+        }
+    }
+    let mn_arr = arrs(&xs, &mn).1;
+    let finite = q
+        .iter()
+        .chain([&tot, &qdot_tot])
+        .all(|v| v.iter().all(|x| x.is_finite()))
+        && mn_arr.iter().all(|x| x.is_finite());
+    if !finite {
+        let ev = multipliers(&monodromy);
+        let m = ev.iter().map(|z| z.norm()).fold(0.0, f64::max);
+        return Err(WingbeatError::NonFinite {
+            what: "modal response".into(),
+            detail: format!(
+                "the response overflowed: the equation is parametrically unstable (largest Floquet multiplier |λ| = {m:.6e} per period); shorten the duration or reduce the rotation rates"
+            ),
+        });
+    }
+    Ok(Responses {
+        q,
+        free,
+        total: tot,
+        qdot_total: qdot_tot,
+        monodromy,
+        period_error,
+        periods,
+        dense: used_dense,
     })
 }
 
