@@ -32,8 +32,13 @@ fn vs_main(v: VertexIn) -> VertexOut {
 @fragment
 fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
     var c = pow(in.colour.rgb, vec3<f32>(2.2));
+    var a = in.colour.a;
     if (u.params.w < 0.5) {
         c = pow(c, vec3<f32>(1.0 / 2.2));
+        // A non-sRGB target blends in encoded values: over the dark background, alpha^(1/2.2)
+        // gives about what blending the linear colour with `alpha` gives on an sRGB target,
+        // so the translucent stroke plane looks the same on both kinds of canvas.
+        a = pow(a, 1.0 / 2.2);
     }
-    return vec4<f32>(c, in.colour.a);
+    return vec4<f32>(c, a);
 }

@@ -507,3 +507,63 @@ fn node_field_colours_the_wing() {
     assert!(note.contains("1 non-finite"), "{note}");
     assert_eq!(off.renderer().node_field()[3], 0.0);
 }
+
+/// The animation's per-frame path (`update_pose`: pose and q only, the uniform block alone)
+/// draws exactly what a full `update` with the same pose and the held colouring draws, and
+/// sanitises non-finite values to the all-zero pose as `update` does.
+#[test]
+fn pose_only_update_matches_full_update() {
+    let mesh = WingMesh::synthetic(12, 5);
+    let Some(mut off) = offscreen(96, 72, &mesh) else {
+        return;
+    };
+    let base = FrameParams {
+        alpha: 0.1,
+        beta: -0.2,
+        gamma: 0.0,
+        q: vec![1.5e-5, -1.5e-5],
+        exaggeration: 50.0,
+        colour: ColourMode::Magnitude,
+        strain_range: Some(1e-3),
+        ..FrameParams::default()
+    };
+    let moved = FrameParams {
+        alpha: 0.45,
+        beta: -0.3,
+        gamma: 0.1,
+        q: vec![-1.0e-5, 2.0e-5],
+        ..base.clone()
+    };
+    let (full, _) = off.render(&moved).unwrap();
+    off.render(&base).unwrap();
+    let changed = off
+        .renderer()
+        .update_pose(0.45, -0.3, 0.1, &[-1.0e-5, 2.0e-5]);
+    assert_eq!(changed, 0);
+    let fast = off.render_current().unwrap();
+    assert_eq!(fast, full, "setPose draws what set_frame draws");
+    assert_ne!(
+        fast,
+        off.render(&base).unwrap().0,
+        "the pose changed the picture"
+    );
+
+    let zero = FrameParams {
+        alpha: 0.0,
+        beta: 0.0,
+        gamma: 0.0,
+        q: vec![0.0, 0.0],
+        ..base.clone()
+    };
+    let (z, _) = off.render(&zero).unwrap();
+    off.render(&base).unwrap();
+    let changed = off
+        .renderer()
+        .update_pose(f64::NAN, f64::INFINITY, 0.0, &[f64::NAN, 0.0]);
+    assert_eq!(changed, 3);
+    assert_eq!(
+        off.render_current().unwrap(),
+        z,
+        "non-finite values draw as 0"
+    );
+}

@@ -227,6 +227,8 @@ pub struct Renderer {
     size: (u32, u32),
     mesh: WingMesh,
     frame: CleanFrame,
+    /// 1 / the legend limit of the last [`Renderer::update`] (0 for plain colouring).
+    inv_range: f32,
     lost: Arc<AtomicBool>,
     error: Arc<Mutex<Option<String>>>,
     warnings: Vec<String>,
@@ -560,6 +562,7 @@ impl Renderer {
             camera: OrbitCamera::for_span(span),
             mesh,
             frame,
+            inv_range: 0.0,
             lost,
             error,
             warnings,
@@ -689,7 +692,49 @@ impl Renderer {
         } else {
             legend_for(f.colour, &field, f.strain_range)
         };
-        let inv_range = legend.as_ref().map_or(0.0, |l| 1.0 / l.max);
+        self.inv_range = legend.as_ref().map_or(0.0, |l| 1.0 / l.max);
+        self.write_uniforms();
+        FrameReport {
+            legend,
+            max_deflection_m: self.mesh.max_deflection(q),
+            exaggeration: f.exaggeration,
+            warnings,
+        }
+    }
+
+    /// The animation's per-frame path: only the pose (α, β, γ, rad) and the true modal
+    /// coordinates `q` change; everything else (colouring, legend limit, exaggeration, scene)
+    /// stays as the last [`Renderer::update`] set it. Writes the 272-byte uniform block and
+    /// nothing else: no legend, no per-node work, no allocation. Values are sanitised as in
+    /// [`FrameParams::sanitise`] (non-finite → 0, |value| > 10⁶ clamped); returns the number of
+    /// values that had to be changed (the full `update` names them). Modes beyond
+    /// [`MAX_MODES`] are ignored.
+    pub fn update_pose(&mut self, alpha: f64, beta: f64, gamma: f64, q: &[f64]) -> usize {
+        let mut changed = 0usize;
+        let mut c = |v: f64| -> f32 {
+            if !v.is_finite() {
+                changed += 1;
+                0.0
+            } else if v.abs() > scene::MAX_ABS_VALUE {
+                changed += 1;
+                v.clamp(-scene::MAX_ABS_VALUE, scene::MAX_ABS_VALUE) as f32
+            } else {
+                v as f32
+            }
+        };
+        self.frame.alpha = c(alpha);
+        self.frame.beta = c(beta);
+        self.frame.gamma = c(gamma);
+        for k in 0..MAX_MODES {
+            self.frame.q[k] = q.get(k).map_or(0.0, |&v| c(v));
+        }
+        self.write_uniforms();
+        changed
+    }
+
+    /// Builds the uniform block from the current frame, camera and size and writes it.
+    fn write_uniforms(&mut self) {
+        let f = self.frame;
         let (w, h) = self.size;
         let aspect = if h > 0 { w as f32 / h as f32 } else { 1.0 };
         let eye = self.camera.eye();
@@ -714,18 +759,12 @@ impl Renderer {
             params: [
                 f.exaggeration,
                 f.colour.index() as f32,
-                inv_range,
+                self.inv_range,
                 if self.format.is_srgb() { 1.0 } else { 0.0 },
             ],
         };
         self.queue
             .write_buffer(&self.uniform_buf, 0, bytemuck::bytes_of(&u));
-        FrameReport {
-            legend,
-            max_deflection_m: self.mesh.max_deflection(q),
-            exaggeration: f.exaggeration,
-            warnings,
-        }
     }
 
     /// Records and submits the frame into `target` (which must have the size given to

@@ -190,6 +190,12 @@ impl Offscreen {
     /// Renders one frame and reads it back.
     pub fn render(&mut self, frame: &FrameParams) -> Result<(RgbaImage, FrameReport), RenderError> {
         let report = self.renderer.update(frame);
+        Ok((self.render_current()?, report))
+    }
+
+    /// Renders what the renderer holds now (after [`Renderer::update`] or
+    /// [`Renderer::update_pose`]) and reads it back.
+    pub fn render_current(&mut self) -> Result<RgbaImage, RenderError> {
         self.renderer.render(&self.view)?;
         let mut enc = self
             .device
@@ -243,14 +249,11 @@ impl Offscreen {
             }
         }
         self.readback.unmap();
-        Ok((
-            RgbaImage {
-                width: self.width,
-                height: self.height,
-                pixels,
-            },
-            report,
-        ))
+        Ok(RgbaImage {
+            width: self.width,
+            height: self.height,
+            pixels,
+        })
     }
 }
 

@@ -7,6 +7,7 @@
 //! view.backend();                       // "webgpu" or "webgl2"
 //! const legend = view.set_frame(alpha, beta, gamma, new Float64Array(q), exaggeration, 4);
 //! view.render();
+//! view.setPose(alpha, beta, gamma, q); view.render();   // animation: pose and q only
 //! view.orbit(dx, dy); view.zoom(1.1); view.resize(w, h);
 //! view.setCamera(tx, ty, tz, yaw, pitch, distance);   // or, from the current direction:
 //! const cam = view.fitPoints(new Float32Array(xyz), 0.04); // [tx, ty, tz, yaw, pitch, distance]
@@ -142,11 +143,16 @@ impl WingView {
             other => format!("{other:?}").to_lowercase(),
         };
         let caps = surface.get_capabilities(&adapter);
+        // WebGL2: a plain-UNORM canvas format, so wgpu presents with a framebuffer blit; an
+        // sRGB one makes it present through an extra full-canvas shader pass (its sRGB
+        // conversion), which a software rasteriser pays for in fill every frame. The shaders
+        // gamma-encode themselves on a non-sRGB target (as on WebGPU's canvas formats).
+        let want_srgb = backend != "webgl2";
         let format = caps
             .formats
             .iter()
             .copied()
-            .find(wgpu::TextureFormat::is_srgb)
+            .find(|f| f.is_srgb() == want_srgb)
             .or_else(|| caps.formats.first().copied())
             .ok_or_else(|| {
                 js_err(RenderError::Surface(
@@ -216,10 +222,26 @@ impl WingView {
         self.frame.alpha = alpha;
         self.frame.beta = beta;
         self.frame.gamma = gamma;
-        self.frame.q = q.to_vec();
+        self.frame.q.clear();
+        self.frame.q.extend_from_slice(q);
         self.frame.exaggeration = exaggeration;
         self.frame.colour = colour;
         Ok(self.update())
+    }
+
+    /// The animation's per-frame call: sets only the pose (radians) and the modal coordinates
+    /// (true scale), keeping the colouring, exaggeration and legend of the last `set_frame`,
+    /// and uploads the 272-byte uniform block: no legend, no per-node work, no result object.
+    /// Non-finite values are drawn as 0 and |values| > 10⁶ clamped; returns how many were
+    /// changed (call `set_frame` for their names). Call `render()` after it.
+    #[wasm_bindgen(js_name = setPose)]
+    pub fn set_pose(&mut self, alpha: f64, beta: f64, gamma: f64, q: &[f64]) -> u32 {
+        self.frame.alpha = alpha;
+        self.frame.beta = beta;
+        self.frame.gamma = gamma;
+        self.frame.q.clear();
+        self.frame.q.extend_from_slice(q);
+        self.renderer.update_pose(alpha, beta, gamma, q) as u32
     }
 
     /// Fixes the legend limit (colours span ±limit), or `null`/non-positive for automatic.
