@@ -116,3 +116,33 @@ export function sensorsFor(pd, p = 0.9) {
   for (let i = 0; i < pd.length; i++) if (pd[i] >= p) return i + 1;
   return null;
 }
+
+/**
+ * Groups sensor markers that would overlap on screen: each marker (screen px, in rank order)
+ * joins the first group whose first marker lies within `radius` px, else starts a new group.
+ * Returns the groups with their first marker's position and their ranks in order, so a label
+ * such as "1,2,4" can stand for sensors that sit a fraction of a millimetre apart.
+ * @param {{ x: number, y: number, rank: number }[]} markers
+ * @param {number} radius
+ * @returns {{ x: number, y: number, ranks: number[] }[]}
+ */
+export function clusterMarkers(markers, radius) {
+  /** @type {{ x: number, y: number, ranks: number[] }[]} */
+  const groups = [];
+  for (const m of markers) {
+    const g = groups.find((q) => Math.hypot(q.x - m.x, q.y - m.y) < radius);
+    if (g) g.ranks.push(m.rank);
+    else groups.push({ x: m.x, y: m.y, ranks: [m.rank] });
+  }
+  return groups;
+}
+
+/**
+ * A group's label: the ranks joined by commas, at most `max` of them, then "+n".
+ * @param {number[]} ranks
+ * @param {number} [max]
+ */
+export function groupLabel(ranks, max = 4) {
+  const shown = ranks.slice(0, max).join(',');
+  return ranks.length > max ? `${shown} +${ranks.length - max}` : shown;
+}

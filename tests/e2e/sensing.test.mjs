@@ -79,6 +79,9 @@ test('the panel opens from a URL; the rate changes the numbers and the map; zero
   assert.ok(a.n > 10000, `samples ${a.n}`);
   assert.ok(a.delta_peak > 0 && a.d_best.some((v) => v > 0), `peak ${a.delta_peak}`);
   assert.equal(a.point_source, 'best_sensor');
+  // the K = 5 best sensors are all on the map (nearby ones share a label)
+  const groups = await page.evaluate(() => JSON.parse(__wl.q('.wl-sense-canvas').dataset.markers));
+  assert.deepEqual(groups.flat().sort((p, q) => p - q), [1, 2, 3, 4, 5]);
   // the absolute colour scale: the same D, the same colour on every map
   await page.evaluate(() => { const s = __wl.q('.wl-sense-controls select[id$="sense-scale"]'); s.value = 'absolute'; s.dispatchEvent(new Event('change', { bubbles: true })); });
   // timing (logged, not asserted: a benchmark, not a test): five more analyses at other rates

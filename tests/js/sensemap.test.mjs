@@ -2,7 +2,7 @@
 // parameters (www/state.js BODY_RATE, BODY_AXIS). Run: node --test tests/js/sensemap.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor } from '../../www/sensemap.js';
+import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor, clusterMarkers, groupLabel } from '../../www/sensemap.js';
 import { BODY_RATE, BODY_AXIS, bodyRateVector, parseQuery, toQuery, defaults, paramsOf, PANELS, expectation } from '../../www/state.js';
 
 test('rate slider: log10 |ω_b| both ways, sign kept, zero at the left end, range kept', () => {
@@ -102,4 +102,16 @@ test('body rate URL parameters: parsed in range, written only when not the defau
   assert.equal(parseQuery('?body_rate=100').state.body_rate, 100);
   assert.equal(parseQuery('?body_rate=0').state.body_rate, 0);
   assert.match(expectation('body_rate'), /\[-100, 100\] rad\/s/);
+});
+
+test('markers closer than the radius share a label; every rank appears once', () => {
+  const m = [{ x: 0, y: 0, rank: 1 }, { x: 5, y: 0, rank: 2 }, { x: 100, y: 0, rank: 3 }, { x: 0, y: 9, rank: 4 }, { x: 103, y: 3, rank: 5 }];
+  const g = clusterMarkers(m, 12);
+  assert.deepEqual(g.map((q) => q.ranks), [[1, 2, 4], [3, 5]]);
+  assert.deepEqual([g[0].x, g[0].y, g[1].x], [0, 0, 100]);
+  assert.deepEqual(g.flatMap((q) => q.ranks).sort((a, b) => a - b), [1, 2, 3, 4, 5]);
+  assert.equal(clusterMarkers([], 10).length, 0);
+  assert.equal(groupLabel([1, 2, 4]), '1,2,4');
+  assert.equal(groupLabel([1, 2, 3, 4, 5, 6]), '1,2,3,4 +2');
+  assert.equal(groupLabel([7]), '7');
 });

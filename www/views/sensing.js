@@ -12,7 +12,7 @@ import { fmt, errorText } from '../format.js';
 import { decimate } from '../decimate.js';
 import { linePlot, color, log10OrNull, viridis } from '../plot.js';
 import { BODY_RATE, BODY_AXIS, BODY_AXIS_LABELS, bodyRateVector, toQuery } from '../state.js';
-import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor } from '../sensemap.js';
+import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor, clusterMarkers, groupLabel } from '../sensemap.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
 
@@ -320,16 +320,33 @@ export function mount(ctx) {
     c2.font = 'bold 10px system-ui, sans-serif';
     c2.textAlign = 'center';
     c2.textBaseline = 'middle';
-    for (let j = K - 1; j >= 0; j--) {
-      const sn = result.sensors[j];
-      const cx = px(sn.x_mm), cy = py(sn.y_mm);
-      c2.fillStyle = '#fff';
-      c2.strokeStyle = '#111';
-      c2.lineWidth = 1.5;
-      c2.beginPath(); c2.arc(cx, cy, 8, 0, 2 * Math.PI); c2.fill(); c2.stroke();
+    // sensors closer than a marker's size share one label ("1,2,4"), drawn at the first one;
+    // each sensor's exact place is a small dark dot
+    const marks = result && have ? result.sensors.slice(0, K).map((sn) => ({ x: px(sn.x_mm), y: py(sn.y_mm), rank: sn.rank })) : [];
+    for (const m of marks) {
       c2.fillStyle = '#111';
-      c2.fillText(String(j + 1), cx, cy + 0.5);
+      c2.beginPath(); c2.arc(m.x, m.y, 2, 0, 2 * Math.PI); c2.fill();
     }
+    const groups = clusterMarkers(marks, 16);
+    for (let j = groups.length - 1; j >= 0; j--) {
+      const g = groups[j];
+      const label = groupLabel(g.ranks);
+      const w = Math.max(16, c2.measureText(label).width + 8);
+      // the label sits up and to the right of the first sensor of its group, joined by a line
+      const lx = g.x + 6 + w / 2, ly = g.y - 12;
+      c2.strokeStyle = '#111';
+      c2.lineWidth = 1;
+      c2.beginPath(); c2.moveTo(g.x, g.y); c2.lineTo(lx - w / 2, ly); c2.stroke();
+      c2.fillStyle = '#fff';
+      c2.lineWidth = 1.5;
+      c2.beginPath();
+      c2.roundRect(lx - w / 2, ly - 8, w, 16, 8);
+      c2.fill();
+      c2.stroke();
+      c2.fillStyle = '#111';
+      c2.fillText(label, lx, ly + 0.5);
+    }
+    canvas.dataset.markers = JSON.stringify(groups.map((g) => g.ranks));
     // the picked point: a ring with a dark and a light edge
     const p = point || (have ? result.point_mm : null);
     if (p) {
