@@ -24,6 +24,24 @@ const TAU = 2 * Math.PI;
  */
 
 /**
+ * The canvas backing store (device pixels) for a `cssW` × `cssH` CSS-pixel canvas: CSS size ×
+ * devicePixelRatio, the ratio capped at `maxDpr` and the area at `maxPixels` (the scale shrinks
+ * uniformly, keeping the aspect). Each side at least 1 px.
+ * @param {number} cssW
+ * @param {number} cssH
+ * @param {number} dpr
+ * @param {number} maxDpr
+ * @param {number} maxPixels
+ * @returns {{ width: number, height: number, scale: number }}
+ */
+export function backingSize(cssW, cssH, dpr, maxDpr, maxPixels) {
+  let scale = Math.min(maxDpr, Number.isFinite(dpr) && dpr > 0 ? dpr : 1);
+  const area = cssW * cssH * scale * scale;
+  if (area > maxPixels) scale = Math.sqrt(maxPixels / (cssW * cssH));
+  return { width: Math.max(1, Math.floor(cssW * scale)), height: Math.max(1, Math.floor(cssH * scale)), scale };
+}
+
+/**
  * The renderer's initial camera for a wing of span `span` (m): OrbitCamera::for_span.
  * @param {number} span
  * @returns {Camera}

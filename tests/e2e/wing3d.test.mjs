@@ -5,7 +5,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { setup, openPage, waitRenders, pngStats, OUT, CHROMIUM, ARGS } from './helpers.mjs';
+import { setup, openPage, waitRenders, pngStats, labHelpers, OUT, CHROMIUM, ARGS } from './helpers.mjs';
 
 const WEBGPU_FLAGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader', '--use-angle=swiftshader'];
 
@@ -36,8 +36,31 @@ async function canvasStats(page, name) {
   return { ...st, buf };
 }
 
+/**
+ * Counts, in window.__readbacks, every read-back a page script makes: WebGL readPixels, 2-D
+ * getImageData, and toBlob / toDataURL of a canvas (the 3-D view must make none while it plays;
+ * the browser's own compositor copy of the canvas is not a page call and not counted).
+ */
+async function readbacks(page) {
+  await page.addInitScript(() => {
+    const w = /** @type {any} */ (window);
+    w.__readbacks = [];
+    const wrap = (proto, name) => {
+      if (!proto || !proto[name]) return;
+      const orig = proto[name];
+      proto[name] = function (...args) { w.__readbacks.push(name); return orig.apply(this, args); };
+    };
+    wrap(globalThis.WebGL2RenderingContext?.prototype, 'readPixels');
+    wrap(globalThis.WebGLRenderingContext?.prototype, 'readPixels');
+    wrap(globalThis.CanvasRenderingContext2D?.prototype, 'getImageData');
+    wrap(globalThis.HTMLCanvasElement?.prototype, 'toBlob');
+    wrap(globalThis.HTMLCanvasElement?.prototype, 'toDataURL');
+  });
+}
+
 test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url);
+  await readbacks(page);
   await page.goto(env.url);
   await waitRenders(page, 1);
   const ds = await ready3d(page);
@@ -75,12 +98,84 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   assert.ok(t > 0.02, `time advanced: ${t}`);
   assert.ok(Math.abs((await page.evaluate(() => document.querySelector('wing-lab').timeCursor)) - t) < 2e-4);
 
+  // The backing store is the canvas's CSS size × devicePixelRatio (1 here): nothing hidden
+  // larger is drawn and scaled down.
+  const bs = await page.evaluate(() => { const c = __wl.q('canvas.wl-w3-canvas'); return { w: c.width, h: c.height, cw: c.clientWidth, ch: c.clientHeight, backing: __wl.q('[data-wing3d]').dataset.backing }; });
+  assert.ok(Math.abs(bs.w - bs.cw) <= 1 && Math.abs(bs.h - bs.ch) <= 1, JSON.stringify(bs));
+  assert.equal(bs.backing, `${bs.w}x${bs.h}`);
+
+  // A played second reads nothing back from the canvas: no readPixels, getImageData or toBlob
+  // on the 3-D canvas (counted by wrapping them before the page loads, see readbacks()).
+  const rb0 = await page.evaluate(() => window.__readbacks.slice());
+  const f2 = await frames(page);
+  await page.click('.wl-w3-play');
+  await page.waitForTimeout(1000);
+  await page.click('.wl-w3-play');
+  assert.ok((await frames(page)) > f2 + 3, 'it played');
+  assert.deepEqual(await page.evaluate(() => window.__readbacks.slice()), rb0, 'no read-back while playing');
+
   // Orbit by keyboard on the focused canvas redraws.
   const f1 = await frames(page);
   await page.focus('wing-lab [data-wing3d] canvas');
   await page.keyboard.press('ArrowLeft');
   assert.ok((await frames(page)) > f1);
   assert.deepEqual(problems, []);
+  await context.close();
+});
+
+test('play pauses off screen and in a hidden tab, resumes when seen; phone backing store = CSS × DPR', async () => {
+  // A phone at devicePixelRatio 3: the backing store is CSS × 2 (the cap), not × 3.
+  const context = await env.browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 3 });
+  await labHelpers(context);
+  const page = await context.newPage();
+  await page.goto(env.url);
+  await waitRenders(page, 1);
+  const ds = await ready3d(page);
+  assert.equal(ds.state, 'ready');
+  const bs = await page.evaluate(() => { const c = __wl.q('canvas.wl-w3-canvas'); return { w: c.width, h: c.height, cw: c.getBoundingClientRect().width, ch: c.getBoundingClientRect().height, dpr: devicePixelRatio }; });
+  assert.equal(bs.dpr, 3);
+  assert.ok(Math.abs(bs.w - 2 * bs.cw) <= 2 && Math.abs(bs.h - 2 * bs.ch) <= 2, JSON.stringify(bs));
+
+  const loop = () => page.evaluate(() => __wl.q('[data-wing3d]').dataset.loop);
+  await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.setPlaying(true));
+  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'running', null, { timeout: 5000 });
+  const f0 = await frames(page);
+  await page.waitForFunction((n) => Number(__wl.q('[data-wing3d]').dataset.frames) > n + 2, f0, { timeout: 10000 });
+
+  // Scrolled out of sight: the loop stops drawing (the lab stays "playing").
+  await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
+  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'paused-offscreen', null, { timeout: 5000 });
+  const f1 = await frames(page);
+  await page.waitForTimeout(600);
+  assert.equal(await frames(page), f1, 'no frames drawn off screen');
+  assert.equal(await page.evaluate(() => document.querySelector('wing-lab').store.get().playing), true);
+
+  // Back in sight: it plays on.
+  await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'running', null, { timeout: 5000 });
+  await page.waitForFunction((n) => Number(__wl.q('[data-wing3d]').dataset.frames) > n + 2, f1, { timeout: 10000 });
+
+  // A hidden tab (document.hidden and its event, as the browser sends them): paused, then resumed.
+  await page.evaluate(() => {
+    Object.defineProperty(document, 'hidden', { configurable: true, get: () => true });
+    document.dispatchEvent(new Event('visibilitychange'));
+  });
+  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'paused-hidden', null, { timeout: 5000 });
+  const f2 = await frames(page);
+  await page.waitForTimeout(400);
+  assert.equal(await frames(page), f2, 'no frames drawn in a hidden tab');
+  await page.evaluate(() => {
+    Object.defineProperty(document, 'hidden', { configurable: true, get: () => false });
+    document.dispatchEvent(new Event('visibilitychange'));
+  });
+  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'running', null, { timeout: 5000 });
+
+  // Pause: the loop stops and the store holds the instant shown (the responses plot's cursor).
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.setPlaying(false));
+  assert.equal(await loop(), 'stopped');
+  const t = await page.evaluate(() => [document.querySelector('wing-lab').wing3d.t, document.querySelector('wing-lab').timeCursor]);
+  assert.equal(t[0], t[1]);
   await context.close();
 });
 

@@ -205,3 +205,12 @@ test('colourAt: interpolates the renderer’s stops, clamps, and maps NaN to the
   assert.deepEqual(S.colourAt(stops, NaN), [255, 255, 255]);
   assert.deepEqual(S.colourAt([], 0.3), [128, 128, 128]);
 });
+
+test('backingSize: CSS size × devicePixelRatio, the ratio capped, the area capped keeping the aspect', () => {
+  assert.deepEqual(S.backingSize(543, 424, 1, 2, 2e6), { width: 543, height: 424, scale: 1 });
+  assert.deepEqual(S.backingSize(390, 281, 3, 2, 2e6), { width: 780, height: 562, scale: 2 });
+  const big = S.backingSize(1243, 520, 2, 2, 2e6);
+  assert.ok(big.width * big.height <= 2e6 && big.width * big.height > 1.99e6, JSON.stringify(big));
+  assert.ok(Math.abs(big.width / big.height - 1243 / 520) < 0.01);
+  assert.deepEqual(S.backingSize(100, 50, NaN, 2, 2e6), { width: 100, height: 50, scale: 1 });
+});

@@ -33,6 +33,32 @@ const RANGE_SAMPLES = 1000;
 /** Margin of the camera fit, as a fraction of the half-width and half-height (2 % of each side). */
 const FIT_MARGIN = 0.04;
 
+/**
+ * The canvas's backing store: CSS size × devicePixelRatio, the ratio capped at MAX_DPR and the
+ * area at MAX_BACKING_PX device pixels (a software rasteriser pays per pixel, every frame).
+ */
+export const MAX_DPR = 2;
+export const MAX_BACKING_PX = 2_000_000;
+/** While playing, the time goes to the store (responses plot cursor, time slider) at most this often (ms). */
+const PUSH_MS = 100;
+/** While playing, the status, summary, legend and deflection texts change at most this often (ms). */
+const TEXT_MS = 250;
+/**
+ * When the frames delivered while playing come slower than SLOW_FRAME_MS apart on average (a
+ * software rasteriser, a busy machine), the wing is drawn at most every CAPPED_FRAME_MS (≈ 30 fps),
+ * leaving the rest of each 60 Hz period to the sliders and the compositor.
+ */
+const SLOW_FRAME_MS = 24;
+const CAPPED_FRAME_MS = 30;
+
+/**
+ * WebGL2 context attributes for the 3-D canvas when the browser offers no WebGPU adapter (wgpu
+ * then takes this context as it is): no alpha channel, depth or stencil buffer on the canvas
+ * (wgpu draws into its own targets and blits), no MSAA, no preserved drawing buffer (so the
+ * browser never has to keep or read back a copy).
+ */
+export const WEBGL_ATTRIBUTES = { alpha: false, depth: false, stencil: false, antialias: false, preserveDrawingBuffer: false, powerPreference: 'high-performance' };
+
 const COLOURS = [
   ['0', 'none (shading only)'],
   ['1', 'ε_x, spanwise strain'],
@@ -79,11 +105,25 @@ export function mount(ctx) {
   let raf = 0;
   let pending = 0;
   let dirty = false;
+  /** @type {number | null} the instant drawn while playing (s); reaches the store every PUSH_MS */
+  let playT = null;
+  let pushing = false;
+  let lastPush = 0;
+  let lastText = -Infinity;
+  /** sample index of the last frame the play loop drew (-1: something else drew since) */
+  let lastLoopI = -1;
+  /** on screen (IntersectionObserver); the play loop pauses while off screen or the tab is hidden */
+  let onScreen = true;
+  /** @type {IntersectionObserver | null} */
+  let vis = null;
+  /** reused for the per-frame modal coordinates */
+  let qBuf = new Float64Array(0);
+  let legendKey = '';
   /** @type {IntersectionObserver | null} */
   let io = null;
   /** @type {ResizeObserver | null} */
   let ro = null;
-  const box = el('div', { class: 'wl-wing3d-box', 'data-wing3d': '', 'data-state': 'loading' });
+  const box = el('div', { class: 'wl-wing3d-box', 'data-wing3d': '', 'data-state': 'loading', 'data-loop': 'stopped' });
   // One 3-D view per lab and every lab renders into its own shadow root, so the id is unique
   // in its tree (tests and host scripts reach it as lab.shadowRoot.getElementById('wing3d')).
   box.id = 'wing3d';
@@ -108,11 +148,14 @@ export function mount(ctx) {
   const overlay = el('div', { class: 'wl-w3-overlay', 'aria-hidden': 'true' });
   // The strain point (FE wings): a ring at its projected position on the drawn wing.
   const pointMark = el('span', { class: 'wl-w3-point', hidden: true });
+  pointMark.style.willChange = 'transform';
   overlay.append(pointMark);
   const labelEls = LABELS.map(([t, kind, c]) => {
     // Hidden until the first frame places it (else every label sits at the canvas's corner).
     const e = el('span', { class: `wl-w3-label wl-w3-label-${kind}`, text: t, hidden: true });
     e.style.color = c;
+    // moved every frame while playing: its own compositor layer, so a move repaints nothing
+    e.style.willChange = 'transform';
     overlay.append(e);
     return e;
   });
@@ -226,6 +269,7 @@ export function mount(ctx) {
       bindCamera();
     }
     fitCanvas();
+    await prepareContext(canvas);
     try {
       view = await renderer.createFromArrays(canvas, w.nodes, w.triangles, w.shapes, w.strain_nodes);
     } catch (e) {
@@ -269,13 +313,27 @@ export function mount(ctx) {
     obs.observe(box);
   }
 
+  /**
+   * Without a WebGPU adapter wgpu draws with WebGL2 into the canvas's "webgl2" context; made
+   * here first, that context has WEBGL_ATTRIBUTES instead of the defaults (an alpha channel and
+   * a depth buffer nobody uses, each paid per pixel per frame by a software rasteriser).
+   * @param {HTMLCanvasElement} c
+   */
+  async function prepareContext(c) {
+    try {
+      const gpu = /** @type {any} */ (navigator).gpu;
+      if (gpu && (await gpu.requestAdapter())) return;
+    } catch { /* no WebGPU: WebGL2 */ }
+    try { c.getContext('webgl2', WEBGL_ATTRIBUTES); } catch { /* wgpu reports it */ }
+  }
+
   /** Drawing-buffer size from the stage (device pixels). Returns true when it changed. */
   function fitCanvas() {
     const w = Math.max(160, Math.round(stage.clientWidth || 640));
     const aspect = w < 520 ? 0.72 : 0.78;
     const h = Math.max(140, Math.round(Math.min(w * aspect, 520)));
-    const dpr = Math.min(2, globalThis.devicePixelRatio || 1);
-    const W = Math.round(w * dpr), H = Math.round(h * dpr);
+    const { width: W, height: H } = S.backingSize(w, h, globalThis.devicePixelRatio || 1, MAX_DPR, MAX_BACKING_PX);
+    box.dataset.backing = `${W}x${H}`;
     canvas.style.height = `${h}px`;
     if (canvas.width === W && canvas.height === H) return false;
     canvas.width = W;
@@ -438,35 +496,87 @@ export function mount(ctx) {
     return Number(speed.value);
   }
 
-  function describeTime() {
+  function describeTime(/** @type {number} */ tShown = store.get().t3d ?? 0) {
     const s = store.get();
     const r = s.result;
     const fd = r ? r.analysis.sim.flap_freq_hz : 25;
-    const t = s.t3d ?? 0;
+    const t = tShown;
     const f = speedFactor();
     const b = r ? beatInfo(r.analysis, r.k) : null;
-    timeText.textContent = `t = ${t.toFixed(4)} s · flap ${fmt(fd, 3)} Hz shown at ${fmt(fd * f, 3)} Hz` + (b && b.period ? ` · one beat every ${fmt(b.period / f, 3)} s` : '');
+    setText(timeText, `t = ${t.toFixed(4)} s · flap ${fmt(fd, 3)} Hz shown at ${fmt(fd * f, 3)} Hz` + (b && b.period ? ` · one beat every ${fmt(b.period / f, 3)} s` : ''));
     time.setAttribute('aria-valuetext', `${t.toFixed(4)} s`);
   }
 
   function setPlaying(on) {
     playBtn.textContent = on ? 'Pause' : 'Play';
     playBtn.setAttribute('aria-pressed', String(on));
-    if (on && view && !raf) {
-      let prev = performance.now();
-      const step = (now) => {
-        const s = store.get();
-        if (!s.playing) { raf = 0; return; }
-        const dur = Number(time.max) || 0;
-        let t = (s.t3d ?? 0) + ((now - prev) / 1000) * speedFactor();
-        prev = now;
-        if (t > dur) t = 0;
-        store.set({ t3d: t });
-        raf = requestAnimationFrame(step);
-      };
-      raf = requestAnimationFrame(step);
+    if (on) startLoop();
+    else stopLoop('stopped');
+  }
+
+  const loopState = () => (document.hidden ? 'paused-hidden' : 'paused-offscreen');
+
+  /** Ends the play loop; the instant it showed goes to the store (the cursor, the time slider). */
+  function stopLoop(/** @type {string} */ why) {
+    if (raf) cancelAnimationFrame(raf);
+    raf = 0;
+    box.dataset.loop = why;
+    if (playT != null) {
+      const t = playT;
+      playT = null;
+      if (store.get().t3d !== t) store.set({ t3d: t });
     }
   }
+
+  /**
+   * The play loop: per animation frame only the pose and q_k go to the GPU (WingView.setPose,
+   * one uniform block); the texts follow every TEXT_MS and the store every PUSH_MS. It runs
+   * only while the panel is on screen and the tab visible; a frame whose sample is the one
+   * already drawn is skipped, and on a slow machine frames are drawn ≈ 30 per second.
+   */
+  function startLoop() {
+    if (!view || raf || !store.get().playing) return;
+    if (!onScreen || document.hidden) { stopLoop(loopState()); return; }
+    box.dataset.loop = 'running';
+    playT = store.get().t3d ?? 0;
+    let prev = performance.now();
+    let lastDraw = 0;
+    let avg = 0;
+    const step = (/** @type {number} */ now) => {
+      raf = 0;
+      if (!store.get().playing) { stopLoop('stopped'); return; }
+      if (!onScreen || document.hidden) { stopLoop(loopState()); return; }
+      raf = requestAnimationFrame(step);
+      if (avg > SLOW_FRAME_MS && now - lastDraw < CAPPED_FRAME_MS) return;
+      if (lastDraw) avg = avg ? 0.9 * avg + 0.1 * (now - lastDraw) : now - lastDraw;
+      lastDraw = now;
+      const dur = Number(time.max) || 0;
+      let t = (playT ?? 0) + ((now - prev) / 1000) * speedFactor();
+      prev = now;
+      if (t > dur) t = 0;
+      playT = t;
+      draw(t);
+      if (now - lastPush >= PUSH_MS) {
+        lastPush = now;
+        pushing = true;
+        try { store.set({ t3d: t }); } finally { pushing = false; }
+      }
+    };
+    raf = requestAnimationFrame(step);
+  }
+
+  /** Pauses the play loop off screen and in a hidden tab; resumes it when seen again. */
+  function watchVisibility() {
+    if (typeof IntersectionObserver === 'function') {
+      vis = new IntersectionObserver((entries) => {
+        onScreen = entries[entries.length - 1].isIntersecting;
+        if (onScreen) startLoop();
+      });
+      vis.observe(box);
+    }
+    document.addEventListener('visibilitychange', onVisibility);
+  }
+  function onVisibility() { if (!document.hidden) startLoop(); }
 
   function bindCamera() {
     /** @type {number[] | null} */
@@ -517,12 +627,12 @@ export function mount(ctx) {
   }
 
   /** The drawn wing's nodes on screen at the instant shown (CSS pixels), for picking and the point mark. */
-  function screenNodes() {
+  function screenNodes(/** @type {number} */ t = playT ?? store.get().t3d ?? 0) {
     const s = store.get();
     const r = s.result;
     if (!fe || !cam || !r || !r.angles) return null;
     const a = r.analysis;
-    const i = Math.min(a.sim.t.length - 1, Math.max(0, Math.round((s.t3d ?? 0) * a.sim.sample_rate_hz)));
+    const i = Math.min(a.sim.t.length - 1, Math.max(0, Math.round(t * a.sim.sample_rate_hz)));
     const ang = [r.angles.alpha[i], r.angles.beta[i], r.angles.gamma[i]];
     const q = a.sim.modes.map((m) => m.q.total[i]);
     return { ang, q, proj: S.projectNodes(fe.nodes, fe.shapes, q, exaggeration(), ang, cam, canvas.clientWidth, canvas.clientHeight) };
@@ -553,30 +663,43 @@ export function mount(ctx) {
    * flat planform gives barycentric weights, applied to the drawn (cambered, deflected, rotated,
    * projected) nodes. Null when the point is off the wing or behind the eye.
    */
-  function drawnPoint(xmm, ymm) {
+  function drawnPoint(xmm, ymm, /** @type {number | undefined} */ t = undefined) {
     if (!fe) return null;
-    const sn = screenNodes();
+    const sn = screenNodes(t);
     if (!sn) return null;
-    const n = fe.nodes.length / 3;
-    const top = { xy: new Float64Array(2 * n), depth: new Float64Array(n) };
-    for (let i = 0; i < n; i++) { top.xy[2 * i] = fe.nodes[3 * i]; top.xy[2 * i + 1] = fe.nodes[3 * i + 1]; }
-    const hit = S.pick(fe.nodes, fe.triangles, top, xmm * 1e-3, ymm * 1e-3);
+    const hit = planformHit(xmm, ymm);
     if (!hit) return null;
     let px = 0, py = 0;
     hit.ids.forEach((i, j) => { px += hit.w[j] * sn.proj.xy[2 * i]; py += hit.w[j] * sn.proj.xy[2 * i + 1]; });
     return Number.isFinite(px) && Number.isFinite(py) ? [px, py] : null;
   }
 
+  /** @type {{ fe: any, key: string, hit: any } | null} the last planform pick (fixed per wing and point) */
+  let hitCache = null;
+  /** The flat planform's triangle and barycentric weights at (x, y) mm (cached per wing and point). */
+  function planformHit(/** @type {number} */ xmm, /** @type {number} */ ymm) {
+    if (!fe) return null;
+    const key = `${xmm}/${ymm}`;
+    if (hitCache && hitCache.fe === fe && hitCache.key === key) return hitCache.hit;
+    const n = fe.nodes.length / 3;
+    const top = { xy: new Float64Array(2 * n), depth: new Float64Array(n) };
+    for (let i = 0; i < n; i++) { top.xy[2 * i] = fe.nodes[3 * i]; top.xy[2 * i + 1] = fe.nodes[3 * i + 1]; }
+    const hit = S.pick(fe.nodes, fe.triangles, top, xmm * 1e-3, ymm * 1e-3);
+    hitCache = { fe, key, hit };
+    return hit;
+  }
+
   /** Places the strain-point ring over the drawn wing (hidden for the paper mode set). */
-  function placePoint() {
+  function placePoint(/** @type {number | undefined} */ t = undefined) {
     const s = store.get();
     const p = s.strain_point || (fe && fe.strain_point_mm);
     if (!fe || !p || s.modes !== 'fe' || !cam) { pointMark.hidden = true; return; }
-    const at = drawnPoint(p[0], p[1]);
+    const at = drawnPoint(p[0], p[1], t);
     const ok = !!at && at[0] > 0 && at[1] > 0 && at[0] < canvas.clientWidth && at[1] < canvas.clientHeight;
     pointMark.hidden = !ok;
     if (at && ok) pointMark.style.transform = `translate(${Math.round(at[0] - 7)}px, ${Math.round(at[1] - 7)}px)`;
-    pointMark.title = `strain point (${p[0]}, ${p[1]}) mm`;
+    const title = `strain point (${p[0]}, ${p[1]}) mm`;
+    if (pointMark.title !== title) pointMark.title = title;
   }
 
   /** Moves the in-view labels to the projected axis tips (src/render/gpu.rs scene_geometry). */
@@ -612,24 +735,45 @@ export function mount(ctx) {
     });
   }
 
-  /** Draws the frame at the store's t3d. Cheap: no wasm call besides the renderer's own. */
-  function draw() {
+  /** Sets `e`'s text only when it differs (an unchanged text costs no layout or paint). */
+  function setText(/** @type {HTMLElement} */ e, /** @type {string} */ t) { if (e.textContent !== t) e.textContent = t; }
+
+  /**
+   * Draws the frame at `tPlay` (the play loop) or at the store's t3d. While playing only the
+   * pose and q_k change per frame (WingView.setPose); the legend and the texts are redone every
+   * TEXT_MS, and a frame showing the sample already drawn is skipped.
+   * @param {number} [tPlay]
+   */
+  function draw(tPlay) {
     const s = store.get();
     const r = s.result;
-    describeTime();
-    time.value = String(s.t3d ?? 0);
+    const inLoop = tPlay != null;
+    const tNow = inLoop ? tPlay : (playT ?? s.t3d ?? 0);
+    const now = performance.now();
+    const texts = !inLoop || now - lastText >= TEXT_MS;
+    if (texts || now - lastPush >= PUSH_MS) {
+      describeTime(tNow);
+      time.value = String(tNow);
+    }
     if (!view || !fe || !r || !r.angles) return;
     refresh();
     const a = r.analysis;
     const n = a.sim.t.length;
-    const i = Math.min(n - 1, Math.max(0, Math.round((s.t3d ?? 0) * a.sim.sample_rate_hz)));
+    const i = Math.min(n - 1, Math.max(0, Math.round(tNow * a.sim.sample_rate_hz)));
+    if (inLoop && i === lastLoopI && !texts) return;
+    lastLoopI = inLoop ? i : -1;
     const ang = [r.angles.alpha[i], r.angles.beta[i], r.angles.gamma[i]];
-    const q = new Float64Array(a.sim.modes.map((m) => m.q.total[i]));
+    const modes = a.sim.modes;
+    if (qBuf.length !== modes.length) qBuf = new Float64Array(modes.length);
+    for (let k = 0; k < modes.length; k++) qBuf[k] = modes[k].q.total[i];
+    const q = qBuf;
     const isFe = s.modes === 'fe';
     const ex = exaggeration();
-    let lg;
+    /** @type {any} */
+    let lg = null;
     try {
-      lg = view.set_frame(ang[0], ang[1], ang[2], q, ex, Number(colour.value));
+      if (texts || typeof view.setPose !== 'function') lg = view.set_frame(ang[0], ang[1], ang[2], q, ex, Number(colour.value));
+      else view.setPose(ang[0], ang[1], ang[2], q);
       view.render();
     } catch (e) {
       status.textContent = `render: ${errorText(e)}`;
@@ -638,29 +782,43 @@ export function mount(ctx) {
     frames += 1;
     box.dataset.frames = String(frames);
     placeSceneLabels(ang);
-    placePoint();
+    placePoint(tNow);
+    if (!lg) return;
+    lastText = now;
     box.dataset.modes = String(q.length);
     const d = lg.max_deflection_m;
-    exagText.textContent = `×${fmt(ex, 3)}`;
+    setText(exagText, `×${fmt(ex, 3)}`);
     exag.setAttribute('aria-valuetext', `deflection drawn ${fmt(ex, 3)} times true scale`);
-    status.textContent =
+    setText(status,
       `${view.backend() === 'webgpu' ? 'WebGPU' : 'WebGL2'} · ${view.triangles()} triangles · ` +
       `α ${ang[0].toFixed(3)}, β ${ang[1].toFixed(3)}, γ ${ang[2].toFixed(3)} rad · ` +
-      (isFe ? `true largest deflection ${fmt(d * 1e3, 3)} mm, drawn ×${fmt(ex, 3)}` : `largest deflection ${fmt(d * 1e3, 3)} (paper q units, not SI), drawn ×${fmt(ex, 3)}`);
-    defl.textContent = runDeflection == null ? '' : isFe
+      (isFe ? `true largest deflection ${fmt(d * 1e3, 3)} mm, drawn ×${fmt(ex, 3)}` : `largest deflection ${fmt(d * 1e3, 3)} (paper q units, not SI), drawn ×${fmt(ex, 3)}`));
+    const deflText = runDeflection == null ? '' : isFe
       ? `Largest deflection over the whole run: ${fmt(runDeflection * 1e3, 3)} mm (true scale, SI), about ${fmt((100 * runDeflection) / S.spanOf(fe.nodes), 2)} % of the ${fmt(S.spanOf(fe.nodes) * 1e3, 3)} mm span.`
       : `Paper mode set: Table 4’s a_k are not SI, so these deflections are in paper units (≈ 10× below SI), not mm; choose the FE wing mode set for millimetres.`;
-    if (!isFe) defl.replaceChildren(rich(defl.textContent));
+    if (defl.dataset.text !== deflText) {
+      defl.dataset.text = deflText;
+      if (isFe) defl.textContent = deflText;
+      else defl.replaceChildren(rich(deflText));
+    }
     drawLegend(lg, isFe);
     const wingName = s.wing && s.wing.label ? s.wing.label : 'synthetic Manduca-like outline, not digitised';
-    note.replaceChildren(rich(isFe
+    const noteText = isFe
       ? `The shell-FE wing (${wingName}; ${fe.n_nodes} nodes) with all ${a.sim.modes.length} of its modes driven by the simulated q_k(t): deflection Σ_k φ_k q_k(t); strain per the FE modal strain fields (dimensionless, true scale). Click the wing to choose the strain point (ring).`
-      : `Paper mode set: the paper's q_k(t) (Table 4 units, not SI) drawn on the shell-FE wing's first ${a.sim.modes.length} mode shapes, so shapes and timing are right and magnitudes are not physical. Choose the FE wing mode set for SI deflection and strain.`));
-    summary.textContent = `Wing at t = ${(s.t3d ?? 0).toFixed(4)} s: roll α ${ang[0].toFixed(3)}, pitch β ${ang[1].toFixed(3)}, yaw γ ${ang[2].toFixed(3)} rad; deflection now ${fmt(d * 1e3, 3)} ${isFe ? 'mm' : 'paper units'}, largest over the run ${fmt((runDeflection || 0) * 1e3, 3)}. ${legendText.textContent}`;
+      : `Paper mode set: the paper's q_k(t) (Table 4 units, not SI) drawn on the shell-FE wing's first ${a.sim.modes.length} mode shapes, so shapes and timing are right and magnitudes are not physical. Choose the FE wing mode set for SI deflection and strain.`;
+    if (note.dataset.text !== noteText) {
+      note.dataset.text = noteText;
+      note.replaceChildren(rich(noteText));
+    }
+    setText(summary, `Wing at t = ${tNow.toFixed(4)} s: roll α ${ang[0].toFixed(3)}, pitch β ${ang[1].toFixed(3)}, yaw γ ${ang[2].toFixed(3)} rad; deflection now ${fmt(d * 1e3, 3)} ${isFe ? 'mm' : 'paper units'}, largest over the run ${fmt((runDeflection || 0) * 1e3, 3)}. ${legendText.textContent}`);
   }
 
   function drawLegend(lg, isFe) {
     if (!view) return;
+    // Redrawn only when it changes (it is fixed for a run while the wing plays).
+    const key = `${lg.component}/${lg.min}/${lg.max}/${isFe}/${fieldProblem}/${fieldLabel}`;
+    if (key === legendKey) return;
+    legendKey = key;
     const c2 = context2d(legend);
     const { width: w, height: h } = legend;
     c2.clearRect(0, 0, w, h);
@@ -693,16 +851,19 @@ export function mount(ctx) {
     store.subscribe(['fe'], onFe),
     store.subscribe(['strain_map'], () => { fieldKey = ''; if (view && Number(colour.value) === 5) { applyRange(); draw(); } }),
     store.subscribe(['strain_point'], () => { if (view) placePoint(); }),
-    store.subscribe(['t3d'], () => { if (view) draw(); else describeTime(); }),
+    // (a time set from outside while playing — the time slider, a click on the responses plot —
+    // becomes the loop's time, so a pause then keeps it)
+    store.subscribe(['t3d'], (s) => { if (pushing) return; if (playT != null) playT = s.t3d ?? 0; if (view) draw(); else describeTime(); }),
     store.subscribe(['playing'], (s) => setPlaying(!!s.playing)),
   ];
   if (store.get().t3d == null) store.set({ t3d: 0.505 });
+  watchVisibility();
 
   return {
     startWhenVisible,
     start,
     get view() { return view; },
-    get t() { return store.get().t3d ?? 0; },
+    get t() { return playT ?? store.get().t3d ?? 0; },
     get camera() { return cam; },
     get ranges() { return ranges; },
     get frames() { return frames; },
@@ -728,6 +889,8 @@ export function mount(ctx) {
       store.set({ playing: false });
       if (io) io.disconnect();
       if (ro) ro.disconnect();
+      if (vis) vis.disconnect();
+      document.removeEventListener('visibilitychange', onVisibility);
       if (raf) cancelAnimationFrame(raf);
       clearTimeout(fieldTimer);
       if (view) view.free();
