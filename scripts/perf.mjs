@@ -6,16 +6,24 @@
 //   * slider latency: keydown on the γ0 slider → redraw finished (includes the wait for the next
 //     animation frame), plus its compute and draw parts, over 40 key presses;
 //   * the 101×101 initial-condition map in wasm on the main thread (median of 20);
+//   * slider latency per slider (issue 12 item 1; see sliderLatency below): Event Timing
+//     keydown → next paint, Long Tasks (> 50 ms), the wasm compute and keydown → plots updated,
+//     30 presses per slider, in two scenarios (the paper case with the 3-D view shown; f_d =
+//     25.5 Hz at the longest duration with the 3-D view playing); the table is printed and
+//     written to test-output/latency.md (LATENCY_STEPS, LATENCY_GAP_MS, LATENCY_SLIDERS=a,b
+//     change the run);
 //   * the 3-D view: frame time at 1280×720 of a ~10k-triangle synthetic wing (WebGL2, default
 //     flags; set_frame + render, wall time per requestAnimationFrame with the GPU work
 //     finished: median over 120 frames) and the same for the lab's FE wing;
 //   * the shell FE wing of the lab (wasm feModes, 1.25 mm and the CLI's 1.0 mm), median of 3;
 //   * the wasm module's size, raw and gzipped (-9).
-// Usage: node scripts/perf.mjs [--screenshot]   (--screenshot also writes docs/lab.png)
+// Usage: node scripts/perf.mjs [--screenshot] [--latency-only]   (--screenshot also writes
+// docs/lab.png; --latency-only measures only the sliders, into test-output/perf-latency.json)
 // Run `scripts/build-web.sh www` first (`npm run perf` does both).
 import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
+import os from 'node:os';
 import { setup, openPage, waitRenders, ROOT, OUT } from '../tests/e2e/helpers.mjs';
 
 const median = (xs) => {
@@ -34,7 +42,7 @@ const result = {};
 try {
   // Load-to-interactive.
   const loads = [];
-  for (let i = 0; i < 5; i++) {
+  for (let i = 0; i < (process.argv.includes('--latency-only') ? 0 : 5); i++) {
     const { page, context } = await openPage(env.browser, env.url);
     await page.goto(env.url);
     await waitRenders(page, 1);
@@ -42,42 +50,57 @@ try {
     await context.close();
   }
   log('loads', loads);
-  result.load_to_interactive_ms = { median: r1(median(loads)), all: loads.map(r1) };
+  if (loads.length) result.load_to_interactive_ms = { median: r1(median(loads)), all: loads.map(r1) };
 
   const { page, context, problems } = await openPage(env.browser, env.url);
   await page.goto(env.url);
   await waitRenders(page, 1);
-  // Warm up, then measure slider moves.
-  await page.focus('wing-lab input[type=range][data-key="gamma0"]');
-  const lat = [], comp = [], draw = [];
-  // Persistent listeners: every keydown on the slider and every finished render is logged.
-  await page.evaluate(() => {
-    const lab = document.querySelector('wing-lab');
-    const input = __wl.q('input[type=range][data-key="gamma0"]');
-    window.__perf = { downs: [], renders: [] };
-    input.addEventListener('keydown', (e) => window.__perf.downs.push(e.timeStamp));
-    lab.addEventListener('wl-rendered', (e) => window.__perf.renders.push(e.detail));
-  });
-  for (let i = 0; i < 50; i++) {
-    await page.keyboard.press(i % 2 ? 'ArrowLeft' : 'ArrowRight');
-    await page.waitForFunction((n) => window.__perf.renders.length >= n, i + 1, { timeout: 20000 });
-    await page.waitForTimeout(40);
+  if (!process.argv.includes('--latency-only')) {
+    // Legacy figure (docs/lab.md): γ0 keydown → redraw finished, 40 presses.
+    await page.focus('wing-lab input[type=range][data-key="gamma0"]');
+    const lat = [], comp = [], draw = [];
+    await page.evaluate(() => {
+      const lab = document.querySelector('wing-lab');
+      const input = __wl.q('input[type=range][data-key="gamma0"]');
+      window.__perf = { downs: [], renders: [] };
+      input.addEventListener('keydown', (e) => window.__perf.downs.push(e.timeStamp));
+      lab.addEventListener('wl-rendered', (e) => window.__perf.renders.push(e.detail));
+    });
+    for (let i = 0; i < 50; i++) {
+      await page.keyboard.press(i % 2 ? 'ArrowLeft' : 'ArrowRight');
+      await page.waitForFunction((n) => window.__perf.renders.length >= n, i + 1, { timeout: 20000 });
+      await page.waitForTimeout(40);
+    }
+    const log_ = await page.evaluate(() => window.__perf);
+    for (let i = 10; i < 50; i++) {
+      const r = log_.renders[i];
+      lat.push(r.end - log_.downs[i]);
+      comp.push(r.compute);
+      draw.push(r.draw);
+    }
+    result.slider = {
+      keydown_to_redrawn_ms: { median: r1(median(lat)), p90: r1(pct(lat, 0.9)) },
+      compute_ms: { median: r1(median(comp)), p90: r1(pct(comp, 0.9)) },
+      draw_ms: { median: r1(median(draw)), p90: r1(pct(draw, 0.9)) },
+      compute_plus_draw_ms: { median: r1(median(comp.map((c, i) => c + draw[i]))) },
+      samples: lat.length,
+    };
   }
-  const log_ = await page.evaluate(() => window.__perf);
-  log(log_.downs.length, log_.renders.length);
-  for (let i = 10; i < 50; i++) {
-    const r = log_.renders[i];
-    lat.push(r.end - log_.downs[i]);
-    comp.push(r.compute);
-    draw.push(r.draw);
+
+  // Slider latency per slider (issue 12 item 1): Event Timing keydown → next paint, Long Tasks,
+  // the wasm compute of each recompute and keydown → plots updated, STEPS key presses each.
+  result.latency = await sliderLatency(env);
+  const table = latencyTable(result.latency);
+  fs.mkdirSync(OUT, { recursive: true });
+  fs.writeFileSync(path.join(OUT, 'latency.md'), table);
+  console.log(table);
+  if (process.argv.includes('--latency-only')) {
+    result.machine = machine();
+    fs.writeFileSync(path.join(OUT, 'perf-latency.json'), JSON.stringify(result, null, 2));
+    await context.close();
+    await env.close();
+    process.exit(0);
   }
-  result.slider = {
-    keydown_to_redrawn_ms: { median: r1(median(lat)), p90: r1(pct(lat, 0.9)) },
-    compute_ms: { median: r1(median(comp)), p90: r1(pct(comp, 0.9)) },
-    draw_ms: { median: r1(median(draw)), p90: r1(pct(draw, 0.9)) },
-    compute_plus_draw_ms: { median: r1(median(comp.map((c, i) => c + draw[i]))) },
-    samples: lat.length,
-  };
 
   // IC map 101×101 in wasm, main thread.
   result.ic_map_101x101_ms = await page.evaluate(async () => {
@@ -176,7 +199,108 @@ try {
 
 const wasm = fs.readFileSync(path.join(ROOT, process.env.LAB_ROOT || 'www', 'pkg', 'wingbeat_bg.wasm'));
 result.wasm_bytes = { raw: wasm.length, gzip9: zlib.gzipSync(wasm, { level: 9 }).length };
-result.machine = `${(await import('node:os')).cpus().length} cores, load average ${(await import('node:os')).loadavg().map((x) => x.toFixed(1)).join(' ')}`;
+result.machine = machine();
 fs.mkdirSync(OUT, { recursive: true });
 fs.writeFileSync(path.join(OUT, 'perf.json'), JSON.stringify(result, null, 2));
 console.log(JSON.stringify(result, null, 2));
+
+function machine() {
+  return `${os.cpus().length} cores, load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')} (1, 5, 15 min)`;
+}
+
+/**
+ * Per-slider latency in a fresh 1280×800 page per scenario, with the 3-D view on screen:
+ *   * keydown → next paint: the Event Timing API's `duration` of each keydown on the slider
+ *     (rounded by the browser to 8 ms; entries under its 16 ms floor are not reported, so a
+ *     key press without an entry counts as 16 ms, an upper bound);
+ *   * long tasks (Long Tasks API, > 50 ms on the main thread) from the first key press to the
+ *     last redraw, count and longest;
+ *   * compute: the wasm time of each redraw (`wl-rendered` detail.compute);
+ *   * keydown → plots updated: from the key press to the `wl-rendered` event of its result.
+ * STEPS presses per slider (half one way, half back), each waiting for its redraw (≤ 3 s) and
+ * LATENCY_GAP_MS more, as a person stepping a slider would.
+ */
+async function sliderLatency(env) {
+  const STEPS = Number(process.env.LATENCY_STEPS || 30);
+  const GAP = Number(process.env.LATENCY_GAP_MS || 60);
+  const keys = ['alpha0', 'beta0', 'gamma0', 'flap_hz', 'zeta', 'alpha_phase', 'beta_phase', 'gamma_phase', 'duration'];
+  const only = process.env.LATENCY_SLIDERS ? process.env.LATENCY_SLIDERS.split(',') : keys;
+  const scenarios = [
+    { name: 'paper case, 2 s, 3-D view shown (paused)', query: '', play: false },
+    { name: 'f_d 25.5 Hz, 10 s (longest), 3-D view playing', query: '?flap_hz=25.5&duration=10', play: true },
+  ];
+  const out = [];
+  for (const sc of scenarios) {
+    const { page, context } = await openPage(env.browser, env.url + sc.query, { width: 1280, height: 800 });
+    await page.goto(env.url + sc.query);
+    await waitRenders(page, 1);
+    await page.waitForFunction(() => __wl.q('[data-wing3d]') && __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0, null, { timeout: 90000 }).catch(() => {});
+    if (sc.play) await page.evaluate(() => __wl.lab().store.set({ playing: true }));
+    await page.evaluate(() => {
+      const lab = __wl.lab();
+      const w = /** @type {any} */ (window);
+      w.__lat = { downs: [], events: [], long: [], renders: [] };
+      window.addEventListener('keydown', (e) => w.__lat.downs.push(e.timeStamp), true);
+      lab.addEventListener('wl-rendered', (e) => w.__lat.renders.push(e.detail));
+      new PerformanceObserver((l) => { for (const x of l.getEntries()) if (x.name === 'keydown') w.__lat.events.push({ start: x.startTime, duration: x.duration }); })
+        .observe(/** @type {any} */ ({ type: 'event', durationThreshold: 16, buffered: false }));
+      new PerformanceObserver((l) => { for (const x of l.getEntries()) w.__lat.long.push({ start: x.startTime, duration: x.duration }); })
+        .observe({ type: 'longtask', buffered: false });
+    });
+    for (const key of only) {
+      const sel = `wing-lab input[type=range][data-key="${key}"]`;
+      await page.focus(sel);
+      const atMax = await page.evaluate((k) => { const r = __wl.q(`input[type=range][data-key="${k}"]`); return Number(r.value) >= Number(r.max) - 1e-9; }, key);
+      await page.evaluate(() => { const w = /** @type {any} */ (window); w.__lat.downs = []; w.__lat.events = []; w.__lat.long = []; w.__lat.renders = []; });
+      const t0 = await page.evaluate(() => performance.now());
+      const perPress = [];
+      for (let i = 0; i < STEPS; i++) {
+        const before = await page.evaluate(() => /** @type {any} */ (window).__lat.renders.length);
+        const up = (i < STEPS / 2) !== atMax;
+        await page.keyboard.press(up ? 'ArrowRight' : 'ArrowLeft');
+        await page.waitForFunction((n) => /** @type {any} */ (window).__lat.renders.length > n, before, { timeout: 3000 }).catch(() => {});
+        const r = await page.evaluate((n) => { const w = /** @type {any} */ (window); return { down: w.__lat.downs[w.__lat.downs.length - 1], render: w.__lat.renders[w.__lat.renders.length - 1], fresh: w.__lat.renders.length > n }; }, before);
+        perPress.push(r);
+        await page.waitForTimeout(GAP);
+      }
+      await page.waitForTimeout(200);
+      const lat = await page.evaluate(() => /** @type {any} */ (window).__lat);
+      const paint = perPress.map((p) => {
+        const e = lat.events.find((x) => Math.abs(x.start - p.down) < 1);
+        return e ? e.duration : 16;
+      });
+      const fresh = perPress.filter((p) => p.fresh && p.render);
+      const compute = fresh.map((p) => p.render.compute);
+      const plots = fresh.map((p) => p.render.end - p.down);
+      const long = lat.long.filter((x) => x.start >= t0);
+      out.push({
+        scenario: sc.name,
+        slider: key,
+        presses: perPress.length,
+        keydown_to_paint_ms: { median: r1(median(paint)), p90: r1(pct(paint, 0.9)), max: r1(Math.max(...paint)), under_16: paint.filter((_, i) => !lat.events.find((x) => Math.abs(x.start - perPress[i].down) < 1)).length },
+        long_tasks: { count: long.length, longest_ms: long.length ? r1(Math.max(...long.map((x) => x.duration))) : 0 },
+        compute_ms: compute.length ? { median: r1(median(compute)), p90: r1(pct(compute, 0.9)) } : null,
+        keydown_to_plots_ms: plots.length ? { median: r1(median(plots)), p90: r1(pct(plots, 0.9)) } : null,
+        redraws: fresh.length,
+      });
+      log(out[out.length - 1]);
+    }
+    await context.close();
+  }
+  return { steps: STEPS, gap_ms: GAP, machine: machine(), rows: out };
+}
+
+/** The latency rows as a Markdown table. */
+function latencyTable(l) {
+  const lines = [
+    `Slider latency, headless Chromium, 1280×800, ${l.steps} key presses per slider (${l.machine})`,
+    '',
+    '| scenario | slider | keydown→paint median (ms) | p90 (ms) | long tasks >50 ms (longest) | compute median / p90 (ms) | keydown→plots median / p90 (ms) |',
+    '|---|---|---|---|---|---|---|',
+  ];
+  for (const r of l.rows) {
+    lines.push(`| ${r.scenario} | ${r.slider} | ${r.keydown_to_paint_ms.median} | ${r.keydown_to_paint_ms.p90} | ${r.long_tasks.count} (${r.long_tasks.longest_ms}) | ${r.compute_ms ? `${r.compute_ms.median} / ${r.compute_ms.p90}` : '–'} | ${r.keydown_to_plots_ms ? `${r.keydown_to_plots_ms.median} / ${r.keydown_to_plots_ms.p90}` : '–'} |`);
+  }
+  lines.push('', 'keydown→paint: Event Timing duration (8 ms granularity; a press with no entry, i.e. under 16 ms, counts as 16).');
+  return lines.join('\n') + '\n';
+}

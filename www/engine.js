@@ -25,9 +25,10 @@
 // slider. A wasm call cannot be interrupted, so requests are coalesced instead: at most one is
 // in flight and one waits; a newer request replaces the waiting one (which resolves to null)
 // and makes the one in flight stale (its result, when it comes, resolves to null and is not
-// drawn). Only the newest request's result reaches the caller. Until the live worker has
-// loaded its wasm (the first render after load) or when workers are unavailable, requestLive
-// computes on the main thread as `analyze` does.
+// drawn). Only the newest request's result reaches the caller. The live worker starts at the
+// first parameter change and gets the page's compiled wasm module (no second download); until
+// it has loaded, and when workers are unavailable, requestLive computes on the main thread as
+// `analyze` does.
 //
 // Results carry the kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`),
 // from wasm `analyze` when it provides them and otherwise from ONE `anglesAt` call per
@@ -52,12 +53,27 @@ const HERE = new URL('.', import.meta.url);
 
 /** @type {Promise<Wasm> | null} */
 let shared = null;
+/** @type {WebAssembly.Module | null} the compiled wasm, handed to the workers (no second download or compile) */
+let compiled = null;
+
+/** Compiles the wasm (streaming when the server sends application/wasm, else from its bytes). */
+async function compileWasm(/** @type {URL} */ url) {
+  const res = await fetch(url);
+  if (!res.ok) throw new Error(`${url.pathname}: HTTP ${res.status}`);
+  if (typeof WebAssembly.compileStreaming === 'function' && (res.headers.get('content-type') || '').startsWith('application/wasm')) {
+    return WebAssembly.compileStreaming(res);
+  }
+  return WebAssembly.compile(await res.arrayBuffer());
+}
+
 /** Loads and instantiates the wasm module once per page (the module is stateless). */
 export function loadWasm() {
   if (!shared) {
     /** @type {Promise<Wasm>} */
     const p = import(new URL('pkg/wingbeat.js', HERE).href).then(async (/** @type {Wasm} */ m) => {
-      await m.default({ module_or_path: new URL('pkg/wingbeat_bg.wasm', HERE) });
+      const mod = await compileWasm(new URL('pkg/wingbeat_bg.wasm', HERE));
+      await m.default({ module_or_path: mod });
+      compiled = mod;
       return m;
     });
     shared = p;
@@ -201,11 +217,24 @@ export function createEngine(deps = {}) {
     return res;
   }
 
+  /** The page's compiled wasm module (loadWasm; null with a test's fake), handed to new workers. */
+  function wasmModule() {
+    return load === loadWasm ? compiled : null;
+  }
+
+  /** A new worker, given the page's compiled wasm first when there is one. */
+  function startWorker(/** @type {() => Worker} */ make) {
+    const w = make();
+    const m = wasmModule();
+    if (m) w.postMessage({ wasmModule: m });
+    return w;
+  }
+
   /** The live worker (made on first use), or null when workers are unavailable. */
   function liveWorker() {
     if (live || liveBroken) return live;
     try {
-      live = createLiveWorker();
+      live = startWorker(createLiveWorker);
     } catch {
       liveBroken = true;
       return null;
@@ -297,7 +326,7 @@ export function createEngine(deps = {}) {
 
   function ensureWorker() {
     if (!worker) {
-      worker = createWorker();
+      worker = startWorker(createWorker);
       worker.onmessage = (ev) => {
         const { id, progress, result, error, ms } = ev.data || {};
         const job = jobs.get(id);
@@ -549,7 +578,9 @@ export function createEngine(deps = {}) {
           queued.resolve(null);
           queued = null;
         }
-        const w = liveWorker();
+        // The first request (the first render) does not start the live worker: a lab that is
+        // only looked at never loads a second worker; the first parameter change does.
+        const w = seq > 1 ? liveWorker() : live;
         if (!w || !liveReady) settleSync(req);
         else if (inflight) queued = req;
         else postLive(req);

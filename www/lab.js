@@ -183,6 +183,16 @@ export class WingLab extends HTMLElement {
     this.ro = null;
     /** @type {{ compute: number, draw: number, end: number } | null} */
     this.lastTiming = null;
+    /** Whether a new result's panel redraws are being run (one task each, see drainDraws). */
+    this.drawing = false;
+    /** @type {{ name: string, fn: Function }[]} */
+    this.drawQueue = [];
+    /** @type {MessageChannel | null} */
+    this.drawPort = null;
+    /** bumped when the element is removed: a redraw sequence of the old build stops */
+    this.drawGen = 0;
+    /** @type {{ r: import('./engine.js').LiveResult, t1: number } | null} the result being drawn */
+    this.pendingRender = null;
     /** Work that must finish before the first computation (planform= file, #s= fragment). */
     this.pending = 0;
     /** Why the wanted wing cannot be built ('' = it can). */
@@ -258,7 +268,11 @@ export class WingLab extends HTMLElement {
         this.root.classList.remove('wl-loading');
         this.wantWing();
         this.render();
-        this.engine.warmLive();
+        // The live worker starts when someone is about to use the lab (focus or pointer inside
+        // it, or the first parameter change), so it is ready before the first key press.
+        const warm = () => { if (this.built) this.engine.warmLive(); };
+        this.root.addEventListener('focusin', warm, { once: true });
+        this.root.addEventListener('pointerdown', warm, { once: true });
         if (this.store.get().panels.includes('wing3d')) this.views.wing3d.startWhenVisible();
         this.dispatchEvent(new CustomEvent('wl-ready', EVENT));
       })
@@ -267,6 +281,10 @@ export class WingLab extends HTMLElement {
 
   disconnectedCallback() {
     this.raf = 0;
+    this.drawing = false;
+    this.drawQueue = [];
+    this.pendingRender = null;
+    this.drawGen++;
     for (const v of Object.values(this.views)) if (v && v.destroy) v.destroy();
     this.unsub.forEach((f) => f());
     if (this.ro) this.ro.disconnect();
@@ -336,7 +354,7 @@ export class WingLab extends HTMLElement {
       sec.append(head);
       this.panels[name] = sec;
       grid.append(sec);
-      this.views[name] = view.mount({ ...ctx0, section: sec });
+      this.views[name] = view.mount({ ...ctx0, store: this.viewStore(name), section: sec });
       const reg = this.exportsReg[name];
       if (reg) head.append(this.exportButtons(name, view.title, reg.figure ? ['csv', 'png', 'svg'] : ['csv', 'png']));
     }
@@ -511,11 +529,90 @@ export class WingLab extends HTMLElement {
     );
   }
 
-  /** The newest live result: into the store (the views redraw), then `wl-rendered`. */
+  /**
+   * The store as a view sees it: the same store, except that a subscription whose only change
+   * is a new `result` runs in a task of its own (see publish), visible panels first, so that
+   * redrawing all panels is never one long task and a key press can paint between two panels.
+   * @param {string} name the panel
+   * @returns {import('./store.js').Store<LabState>}
+   */
+  viewStore(name) {
+    const store = this.store;
+    return {
+      get: store.get,
+      set: store.set,
+      subscribe: (keys, fn) => {
+        if (keys === '*' || !keys.includes('result')) return store.subscribe(keys, fn);
+        const entry = { name, fn };
+        return store.subscribe(keys, (st, changed) => {
+          if (this.drawing && changed.length === 1 && changed[0] === 'result') this.deferDraw(entry);
+          else fn(st, changed);
+        });
+      },
+    };
+  }
+
+  /** Queues a panel's redraw for a new result (once per panel and function). */
+  deferDraw(/** @type {{ name: string, fn: Function }} */ entry) {
+    if (!this.drawQueue.includes(entry)) this.drawQueue.push(entry);
+  }
+
+  /**
+   * Runs the queued redraws one task each (a MessageChannel message: not clamped like
+   * setTimeout), the panels on screen first; then `done`.
+   * @param {() => void} done
+   */
+  drainDraws(done) {
+    const port = this.drawPort || (this.drawPort = new MessageChannel());
+    const visible = (/** @type {string} */ n) => {
+      const sec = this.panels[n];
+      if (!sec || sec.hidden) return 2;
+      const b = sec.getBoundingClientRect();
+      return b.bottom > 0 && b.top < (window.innerHeight || 800) ? 0 : 1;
+    };
+    const gen = this.drawGen;
+    const step = () => {
+      if (!this.built || gen !== this.drawGen) return;
+      if (!this.drawQueue.length) {
+        done();
+        return;
+      }
+      // One panel per task, the most visible first (ties: the order they subscribed in).
+      let best = 0, bestV = 3;
+      for (let i = 0; i < this.drawQueue.length; i++) {
+        const v = visible(this.drawQueue[i].name);
+        if (v < bestV) { best = i; bestV = v; }
+      }
+      const [e] = this.drawQueue.splice(best, 1);
+      try {
+        e.fn(this.store.get(), ['result']);
+      } finally {
+        port.port1.onmessage = step;
+        port.port2.postMessage(0);
+      }
+    };
+    step();
+  }
+
+  /** The newest live result: into the store (the views redraw, a panel per task), then `wl-rendered`. */
   publish(/** @type {import('./engine.js').LiveResult} */ r) {
     this.error(this.wingError);
     const t1 = performance.now();
+    // A result arriving while the previous one's panels are still being drawn: the queue keeps
+    // one entry per panel, each reads the newest result when it runs.
+    const first = !this.drawing;
+    this.drawing = true;
+    this.pendingRender = { r, t1: this.pendingRender ? this.pendingRender.t1 : t1 };
     this.store.set({ result: r, status: null });
+    if (first) this.drainDraws(() => { this.drawing = false; this.finishRender(); });
+  }
+
+  /** All panels show the newest result: timing, data-renders and `wl-rendered`. */
+  finishRender() {
+    const pend = this.pendingRender;
+    this.pendingRender = null;
+    if (!pend) return;
+    const { r, t1 } = pend;
     // uPlot commits its redraw in a microtask queued by setData; ours runs after it.
     queueMicrotask(() => {
       const t2 = performance.now();
@@ -660,8 +757,9 @@ export class WingLab extends HTMLElement {
     };
     if (this.urlTimer) return;
     const since = performance.now() - (this.urlWritten || -1e9);
-    if (since >= 250) write();
-    else this.urlTimer = setTimeout(write, 250 - since);
+    // Never in the key press's own task: history.replaceState costs ~10 ms in Chromium, which
+    // would delay the paint of the slider's new value.
+    this.urlTimer = setTimeout(write, Math.max(20, 250 - since));
   }
 
   // ---------- export ----------

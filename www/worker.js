@@ -4,7 +4,8 @@
 // (Floquet numbers over flap frequency and α0), the paper report, the FE wing (`fe`) and the
 // sensing analysis (`sense`).
 // Protocol: in { id, kind, cfg, opts }; out { id, progress: [done, total] } | { id, result, ms }
-// | { id, error }, and once { ready: true } when the wasm has loaded. Typed arrays are
+// | { id, error }, and once { ready: true } when the wasm has loaded (a first message
+// { wasmModule } hands over the page's compiled module). Typed arrays are
 // transferred, not copied. The lab runs two of these workers: one for the studies (and `fe`),
 // one for the live `analyze` of the sliders (www/engine.js requestLive), so neither waits for
 // the other.
@@ -12,7 +13,20 @@ import init, * as wb from './pkg/wingbeat.js';
 import { decimate } from './decimate.js';
 import { errorText } from './format.js';
 
-const ready = init({ module_or_path: new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
+/**
+ * The wasm, loaded on the first message: the page's own compiled module when the engine sends
+ * it first ({ wasmModule }: no second download or compile), else fetched next to this file.
+ * @type {Promise<unknown> | null}
+ */
+let ready = null;
+function start(/** @type {WebAssembly.Module | undefined} */ module) {
+  if (!ready) {
+    ready = init({ module_or_path: module || new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
+    // Tells the engine that the wasm is loaded (the live worker is used once it is).
+    ready.then(() => scope.postMessage({ ready: true }), () => {});
+  }
+  return ready;
+}
 
 const jobs = {
   sweep({ cfg, opts }, progress) {
@@ -99,13 +113,14 @@ function transferList(v) {
 /** The worker's global scope (a DedicatedWorkerGlobalScope; tsconfig's lib is the page's DOM). */
 const scope = /** @type {{ postMessage(message: unknown, transfer?: Transferable[]): void, onmessage: ((ev: MessageEvent) => void) | null }} */ (/** @type {unknown} */ (self));
 
-// Tells the engine that the wasm is loaded (a live worker is used once it is; study jobs ignore it).
-ready.then(() => scope.postMessage({ ready: true }), () => {});
-
 scope.onmessage = async (ev) => {
-  const { id, kind } = ev.data || {};
+  const { id, kind, wasmModule } = ev.data || {};
+  if (wasmModule) {
+    start(wasmModule);
+    return;
+  }
   try {
-    await ready;
+    await start(undefined);
     const job = jobs[kind];
     if (!job) throw new Error(`unknown job ${String(kind).slice(0, 40)}`);
     const t0 = performance.now();
