@@ -67,7 +67,9 @@ pub struct PeriodMap {
     pub part_end: [Vector2<f64>; MAX_FORCES],
     /// Estimated relative error of one span's integration: the difference to a run with twice
     /// the largest step, divided by 2⁸ − 1 (Richardson: the method has order 8, so that is the
-    /// error of a run at the largest step; the run itself never steps longer). Zero when the
+    /// error of a run at the largest step; the run itself never steps longer), plus a rounding
+    /// allowance of one ε per step. Relative to Φ in the scaled norm (q, q̇/ω) and to each
+    /// particular solution's largest size over the recorded phases and the end. Zero when the
     /// estimate was not asked for.
     pub error_estimate: f64,
 }
@@ -120,6 +122,7 @@ fn error_estimate<O: LinearOde + ?Sized>(
     hmax: f64,
     phi: &Matrix2<f64>,
     part: &[Vector2<f64>; MAX_FORCES],
+    part_scale: &[f64; MAX_FORCES],
 ) -> f64 {
     let nf = ode.n_forces();
     let mut phi_c = Matrix2::identity();
@@ -131,12 +134,30 @@ fn error_estimate<O: LinearOde + ?Sized>(
     let mref = (scale * phi * unscale).norm().max(1e-300);
     let mut err = (scale * (phi - phi_c) * unscale).norm() / mref;
     for j in 0..nf {
-        let pref = (scale * part[j]).norm();
+        let pref = (scale * part[j]).norm().max(part_scale[j]);
         if pref > 0.0 {
             err = err.max((scale * (part[j] - part_c[j])).norm() / pref);
         }
     }
-    err / 255.0
+    // Truncation (Richardson) plus a rounding allowance of one ε per step of the finer run.
+    let steps = (span / hmax).ceil();
+    err / 255.0 + steps * f64::EPSILON
+}
+
+/// Largest scaled |p_j| (q and q̇/ω) over recorded values: the size of each particular
+/// solution over the span, which the relative error refers to (its end value alone can be
+/// small by cancellation, e.g. an undamped mode far above the forcing).
+fn part_scale<'a>(
+    w: f64,
+    parts: impl Iterator<Item = &'a [Vector2<f64>; MAX_FORCES]>,
+) -> [f64; MAX_FORCES] {
+    let mut out = [0.0; MAX_FORCES];
+    for p in parts {
+        for j in 0..MAX_FORCES {
+            out[j] = f64::max(out[j], p[j][0].hypot(p[j][1] / w));
+        }
+    }
+    out
 }
 
 /// [`period_map`], with the error estimate (one more integration of the span at twice the
@@ -162,7 +183,11 @@ pub fn period_map_with<O: LinearOde + ?Sized>(
     }
     advance(ode, &tab, hmax, t, span, &mut phi, &mut part);
     let error_estimate = if estimate {
-        error_estimate(ode, &tab, span, hmax, &phi, &part)
+        let ps = part_scale(
+            ode.freq_scale().max(1e-300),
+            out_part.iter().chain(std::iter::once(&part)),
+        );
+        error_estimate(ode, &tab, span, hmax, &phi, &part, &ps)
     } else {
         0.0
     };
@@ -257,7 +282,13 @@ impl DenseMap {
             values.push(row);
         }
         let error_estimate = if estimate {
-            error_estimate(ode, &tab, span, hmax, &phi, &part)
+            let nodes_p: Vec<[Vector2<f64>; MAX_FORCES]> = values
+                .iter()
+                .flat_map(|row| row.iter())
+                .map(|v| std::array::from_fn(|j| Vector2::new(v[4 + 2 * j], v[5 + 2 * j])))
+                .collect();
+            let ps = part_scale(w, nodes_p.iter());
+            error_estimate(ode, &tab, span, hmax, &phi, &part, &ps)
         } else {
             0.0
         };
