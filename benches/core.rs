@@ -16,6 +16,48 @@ fn paper_case(c: &mut Criterion) {
     );
 }
 
+/// The same run at a flap frequency that does not divide the sample rate (25.5 Hz at 10 kHz:
+/// dense output), at 2 s and 4 s, and the commensurate snap of the rate (9996 Hz).
+fn incommensurate(c: &mut Criterion) {
+    let mut g = c.benchmark_group("f_d = 25.5 Hz");
+    for d in [2.0, 4.0] {
+        let mut cfg = SimConfig::paper();
+        cfg.kinematics.flap_freq_hz = 25.5;
+        cfg.duration_s = d;
+        g.bench_function(format!("{d} s at 10 kHz (dense output)"), |b| {
+            b.iter(|| simulate(black_box(&cfg)).unwrap());
+        });
+    }
+    let mut cfg = SimConfig::paper();
+    cfg.kinematics.flap_freq_hz = 25.5;
+    cfg.sample_rate_hz = wingbeat::simulate::commensurate_sample_rate(25.5, 10_000.0);
+    g.bench_function("2 s at the snapped 9996 Hz", |b| {
+        b.iter(|| simulate(black_box(&cfg)).unwrap());
+    });
+    g.finish();
+}
+
+/// The floor: allocating and writing as many f64 as the paper case's result holds (t, 6 series
+/// per mode × 2 modes, 3 strain series: 16 × 20 001), and just the 160 000 response samples.
+fn floor(c: &mut Criterion) {
+    let n = SimConfig::paper().n_samples();
+    let mut g = c.benchmark_group("floor");
+    for (name, series) in [
+        ("160 000 samples (8 × 20 000)", 8),
+        ("the result's 16 series", 16),
+    ] {
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                let v: Vec<Vec<f64>> = (0..series)
+                    .map(|j| (0..n).map(|i| (i + j) as f64).collect())
+                    .collect();
+                black_box(v)
+            });
+        });
+    }
+    g.finish();
+}
+
 fn gamma_sweep(c: &mut Criterion) {
     let cfg = SimConfig::paper();
     let opts = SweepOptions {
@@ -40,5 +82,5 @@ fn ic(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, paper_case, gamma_sweep, ic);
+criterion_group!(benches, paper_case, incommensurate, floor, gamma_sweep, ic);
 criterion_main!(benches);
