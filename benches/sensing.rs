@@ -40,13 +40,13 @@ fn bench_sensing(c: &mut Criterion) {
     let mut g = c.benchmark_group("sensing_default_fe_wing");
     g.sample_size(20);
     g.bench_function("two_runs", |b| {
-        b.iter(|| modal_rotation_signal(black_box(&cfg), w).unwrap())
+        b.iter(|| modal_rotation_signal(black_box(&cfg), w).unwrap());
     });
     g.bench_function("detectability_map", |b| {
-        b.iter(|| detectability_map(n, strain, black_box(&sig), &opts).unwrap())
+        b.iter(|| detectability_map(n, strain, black_box(&sig), &opts).unwrap());
     });
     g.bench_function("greedy_placement_k30", |b| {
-        b.iter(|| place_sensors(&fe.nodes, strain, black_box(&sig), &opts).unwrap())
+        b.iter(|| place_sensors(&fe.nodes, strain, black_box(&sig), &opts).unwrap());
     });
     g.bench_function("whole_analysis", |b| {
         b.iter(|| {
@@ -59,7 +59,7 @@ fn bench_sensing(c: &mut Criterion) {
                 .collect()];
             let series = delta_strain_series(&["P".into()], &modal, &sig).unwrap();
             black_box((map, series))
-        })
+        });
     });
     g.finish();
 }
