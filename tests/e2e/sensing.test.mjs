@@ -180,6 +180,10 @@ test('the paper mode set says why there is no map and switches to the FE wing', 
   await waitRenders(page, 1);
   const txt = await page.evaluate(() => __wl.q('.wl-sense-needfe').textContent);
   assert.match(txt, /only the FE wing has/);
+  // the guided experiment link is shareable (exp=sensing, modes=fe)
+  const href = await page.evaluate(() => __wl.q('section.wl-sensing a.wl-sense-exp').href);
+  assert.match(href, /exp=sensing/);
+  assert.match(href, /modes=fe/);
   await page.locator(`wing-lab ${SEC} .wl-sense-needfe button`).click();
   await waitReady(page);
   assert.equal(await page.evaluate(() => document.querySelector('wing-lab').store.get().modes), 'fe');

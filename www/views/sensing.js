@@ -15,6 +15,7 @@ import { BODY_RATE, BODY_AXIS, BODY_AXIS_LABELS, bodyRateVector, toQuery } from 
 import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor, clusterMarkers, groupLabel } from '../sensemap.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
+import { experimentQuery } from '../experiments.js';
 
 export const title = 'Sensing body rotation';
 
@@ -32,6 +33,16 @@ export function mount(ctx) {
     class: 'wl-note',
     rich: 'When the body turns while the wings flap, the Coriolis and centrifugal forces change and the wing bends and twists a little differently. Here the FE wing is simulated twice, with and without a constant body rotation; the difference Δε is the strain the rotation causes. The map shows where Δε stands out best against the flapping strain (1 % stroke-to-stroke variation) and sensor noise (σ = 10^{-7}), and where K strain sensors detect the rotation best.',
   }));
+
+  // the guided experiment (www/experiments.js `sensing`): a shareable link; a plain click applies
+  // it here (FE wing, exp=sensing) instead of leaving the page
+  const expLink = el('a', { class: 'wl-sense-exp', href: new URL(`../index.html?${experimentQuery('sensing', { panels: 'controls,experiments,sensing' })}`, import.meta.url).href, text: 'Guided experiment: how many sensors does it take?' });
+  expLink.addEventListener('click', (ev) => {
+    if (ev.button !== 0 || ev.ctrlKey || ev.metaKey || ev.shiftKey || ev.altKey) return;
+    ev.preventDefault();
+    ctx.setParams({ exp: 'sensing', modes: 'fe' });
+  });
+  section.append(el('p', { class: 'wl-note' }, expLink));
 
   // ---- controls ----
   const axis = el('select', { id: `${uid}-sense-axis` });
