@@ -174,6 +174,91 @@ test('keyboard only: Tab to the map, arrow keys move the point, Δε follows', a
   await context.close();
 });
 
+/** Share of pixels whose colour differs by more than 30 (summed RGB) between two PNGs of one size. */
+const pixelChange = (page, x, y) => page.evaluate(async ([a, b]) => {
+  const px = async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    return g.getImageData(0, 0, c.width, c.height).data;
+  };
+  const p = await px(a), q = await px(b);
+  let n = 0;
+  for (let i = 0; i < Math.min(p.length, q.length); i += 4) if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 30) n++;
+  return n / (p.length / 4);
+}, [x.toString('base64'), y.toString('base64')]);
+
+test('the 3-D wing coloured by detectability, with the K best sensors as numbered markers', async () => {
+  const { page, problems, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  await page.goto(`${env.url}?panels=controls,wing3d,sensing&modes=fe&body_rate=0.05&body_axis=x`);
+  await waitRenders(page, 1);
+  const w3 = 'section.wl-wing3d';
+  await page.locator(`wing-lab ${w3}`).scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => { const b = __wl.q('[data-wing3d]'); return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0; }, null, { timeout: 90000 });
+  const colourSel = 'select[id$="w3-colour"]';
+  const setColour = (v) => page.evaluate(([sel, x]) => { const s = __wl.q(sel); s.value = x; s.dispatchEvent(new Event('change', { bubbles: true })); }, [colourSel, v]);
+  // before any sensing result: the option says what to do, and no markers are drawn
+  if (!(await page.evaluate(() => document.querySelector('wing-lab').store.get().sense_map))) {
+    await setColour('6');
+    assert.match(await page.textContent(`wing-lab ${w3} .wl-w3-legend-text`), /open the Sensing panel/);
+    assert.equal(await page.evaluate(() => __wl.qa('.wl-w3-sdot:not([hidden])').length), 0);
+  }
+  // the strain colouring (whole-run strain map) at a fixed instant, for comparison
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.3));
+  await setColour('5');
+  const shot = () => page.locator(`wing-lab ${w3} canvas.wl-w3-canvas`).screenshot();
+  const strainShot = await shot();
+
+  // the sensing panel computes when on screen; its button shows the map on the 3-D wing
+  await page.locator(`wing-lab ${SEC}`).scrollIntoViewIfNeeded();
+  await waitReady(page);
+  const K = await page.evaluate(() => Number(__wl.q('.wl-sense-controls input[type=range][id$="sense-k"]').value));
+  assert.equal(K, 5);
+  await page.locator(`wing-lab ${SEC} button[data-show3d]`).click();
+  assert.equal(await page.evaluate((sel) => __wl.q(sel).value, colourSel), '6');
+  await page.waitForFunction((k) => Number(__wl.q('.wl-w3-sensors')?.dataset.sensors) === k, K, { timeout: 30000 });
+  await page.waitForTimeout(300);
+  const senseShot = await shot();
+  const changed = await pixelChange(page, strainShot, senseShot);
+  assert.ok(changed > 0.03, `share of 3-D canvas pixels that changed colour from the strain map to detectability: ${changed}`);
+  // the legend names the map, its scale and the markers
+  const legendText = await page.textContent(`wing-lab ${w3} .wl-w3-legend-text`);
+  assert.match(legendText, /Rotation detectability D/);
+  assert.match(legendText, /0\.05 rad\/s about body axis x/);
+  assert.match(legendText, /5 best sensors/);
+  // K dots, each inside the canvas, and tags that together carry the ranks 1 … K
+  const marks = await page.evaluate(() => {
+    const c = __wl.q('section.wl-wing3d canvas.wl-w3-canvas').getBoundingClientRect();
+    const dots = __wl.qa('.wl-w3-sdot:not([hidden])').map((d) => { const b = d.getBoundingClientRect(); return { rank: Number(d.dataset.rank), x: b.left + b.width / 2 - c.left, y: b.top + b.height / 2 - c.top }; });
+    const tags = __wl.qa('.wl-w3-stag:not([hidden])').map((t) => t.dataset.ranks);
+    return { w: c.width, h: c.height, dots, tags };
+  });
+  assert.equal(marks.dots.length, K);
+  assert.deepEqual(marks.dots.map((d) => d.rank).sort((a, b) => a - b), [1, 2, 3, 4, 5]);
+  for (const d of marks.dots) assert.ok(d.x >= 0 && d.x <= marks.w && d.y >= 0 && d.y <= marks.h, `sensor ${d.rank} at (${d.x}, ${d.y}) inside ${marks.w}×${marks.h}`);
+  assert.deepEqual(marks.tags.join(',').split(',').map(Number).sort((a, b) => a - b), [1, 2, 3, 4, 5]);
+  // each dot sits on its sensor node as drawn now (the deflected wing at this instant)
+  const onNode = await page.evaluate(() => {
+    const lab = document.querySelector('wing-lab');
+    const m = lab.store.get().sense_map;
+    return m.sensors.map((sn) => lab.wing3d.screenOf(sn.x_mm, sn.y_mm));
+  });
+  for (const [j, p] of onNode.entries()) {
+    const d = marks.dots.find((x) => x.rank === j + 1);
+    assert.ok(p && Math.hypot(p[0] - d.x, p[1] - d.y) < 2.5, `sensor ${j + 1}: dot (${d.x}, ${d.y}) vs the wing point ${JSON.stringify(p)}`);
+  }
+  // a larger K on the panel gives more markers on the 3-D wing
+  await page.evaluate(() => { const k = __wl.q('.wl-sense-controls input[type=range][id$="sense-k"]'); k.value = '8'; k.dispatchEvent(new Event('input', { bubbles: true })); });
+  await page.waitForFunction(() => __wl.qa('.wl-w3-sdot:not([hidden])').length === 8, null, { timeout: 10000 });
+  await page.screenshot({ path: path.join(OUT, 'sensing-wing3d-1280.png') });
+  assert.deepEqual(problems, []);
+  await context.close();
+});
+
 test('the paper mode set says why there is no map and switches to the FE wing', async () => {
   const { page, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
   await page.goto(`${env.url}?panels=controls,sensing`);

@@ -19,6 +19,18 @@ import { experimentQuery } from '../experiments.js';
 
 export const title = 'Sensing body rotation';
 
+/**
+ * What this panel publishes in the store (`sense_map`) for the 3-D view's colour "rotation
+ * detectability": the map's colour position per node (`field`, 0…1: log10 D on the panel's
+ * colour scale, `mode` relative | absolute, from 10^lo to 10^hi; `max` the largest D), the first
+ * K sensors (`label` their rank as text), the FE wing it was computed for, the body rate (rad/s,
+ * body axes) and `show`, a count the button "Show on the 3-D wing" raises.
+ * @typedef {{ fe: import('../engine.js').FeModesResult, n_nodes: number, field: Float64Array,
+ *   mode: 'relative' | 'absolute', lo: number, hi: number, max: number, body_rate: number[],
+ *   sensors: { rank: number, node: number, component: string, x_mm: number, y_mm: number, label: string }[],
+ *   show: number }} SenseMap
+ */
+
 /** Wait after the last change before a new analysis is asked for, ms. */
 export const SENSE_DELAY_MS = 250;
 /** Arrow-key step of the picked point, mm (Shift: ×4). */
@@ -86,6 +98,16 @@ export function mount(ctx) {
   const legend = el('canvas', { class: 'wl-smap-legend', width: 240, height: 12, 'aria-hidden': 'true' });
   const legendText = el('span', { class: 'wl-smap-legend-text' });
   const pointText = el('p', { class: 'wl-smap-point', id: `${mapId}-text`, 'aria-live': 'polite' });
+  // the map and the sensors on the 3-D wing (store `sense_map`; views/wing3d.js colour 6)
+  const show3d = el('button', { type: 'button', class: 'wl-small', text: 'Show on the 3-D wing', 'data-show3d': '' });
+  show3d.disabled = true;
+  let showCount = 0;
+  show3d.addEventListener('click', () => {
+    const s = store.get();
+    if (!s.panels.includes('wing3d')) ctx.setParams({ panels: [...s.panels, 'wing3d'] });
+    showCount += 1;
+    drawMap();
+  });
   const sensorList = el('ol', { class: 'wl-sense-list', 'aria-label': 'The best sensors, in the order the greedy placement chose them' });
   const mapBox = el('div', { class: 'wl-smap wl-sense-map', 'data-sensemap': '' },
     el('div', { class: 'wl-smap-head' },
@@ -94,6 +116,7 @@ export function mount(ctx) {
     canvas,
     el('div', { class: 'wl-smap-legendrow' }, legend, legendText),
     pointText,
+    el('p', { class: 'wl-note wl-sense-3d' }, show3d, ' this map (the same log-D scale) and the K sensors on the flapping 3-D wing.'),
     el('details', { class: 'wl-sense-details' }, el('summary', { text: 'The chosen sensors' }), sensorList));
   const body = el('div', { class: 'wl-sense-body' }, controls, rateHelp, statusRow, mapBox);
   section.append(needFe, body);
@@ -387,6 +410,8 @@ export function mount(ctx) {
       legendText.textContent = 'D = 0 everywhere: no rotation, so nothing to detect';
     }
     canvas.dataset.maxD = scale ? String(scale.max) : '';
+    show3d.disabled = !(have && scale);
+    if (have && scale) publish(fe, scale, K);
     canvas.dataset.drawn = String(++drawn);
     // the sensors as text
     sensorList.replaceChildren(...(have ? result.sensors.slice(0, K).map((sn) => el('li', {
@@ -396,6 +421,31 @@ export function mount(ctx) {
       const src = point ? 'the picked point' : 'the best sensor (default)';
       pointText.textContent = `Δε is plotted at ${src}, (x, y) = (${fmt(p[0], 3)}, ${fmt(p[1], 3)}) mm. ${touch ? 'Tap the map to move it.' : 'Click the map, or focus it and use the arrow keys (Shift: bigger steps), to move it.'}`;
     }
+  }
+
+  /** @type {{ result: any, k: number, mode: string, show: number } | null} what was last published */
+  let published = null;
+  /** Puts the map (colour positions per node) and the first K sensors in the store for the 3-D view. */
+  function publish(/** @type {any} */ fe, /** @type {ReturnType<typeof mapScale>} */ scale, /** @type {number} */ K) {
+    if (published && published.result === result && published.k === K && published.mode === scale.mode && published.show === showCount) return;
+    published = { result, k: K, mode: scale.mode, show: showCount };
+    const n = fe.n_nodes;
+    const field = new Float64Array(n);
+    for (let i = 0; i < n && i < result.d_best.length; i++) field[i] = scale.t(result.d_best[i]);
+    store.set({
+      sense_map: {
+        fe,
+        n_nodes: n,
+        field,
+        mode: /** @type {'relative' | 'absolute'} */ (scale.mode),
+        lo: scale.lo,
+        hi: scale.hi,
+        max: scale.max,
+        body_rate: Array.from(result.body_rate),
+        sensors: result.sensors.slice(0, K).map((sn) => ({ rank: sn.rank, node: sn.node, component: sn.component, x_mm: sn.x_mm, y_mm: sn.y_mm, label: String(sn.rank) })),
+        show: showCount,
+      },
+    });
   }
 
   /** The series at the point in use: the wasm result's, or (picked since) formed from dq. */

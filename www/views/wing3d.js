@@ -20,6 +20,7 @@ import { beatInfo } from '../beat.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
 import { strainFieldOf, PEAK_DELAY_MS } from './strain.js';
+import { clusterMarkers, groupLabel } from '../sensemap.js';
 
 export const title = '3-D wing';
 
@@ -66,7 +67,10 @@ const COLOURS = [
   ['3', 'γ_xy, shear strain'],
   ['4', '|ε|, strain magnitude'],
   ['5', 'whole-run strain map (strain panel’s choice)'],
+  ['6', 'rotation detectability (sensing panel)'],
 ];
+/** The colour option that shows the sensing panel's detectability map (drawn as the renderer's node field, mode 5). */
+const SENSE_COLOUR = 6;
 const SPEEDS = [
   ['beat4', 'one beat in 4 s'],
   ['flap1', 'one flap per second'],
@@ -150,6 +154,10 @@ export function mount(ctx) {
   const pointMark = el('span', { class: 'wl-w3-point', hidden: true });
   pointMark.style.willChange = 'transform';
   overlay.append(pointMark);
+  // The sensing panel's K best sensors (colour 6): a dot per sensor, a numbered tag per group of
+  // sensors that sit closer on screen than a tag (see placeSensors).
+  const sensorLayer = el('div', { class: 'wl-w3-sensors', 'data-sensors': '0', hidden: true });
+  overlay.append(sensorLayer);
   const labelEls = LABELS.map(([t, kind, c]) => {
     // Hidden until the first frame places it (else every label sits at the canvas's corner).
     const e = el('span', { class: `wl-w3-label wl-w3-label-${kind}`, text: t, hidden: true });
@@ -179,7 +187,7 @@ export function mount(ctx) {
   const colour = el('select', { id: `${uid}-w3-colour`, 'aria-label': 'Colour the wing by' });
   for (const [v, t] of COLOURS) colour.append(el('option', { value: v, text: t }));
   colour.value = '3';
-  colour.addEventListener('change', () => { fieldKey = ''; applyRange(); draw(); });
+  colour.addEventListener('change', () => { fieldKey = ''; sensorGroups = null; applyRange(); draw(); });
   const legend = el('canvas', { class: 'wl-w3-legend', width: 240, height: 14, 'aria-hidden': 'true' });
   const legendText = el('span', { class: 'wl-w3-legend-text' });
   const showAxes = el('input', { type: 'checkbox', id: `${uid}-w3-axes`, checked: true });
@@ -402,7 +410,117 @@ export function mount(ctx) {
     if (!view) return;
     const c = Number(colour.value);
     if (c === 5) applyField();
-    view.set_strain_range(c === 5 ? fieldLimit : c > 0 && ranges && ranges[c] > 0 ? ranges[c] : null);
+    if (c === SENSE_COLOUR) applySense();
+    view.set_strain_range(c === 5 ? fieldLimit : c === SENSE_COLOUR ? 1 : c > 0 && ranges && ranges[c] > 0 ? ranges[c] : null);
+  }
+
+  /**
+   * Colour 6: the sensing panel's detectability map (store `sense_map`: per node the position
+   * 0…1 on that panel's log-D colour scale), uploaded once per map as the renderer's node field
+   * with the limit 1 (0 → the colour map's grey middle, 1 → its dark red end). Sets
+   * senseProblem when there is no map for this wing.
+   */
+  /** @type {any} the sense_map uploaded last (null: none) */
+  let senseUp = null;
+  /** @type {string | null} why there is no detectability map to show */
+  let senseProblem = null;
+  function senseMapNow() {
+    const s = store.get();
+    const m = s.sense_map || null;
+    senseProblem = !fe ? 'the FE wing is not ready yet'
+      : !m ? 'no sensing result yet: open the Sensing panel (FE wing mode set) and wait for its map'
+        : m.fe !== fe || m.n_nodes !== fe.n_nodes || m.field.length !== fe.nodes.length / 3 ? 'the sensing result is for another wing: keep the Sensing panel on screen until it has recomputed'
+          : null;
+    return senseProblem ? null : m;
+  }
+  function applySense() {
+    if (!view || !fe) return;
+    const m = senseMapNow();
+    if (fieldKey === 'sense' && senseUp === m) return;
+    fieldKey = 'sense';
+    senseUp = m;
+    try {
+      view.setNodeField(m ? m.field : new Float64Array(fe.nodes.length / 3), 1);
+    } catch (e) {
+      senseProblem = errorText(e);
+    }
+  }
+
+  /** @type {{ x: number, y: number, ranks: number[] }[] | null} the sensor tags' grouping (redone at the text rate) */
+  let sensorGroups = null;
+  /** @type {HTMLElement[]} */
+  const sensorDots = [];
+  /** @type {HTMLElement[]} */
+  const sensorTags = [];
+  /**
+   * Places the K sensors of `sense_map` on the drawn wing at pose `ang` and modal coordinates `q`
+   * (each sensor is an FE node: its deflected position Σ_k φ_k q_k × exaggeration, rotated and
+   * projected with the camera mirror; K ≤ 30, so this is a few hundred operations per frame).
+   * The dots move every drawn frame; which sensors share a numbered tag is decided again only
+   * when `regroup` (the text rate while playing) or the set changed. Moves only what moved a pixel.
+   */
+  function placeSensors(/** @type {number[]} */ ang, /** @type {ArrayLike<number>} */ q, /** @type {boolean} */ regroup) {
+    const m = Number(colour.value) === SENSE_COLOUR && cam ? senseUp : null;
+    if (!m || !fe || !m.sensors.length) {
+      if (!sensorLayer.hidden) { sensorLayer.hidden = true; sensorLayer.dataset.sensors = '0'; }
+      sensorGroups = null;
+      return;
+    }
+    const w = canvas.clientWidth, h = canvas.clientHeight;
+    const pr = S.projector(/** @type {S.Camera} */ (cam), w, h);
+    const { nodes, shapes } = fe;
+    const n = nodes.length / 3;
+    const nm = shapes ? Math.min(q.length, Math.floor(shapes.length / n)) : 0;
+    const ex = exaggeration();
+    const pts = m.sensors.map((/** @type {any} */ sn) => {
+      const i = sn.node;
+      let dz = 0;
+      for (let k = 0; k < nm; k++) dz += /** @type {ArrayLike<number>} */ (shapes)[k * n + i] * q[k];
+      const p = S.rotate(ang[0], ang[1], ang[2], [nodes[3 * i], nodes[3 * i + 1], nodes[3 * i + 2] + ex * dz]);
+      const sp = pr(p[0], p[1], p[2]);
+      return { x: sp ? sp[0] : NaN, y: sp ? sp[1] : NaN, rank: sn.rank };
+    });
+    while (sensorDots.length < pts.length) {
+      const d = el('span', { class: 'wl-w3-sdot' });
+      d.style.willChange = 'transform';
+      sensorDots.push(d);
+      sensorLayer.append(d);
+    }
+    pts.forEach((p, j) => {
+      const d = sensorDots[j];
+      const ok = Number.isFinite(p.x) && Number.isFinite(p.y) && p.x >= 0 && p.y >= 0 && p.x <= w && p.y <= h;
+      if (d.hidden !== !ok) d.hidden = !ok;
+      if (d.dataset.rank !== String(p.rank)) d.dataset.rank = String(p.rank);
+      const tf = ok ? `translate(${Math.round(p.x - 3)}px, ${Math.round(p.y - 3)}px)` : '';
+      if (ok && d.style.transform !== tf) d.style.transform = tf;
+    });
+    for (let j = pts.length; j < sensorDots.length; j++) sensorDots[j].hidden = true;
+    const byRank = new Map(pts.map((p) => [p.rank, p]));
+    if (regroup || !sensorGroups || sensorGroups.reduce((a, g) => a + g.ranks.length, 0) !== pts.length || sensorGroups.some((g) => !byRank.has(g.ranks[0]))) {
+      sensorGroups = clusterMarkers(pts.filter((p) => Number.isFinite(p.x) && Number.isFinite(p.y)), 22);
+    }
+    while (sensorTags.length < sensorGroups.length) {
+      const t = el('span', { class: 'wl-w3-stag' });
+      t.style.willChange = 'transform';
+      sensorTags.push(t);
+      sensorLayer.append(t);
+    }
+    sensorGroups.forEach((g, j) => {
+      const t = sensorTags[j];
+      const p = byRank.get(g.ranks[0]);
+      const label = groupLabel(g.ranks, 6);
+      if (t.textContent !== label) { t.textContent = label; t.dataset.ranks = g.ranks.join(','); t.title = `sensor${g.ranks.length > 1 ? 's' : ''} ${label} of the greedy placement (1 = chosen first)`; }
+      // the tag sits up and to the right of its first sensor, kept inside the canvas
+      const ok = !!p && p.x >= 0 && p.y >= 0 && p.x <= w && p.y <= h;
+      if (t.hidden !== !ok) t.hidden = !ok;
+      if (!ok || !p) return;
+      const tx = Math.round(Math.min(w - 8 * label.length - 12, p.x + 5)), ty = Math.round(Math.max(0, p.y - 20));
+      const tf = `translate(${tx}px, ${ty}px)`;
+      if (t.style.transform !== tf) t.style.transform = tf;
+    });
+    for (let j = sensorGroups.length; j < sensorTags.length; j++) sensorTags[j].hidden = true;
+    if (sensorLayer.hidden) sensorLayer.hidden = false;
+    sensorLayer.dataset.sensors = String(pts.length);
   }
 
   /**
@@ -772,7 +890,8 @@ export function mount(ctx) {
     /** @type {any} */
     let lg = null;
     try {
-      if (texts || typeof view.setPose !== 'function') lg = view.set_frame(ang[0], ang[1], ang[2], q, ex, Number(colour.value));
+      const cm = Number(colour.value);
+      if (texts || typeof view.setPose !== 'function') lg = view.set_frame(ang[0], ang[1], ang[2], q, ex, cm === SENSE_COLOUR ? 5 : cm);
       else view.setPose(ang[0], ang[1], ang[2], q);
       view.render();
     } catch (e) {
@@ -783,6 +902,7 @@ export function mount(ctx) {
     box.dataset.frames = String(frames);
     placeSceneLabels(ang);
     placePoint(tNow);
+    placeSensors(ang, q, texts);
     if (!lg) return;
     lastText = now;
     box.dataset.modes = String(q.length);
@@ -816,7 +936,8 @@ export function mount(ctx) {
   function drawLegend(lg, isFe) {
     if (!view) return;
     // Redrawn only when it changes (it is fixed for a run while the wing plays).
-    const key = `${lg.component}/${lg.min}/${lg.max}/${isFe}/${fieldProblem}/${fieldLabel}`;
+    const sensing = Number(colour.value) === SENSE_COLOUR;
+    const key = `${lg.component}/${lg.min}/${lg.max}/${isFe}/${fieldProblem}/${fieldLabel}/${sensing ? `${senseProblem}/${senseUp ? senseUp.max : ''}/${senseUp ? senseUp.mode : ''}/${senseUp ? senseUp.sensors.length : ''}` : ''}`;
     if (key === legendKey) return;
     legendKey = key;
     const c2 = context2d(legend);
@@ -839,15 +960,47 @@ export function mount(ctx) {
     c2.fillStyle = g;
     c2.fillRect(0, 0, w, h);
     const units = isFe ? 'strain (–)' : '(FE strain × paper q: not physical)';
+    legendText.dataset.min = String(lg.min);
+    legendText.dataset.max = String(lg.max);
+    if (sensing) { legendText.replaceChildren(rich(senseLegend())); return; }
     legendText.textContent = lg.component === 'field'
       ? (fieldProblem ? `no strain map: ${fieldProblem}` : `${fieldLabel}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} strain (–), one map for the whole run (the hottest ${Math.round(100 * (1 - S.RANGE_QUANTILE))} % of the nodes saturate)`)
       : `${lg.component}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} ${units}, fixed for the whole run`;
-    legendText.dataset.min = String(lg.min);
-    legendText.dataset.max = String(lg.max);
+  }
+
+  /** The legend of colour 6: what the colours and the numbered tags mean, and on which scale. */
+  function senseLegend() {
+    const m = senseUp;
+    if (senseProblem || !m) return `No detectability map: ${senseProblem || 'no sensing result yet: open the Sensing panel'}.`;
+    const axis = m.body_rate.findIndex((/** @type {number} */ v) => v !== 0);
+    const rate = axis >= 0 ? `ω_b = ${fmt(m.body_rate[axis], 3)} rad/s about body axis ${'xyz'[axis]}` : 'ω_b = 0';
+    if (!(m.max > 0)) return `Rotation detectability D (Sensing panel, ${rate}): D = 0 everywhere, no rotation, nothing to detect.`;
+    const scale = m.mode === 'absolute'
+      ? `fixed log scale: grey = D ≤ 10^{${m.lo}}, dark red = D ≥ 10^{${m.hi}}; largest on this wing ${fmt(m.max, 3)}`
+      : `log scale relative to this wing: grey = D ≤ ${fmt(10 ** m.lo, 3)} (${fmt(m.hi - m.lo, 2)} decade below the largest), dark red = the largest, ${fmt(m.max, 3)}`;
+    return `Rotation detectability D per node from the Sensing panel (${rate}), ${scale}: the panel’s scale in this view’s colours (D = 1: the rotation’s strain as large as the 1 % stroke variation plus noise). Numbered tags: the ${m.sensors.length} best sensors (1 = chosen first) on the deflected wing, drawn on top even where the wing hides them.`;
+  }
+
+  /** A new detectability map from the sensing panel; its "Show on the 3-D wing" button sets colour 6. */
+  let seenShow = 0;
+  function onSenseMap() {
+    const m = store.get().sense_map;
+    if (m && m.show > seenShow) {
+      seenShow = m.show;
+      colour.value = String(SENSE_COLOUR);
+      // the legend says what the colours and tags are: shown even where the options start folded (phones)
+      options.open = true;
+      fieldKey = '';
+      sensorGroups = null;
+      if (!started) startWhenVisible();
+      if (typeof box.scrollIntoView === 'function') box.scrollIntoView({ block: 'nearest' });
+    }
+    if (view && Number(colour.value) === SENSE_COLOUR) { sensorGroups = null; applyRange(); draw(); }
   }
 
   const unsub = [
     store.subscribe(['result'], onResult),
+    store.subscribe(['sense_map'], onSenseMap),
     store.subscribe(['fe'], onFe),
     store.subscribe(['strain_map'], () => { fieldKey = ''; if (view && Number(colour.value) === 5) { applyRange(); draw(); } }),
     store.subscribe(['strain_point'], () => { if (view) placePoint(); }),
