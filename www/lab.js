@@ -565,11 +565,22 @@ export class WingLab extends HTMLElement {
    */
   drainDraws(done) {
     const port = this.drawPort || (this.drawPort = new MessageChannel());
+    // Each panel's place (0 on screen, 1 off screen, 2 hidden), measured once per drain: a
+    // measurement after each panel's redraw would force a layout every task.
+    /** @type {Map<string, number>} */
+    const rank = new Map();
     const visible = (/** @type {string} */ n) => {
-      const sec = this.panels[n];
-      if (!sec || sec.hidden) return 2;
-      const b = sec.getBoundingClientRect();
-      return b.bottom > 0 && b.top < (window.innerHeight || 800) ? 0 : 1;
+      let r = rank.get(n);
+      if (r === undefined) {
+        const sec = this.panels[n];
+        if (!sec || sec.hidden) r = 2;
+        else {
+          const b = sec.getBoundingClientRect();
+          r = b.bottom > 0 && b.top < (window.innerHeight || 800) ? 0 : 1;
+        }
+        rank.set(n, r);
+      }
+      return r;
     };
     const gen = this.drawGen;
     const step = () => {
