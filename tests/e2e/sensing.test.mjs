@@ -255,6 +255,14 @@ test('the 3-D wing coloured by detectability, with the K best sensors as numbere
   await page.evaluate(() => { const k = __wl.q('.wl-sense-controls input[type=range][id$="sense-k"]'); k.value = '8'; k.dispatchEvent(new Event('input', { bubbles: true })); });
   await page.waitForFunction(() => __wl.qa('.wl-w3-sdot:not([hidden])').length === 8, null, { timeout: 10000 });
   await page.screenshot({ path: path.join(OUT, 'sensing-wing3d-1280.png') });
+  // new kinematics while the sensing panel is off screen (it computes only when seen): the 3-D
+  // legend says the map is for earlier settings
+  await page.evaluate(() => window.scrollTo(0, 0));
+  assert.equal(await page.evaluate(() => { const b = __wl.q('section.wl-sensing').getBoundingClientRect(); return b.top < innerHeight && b.bottom > 0; }), false, 'sensing panel off screen');
+  const cfg0 = await page.evaluate(() => JSON.stringify(document.querySelector('wing-lab').store.get().result.cfg));
+  await page.evaluate(() => document.querySelector('wing-lab').store.set({ alpha0: 0.7 }));
+  await page.waitForFunction((c) => JSON.stringify(document.querySelector('wing-lab').store.get().result.cfg) !== c, cfg0, { timeout: 60000 });
+  await page.waitForFunction(() => /for earlier settings/.test(__wl.q('section.wl-wing3d .wl-w3-legend-text').textContent), null, { timeout: 30000 });
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -24,9 +24,10 @@ export const title = 'Sensing body rotation';
  * detectability": the map's colour position per node (`field`, 0…1: log10 D on the panel's
  * colour scale, `mode` relative | absolute, from 10^lo to 10^hi; `max` the largest D), the first
  * K sensors (`label` their rank as text), the FE wing it was computed for, the body rate (rad/s,
- * body axes) and `show`, a count the button "Show on the 3-D wing" raises.
+ * body axes), the run configuration as JSON (`cfg_json`: kinematics and modes of the two runs) and
+ * `show`, a count the button "Show on the 3-D wing" raises.
  * @typedef {{ fe: import('../engine.js').FeModesResult, n_nodes: number, field: Float64Array,
- *   mode: 'relative' | 'absolute', lo: number, hi: number, max: number, body_rate: number[],
+ *   mode: 'relative' | 'absolute', lo: number, hi: number, max: number, body_rate: number[], cfg_json: string,
  *   sensors: { rank: number, node: number, component: string, x_mm: number, y_mm: number, label: string }[],
  *   show: number }} SenseMap
  */
@@ -179,6 +180,8 @@ export function mount(ctx) {
   let result = null;
   /** @type {{ fe: any, key: string } | null} what `result` was computed for */
   let resultFor = null;
+  /** the run configuration (JSON) the result is for (published with sense_map, so the 3-D view can tell an outdated map) */
+  let resultCfg = '';
   /** @type {[number, number] | null} the picked point (mm); null = the best sensor */
   let point = null;
   /** @type {{ id: number, key: string } | null} */
@@ -258,6 +261,7 @@ export function mount(ctx) {
       running = null;
       result = r;
       resultFor = { fe, key };
+      resultCfg = JSON.stringify(cfg);
       const t1 = performance.now();
       drawAll();
       const t2 = performance.now();
@@ -442,6 +446,7 @@ export function mount(ctx) {
         hi: scale.hi,
         max: scale.max,
         body_rate: Array.from(result.body_rate),
+        cfg_json: resultCfg,
         sensors: result.sensors.slice(0, K).map((sn) => ({ rank: sn.rank, node: sn.node, component: sn.component, x_mm: sn.x_mm, y_mm: sn.y_mm, label: String(sn.rank) })),
         show: showCount,
       },

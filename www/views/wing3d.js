@@ -424,6 +424,8 @@ export function mount(ctx) {
   let senseUp = null;
   /** @type {string | null} why there is no detectability map to show */
   let senseProblem = null;
+  /** the map shown is for other settings (kinematics, modes) than the run drawn */
+  let senseStale = false;
   function senseMapNow() {
     const s = store.get();
     const m = s.sense_map || null;
@@ -431,6 +433,7 @@ export function mount(ctx) {
       : !m ? 'no sensing result yet: open the Sensing panel (FE wing mode set) and wait for its map'
         : m.fe !== fe || m.n_nodes !== fe.n_nodes || m.field.length !== fe.nodes.length / 3 ? 'the sensing result is for another wing: keep the Sensing panel on screen until it has recomputed'
           : null;
+    senseStale = !senseProblem && !!m && !!s.result && m.cfg_json !== JSON.stringify(s.result.cfg);
     return senseProblem ? null : m;
   }
   function applySense() {
@@ -937,7 +940,7 @@ export function mount(ctx) {
     if (!view) return;
     // Redrawn only when it changes (it is fixed for a run while the wing plays).
     const sensing = Number(colour.value) === SENSE_COLOUR;
-    const key = `${lg.component}/${lg.min}/${lg.max}/${isFe}/${fieldProblem}/${fieldLabel}/${sensing ? `${senseProblem}/${senseUp ? senseUp.max : ''}/${senseUp ? senseUp.mode : ''}/${senseUp ? senseUp.sensors.length : ''}` : ''}`;
+    const key = `${lg.component}/${lg.min}/${lg.max}/${isFe}/${fieldProblem}/${fieldLabel}/${sensing ? `${senseProblem}/${senseStale}/${senseUp ? senseUp.max : ''}/${senseUp ? senseUp.mode : ''}/${senseUp ? senseUp.sensors.length : ''}` : ''}`;
     if (key === legendKey) return;
     legendKey = key;
     const c2 = context2d(legend);
@@ -978,7 +981,7 @@ export function mount(ctx) {
     const scale = m.mode === 'absolute'
       ? `fixed log scale: grey = D ≤ 10^{${m.lo}}, dark red = D ≥ 10^{${m.hi}}; largest on this wing ${fmt(m.max, 3)}`
       : `log scale relative to this wing: grey = D ≤ ${fmt(10 ** m.lo, 3)} (${fmt(m.hi - m.lo, 2)} decade below the largest), dark red = the largest, ${fmt(m.max, 3)}`;
-    return `Rotation detectability D per node from the Sensing panel (${rate}), ${scale}: the panel’s scale in this view’s colours (D = 1: the rotation’s strain as large as the 1 % stroke variation plus noise). Numbered tags: the ${m.sensors.length} best sensors (1 = chosen first) on the deflected wing, drawn on top even where the wing hides them.`;
+    return `Rotation detectability D per node from the Sensing panel (${rate}), ${scale}: the panel’s scale in this view’s colours (D = 1: the rotation’s strain as large as the 1 % stroke variation plus noise). Numbered tags: the ${m.sensors.length} best sensors (1 = chosen first) on the deflected wing, drawn on top even where the wing hides them.${senseStale ? ' This map is for earlier settings (kinematics or modes): the Sensing panel recomputes it when it is on screen.' : ''}`;
   }
 
   /** A new detectability map from the sensing panel; its "Show on the 3-D wing" button sets colour 6. */
