@@ -99,6 +99,11 @@ pub trait SpdFactor: Sized {
     /// Factors K − `shift`·diag(`m_diag`). An error means the backend could not factor it
     /// (a zero or non-finite pivot; for a Cholesky backend also "not positive definite").
     fn factor(k: &Self::Matrix, shift: f64, m_diag: &[f64]) -> Result<Self>;
+    /// Factors the same K with another shift, reusing what it can of this factorisation
+    /// (the block-sparse LDLᵀ keeps its ordering and symbolic analysis).
+    fn refactor(&self, k: &Self::Matrix, shift: f64, m_diag: &[f64]) -> Result<Self> {
+        Self::factor(k, shift, m_diag)
+    }
     /// Overwrites `x` with (K − σM)⁻¹ x.
     fn solve_in_place(&self, x: &mut [f64]);
     /// Number of negative pivots (the Sturm count: eigenvalues of K φ = λMφ below σ), when
@@ -146,6 +151,15 @@ impl SpdFactor for SparseLdlt {
     type Matrix = BlockSym;
     fn factor(k: &BlockSym, shift: f64, m_diag: &[f64]) -> Result<Self> {
         BlockLdlt::factor(k, shift, m_diag)
+            .map(SparseLdlt)
+            .ok_or_else(|| WingbeatError::NonFinite {
+                what: "sparse LDLᵀ of K − σM".into(),
+                detail: format!("zero or non-finite pivot at σ = {shift:e}"),
+            })
+    }
+
+    fn refactor(&self, k: &BlockSym, shift: f64, m_diag: &[f64]) -> Result<Self> {
+        BlockLdlt::factor_with(self.0.symbolic().clone(), k, shift, m_diag)
             .map(SparseLdlt)
             .ok_or_else(|| WingbeatError::NonFinite {
                 what: "sparse LDLᵀ of K − σM".into(),

@@ -326,14 +326,18 @@ pub struct FemModes {
 }
 
 /// Most FE work one native run may take ([`fe_work`], about one multiply–add each): the
-/// CLI's `wingbeat modes`, [`compute_modes`]. Unloaded, the skyline solver does 1.2–2.5 ns
-/// per unit (default wing, 6 modes: 2 mm 4.8e7 units 59 ms, 1 mm 4.4e8 units 0.68 s,
-/// 0.75 mm 9.4e8 units 2.2 s, docs/fem.md), so the cap keeps a run near 10 s and still
-/// admits the default wing at 0.5 mm (4.2e9 units); docs/limits.md ("FE work").
+/// CLI's `wingbeat modes`, [`compute_modes`]. With the default block-sparse LDLᵀ the whole
+/// solve takes 1.3–1.5 ns per unit on a loaded 2-core machine (load 6–9; default wing,
+/// 6 modes: 1 mm 2.1e8 units 0.3 s, 0.4 mm / 9 963 nodes 2.8e9 units 4.3 s, 0.3 mm /
+/// 17 658 nodes 7.1e9 units 9 s; docs/fem.md), so the cap keeps a run under about 10 s:
+/// it admits 10 000 nodes and refuses the 17 000-node meshes of issue 13. (The skyline
+/// backend's units are counted on its RCM envelope, 1.2–2.5 ns each.) docs/limits.md
+/// ("FE work").
 pub const FE_MAX_WORK: f64 = 5.0e9;
 
-/// Most FE work one browser run may take (wasm `feModes`, about 3× slower than native):
-/// admits the default wing at 0.75 mm (9.4e8 units, 5.6–7.8 s in V8), refuses 0.5 mm.
+/// Most FE work one browser run may take (wasm `feModes`, about 2–3× slower than native):
+/// admits the default wing at 0.5 mm with 6 modes (about 1.1e9 units), refuses 64 modes at
+/// 0.75 mm (the Gram–Schmidt term of 216 basis vectors alone is 1.6e9).
 pub const BROWSER_FE_MAX_WORK: f64 = 1.5e9;
 
 /// Largest skyline envelope one FE run may allocate, entries (8 bytes each; K and its
@@ -341,7 +345,7 @@ pub const BROWSER_FE_MAX_WORK: f64 = 1.5e9;
 pub const FE_MAX_ENVELOPE: usize = 100_000_000;
 
 /// Estimated work of the eigen-solve of a system of this size for `n_modes` modes, in
-/// multiply–adds: one LDLᵀ factorisation, two envelope sweeps per Krylov vector and the
+/// multiply–adds: one LDLᵀ factorisation, two sweeps over the factor per Krylov vector and the
 /// Gram–Schmidt passes, with the basis the solver typically needs (3 vectors per mode plus
 /// three blocks).
 pub fn fe_work(size: &assembly::SystemSize, n_modes: usize, opt: &EigenOptions) -> f64 {
