@@ -84,13 +84,20 @@ pub struct SystemSize {
     pub factor_work: f64,
 }
 
+/// Above this many free nodes the run is priced by the RCM envelope (an upper bound of the
+/// sparse factor's size and work) instead of the minimum-degree analysis: the exact
+/// minimum-degree ordering has no supervariables, and on the 17 289-node mesh of a
+/// 5 000-point outline it ran for over a minute (measured; docs/fem.md, "Known limits").
+pub const SPARSE_ANALYSIS_MAX_NODES: usize = 12_000;
+
 /// [`SystemSize`] of `mesh` with the nodes flagged in `clamped` held, for the factorisation
 /// `backend` uses: the minimum-degree symbolic factorisation of the node graph for
 /// [`super::Backend::Sparse`] (`envelope` = entries of L and D, `factor_work` = its
 /// multiply–adds, [`super::blocksparse::Symbolic`]); the RCM envelope ([`system_size`])
 /// for the skyline (and faer, for which it is an upper bound).
 pub fn system_size_for(mesh: &Mesh, clamped: &[bool], backend: super::Backend) -> SystemSize {
-    if backend != super::Backend::Sparse {
+    let free = clamped.iter().filter(|&&c| !c).count();
+    if backend != super::Backend::Sparse || free > SPARSE_ANALYSIS_MAX_NODES {
         return system_size(mesh, clamped);
     }
     let nn = mesh.nodes.len();
