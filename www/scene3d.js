@@ -403,8 +403,27 @@ function strainAt(strainNodes, nNodes, m, i, q, out) {
  * at most `maxSamples` evenly spaced samples plus each mode's extremes (extremeStates). strainNodes[(k·n + i)·3 + c] per unit q_k; qs: q_k(t) per mode.
  */
 export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE, maxSamples = 4000) {
-  const states = extremeStates(qs, maxSamples);
-  const m = Math.min(qs.length, Math.floor(strainNodes.length / (3 * nNodes)));
+  return strainRangesAt(strainNodes, nNodes, extremeStates(qs, maxSamples), q);
+}
+
+/**
+ * The modal states q (one array per mode) at the given sample indices, e.g. an analysis's
+ * `extreme_samples` (the core's hull vertices / extremes, so the page need not scan the run).
+ * Indices past the end are skipped.
+ * @param {ArrayLike<number>[]} qs @param {ArrayLike<number>} idx
+ */
+export function statesAt(qs, idx) {
+  const n = qs.length ? qs[0].length : 0;
+  /** @type {number[][]} */
+  const out = [];
+  for (const i of Array.from(idx)) if (i < n) out.push(qs.map((q) => q[i]));
+  return out;
+}
+
+/** strainRanges over given modal states (see extremeStates / statesAt). */
+export function strainRangesAt(strainNodes, nNodes, states, q = RANGE_QUANTILE) {
+  const m0 = states.length ? states[0].length : 0;
+  const m = Math.min(m0, Math.floor(strainNodes.length / (3 * nNodes)));
   const mx = [new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes), new Float64Array(nNodes)];
   const e = new Float64Array(3);
   for (let i = 0; i < nNodes; i++) {
@@ -423,8 +442,12 @@ export function strainRanges(strainNodes, nNodes, qs, q = RANGE_QUANTILE, maxSam
 
 /** The largest |Σ_k φ_k(node) q_k(t)| over nodes and the whole run (m, true scale). */
 export function maxDeflection(shapes, nNodes, qs, maxSamples = 4000) {
-  const states = extremeStates(qs, maxSamples);
-  const m = Math.min(qs.length, Math.floor(shapes.length / nNodes));
+  return maxDeflectionAt(shapes, nNodes, extremeStates(qs, maxSamples));
+}
+
+/** maxDeflection over given modal states (see extremeStates / statesAt). */
+export function maxDeflectionAt(shapes, nNodes, states) {
+  const m = Math.min(states.length ? states[0].length : 0, Math.floor(shapes.length / nNodes));
   let best = 0;
   for (let i = 0; i < nNodes; i++) {
     for (const q of states) {

@@ -201,7 +201,219 @@ pub fn analyze(
     let a = angles_on(&cfg.kinematics.compile(), &c.sim.t);
     let angles = obj_with(&[("alpha", &a.alpha), ("beta", &a.beta), ("gamma", &a.gamma)])?;
     set(&o, "angles", &angles)?;
+    set(&o, "peaks", &peaks_js(&c.sim)?)?;
+    let idx = extreme_samples(
+        &c.sim
+            .modes
+            .iter()
+            .map(|m| &m.q.total[..])
+            .collect::<Vec<_>>(),
+    );
+    set(&o, "extreme_samples", &Uint32Array::from(&idx[..]).into())?;
     Ok(o.into())
+}
+
+/// Largest |v| over a series, 0 for an empty one; a NaN sample makes it NaN (as JS `Math.max`),
+/// never hidden.
+fn peak_abs(y: &[f64]) -> f64 {
+    let mut p = 0.0_f64;
+    for &v in y {
+        if v.is_nan() {
+            return f64::NAN;
+        }
+        p = p.max(v.abs());
+    }
+    p
+}
+
+/// `Analysis.peaks`: the run's largest |q| per mode and response, and the largest |strain| per
+/// component at the strain point (`null` without strains), so the panels need not scan every
+/// sample on the page's thread.
+fn peaks_js(sim: &SimResult) -> Result<JsValue, JsError> {
+    let q = Array::new();
+    for m in &sim.modes {
+        let o = Object::new();
+        for (k, y) in [
+            ("euler", &m.q.euler),
+            ("centrifugal", &m.q.centrifugal),
+            ("coriolis", &m.q.coriolis),
+            ("total", &m.q.total),
+        ] {
+            set(&o, k, &JsValue::from_f64(peak_abs(y)))?;
+        }
+        q.push(&o);
+    }
+    let o = Object::new();
+    set(&o, "q", &q)?;
+    let strain = match &sim.strain {
+        Some(s) => {
+            let so = Object::new();
+            for (k, y) in [
+                ("eps_x", &s.eps_x),
+                ("eps_y", &s.eps_y),
+                ("gamma_xy", &s.gamma_xy),
+            ] {
+                set(&so, k, &JsValue::from_f64(peak_abs(y)))?;
+            }
+            so.into()
+        }
+        None => JsValue::NULL,
+    };
+    set(&o, "strain", &strain)?;
+    Ok(o.into())
+}
+
+/// Evenly spaced samples taken (besides each mode's extremes) with three or more modes.
+pub(crate) const EXTREME_STRIDE_SAMPLES: usize = 1000;
+
+/// Sample indices (increasing, distinct) of the modal trajectory q(t) = (q_1, …, q_m)(t) at
+/// which a linear function of q — or a norm of one — reaches its run-wide maximum: for one
+/// mode q's minimum and maximum, for two the vertices of the trajectory's convex hull (exact
+/// for every such function), for three or more at most `EXTREME_STRIDE_SAMPLES` evenly spaced
+/// samples plus each mode's minimum and maximum (a display bound that the run may exceed).
+/// NaN samples are skipped.
+pub(crate) fn extreme_samples(qs: &[&[f64]]) -> Vec<u32> {
+    let n = qs.iter().map(|q| q.len()).min().unwrap_or(0);
+    if n == 0 {
+        return Vec::new();
+    }
+    let mut out: Vec<usize> = Vec::new();
+    let min_max = |q: &[f64], out: &mut Vec<usize>| {
+        let (mut lo, mut hi) = (None::<usize>, None::<usize>);
+        for (i, &v) in q[..n].iter().enumerate() {
+            if v.is_nan() {
+                continue;
+            }
+            if lo.is_none_or(|j| v < q[j]) {
+                lo = Some(i);
+            }
+            if hi.is_none_or(|j| v > q[j]) {
+                hi = Some(i);
+            }
+        }
+        out.extend(lo);
+        out.extend(hi);
+    };
+    match qs.len() {
+        1 => min_max(qs[0], &mut out),
+        2 => out = hull2(&qs[0][..n], &qs[1][..n]),
+        _ => {
+            let stride = n.div_ceil(EXTREME_STRIDE_SAMPLES).max(1);
+            out.extend((0..n).step_by(stride));
+            for q in qs {
+                min_max(q, &mut out);
+            }
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out.into_iter().map(|i| i as u32).collect()
+}
+
+/// Vertex indices of the convex hull of the points (xs[i], ys[i]) (monotone chain; NaN points
+/// skipped). Points strictly inside the octagon of the 8 directional extremes are dropped first
+/// (Akl–Toussaint), so a long trajectory sorts only its outer points.
+fn hull2(xs: &[f64], ys: &[f64]) -> Vec<usize> {
+    let ok: Vec<usize> = (0..xs.len())
+        .filter(|&i| xs[i].is_finite() && ys[i].is_finite())
+        .collect();
+    let cross = |o: usize, a: usize, b: usize| {
+        (xs[a] - xs[o]) * (ys[b] - ys[o]) - (ys[a] - ys[o]) * (xs[b] - xs[o])
+    };
+    let mut cand = ok;
+    if cand.len() > 64 {
+        let mut ext: Vec<usize> = Vec::with_capacity(8);
+        for d in 0..8 {
+            let ang = std::f64::consts::PI * d as f64 / 4.0;
+            let (c, s) = (ang.cos(), ang.sin());
+            let mut best = cand[0];
+            let mut bv = f64::NEG_INFINITY;
+            for &i in &cand {
+                let v = c * xs[i] + s * ys[i];
+                if v > bv {
+                    bv = v;
+                    best = i;
+                }
+            }
+            if ext.last() != Some(&best) && ext.first() != Some(&best) {
+                ext.push(best);
+            }
+        }
+        if ext.len() >= 3 {
+            let m = ext.len();
+            cand.retain(|&i| {
+                (0..m).any(|j| {
+                    let (a, b) = (ext[j], ext[(j + 1) % m]);
+                    cross(a, b, i) <= 0.0
+                })
+            });
+        }
+    }
+    cand.sort_by(|&a, &b| xs[a].total_cmp(&xs[b]).then(ys[a].total_cmp(&ys[b])));
+    if cand.len() < 3 {
+        return cand;
+    }
+    let mut lower: Vec<usize> = Vec::new();
+    for &i in &cand {
+        while lower.len() >= 2 && cross(lower[lower.len() - 2], lower[lower.len() - 1], i) <= 0.0 {
+            lower.pop();
+        }
+        lower.push(i);
+    }
+    let mut upper: Vec<usize> = Vec::new();
+    for &i in cand.iter().rev() {
+        while upper.len() >= 2 && cross(upper[upper.len() - 2], upper[upper.len() - 1], i) <= 0.0 {
+            upper.pop();
+        }
+        upper.push(i);
+    }
+    lower.pop();
+    upper.pop();
+    lower.extend(upper);
+    if lower.is_empty() {
+        lower.push(cand[0]);
+    }
+    lower
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn extreme_samples_hold_the_extremes_of_linear_functions() {
+        let n = 5000;
+        let q1: Vec<f64> = (0..n)
+            .map(|i| (i as f64 * 0.013).sin() * (1.0 + (i as f64 * 0.0007).cos()))
+            .collect();
+        let q2: Vec<f64> = (0..n)
+            .map(|i| (i as f64 * 0.029).cos() * 0.7 + (i as f64 * 0.0031).sin())
+            .collect();
+        let idx = extreme_samples(&[&q1, &q2]);
+        assert!(idx.len() < n / 10, "{}", idx.len());
+        for d in 0..64 {
+            let (c, s) = ((d as f64 * 0.1).cos(), (d as f64 * 0.1).sin());
+            let f = |i: usize| c * q1[i] + s * q2[i];
+            let all = (0..n).map(f).fold(f64::NEG_INFINITY, f64::max);
+            let sub = idx
+                .iter()
+                .map(|&i| f(i as usize))
+                .fold(f64::NEG_INFINITY, f64::max);
+            assert_eq!(all, sub, "direction {d}");
+        }
+        let one = extreme_samples(&[&q1]);
+        assert_eq!(one.len(), 2);
+        let q3: Vec<f64> = q1.iter().zip(&q2).map(|(a, b)| a - b).collect();
+        let three = extreme_samples(&[&q1, &q2, &q3]);
+        assert!(three.len() <= EXTREME_STRIDE_SAMPLES + 6);
+        for q in [&q1, &q2, &q3] {
+            let mx = q.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+            assert!(three.iter().any(|&i| q[i as usize] == mx));
+        }
+        assert!(extreme_samples(&[]).is_empty());
+        assert_eq!(peak_abs(&[1.0, -3.0, 2.0]), 3.0);
+        assert!(peak_abs(&[1.0, f64::NAN]).is_nan());
+    }
 }
 
 /// A parameter sweep (paper Fig. 6 for `gamma0`). `progress(done, total)` is called after each

@@ -77,7 +77,21 @@ export interface Analysis {
   envelope: (Float64Array | null)[];
   /** α, β, γ (rad) at `sim.t`, for posing the 3-D wing without calling anglesAt per frame. */
   angles: AngleSeries;
+  /** The run's largest |value|s, computed in the core (NaN if a sample is NaN). */
+  peaks: AnalysisPeaks;
+  /**
+   * Sample indices (increasing) where every run-wide extreme of a linear function of the modal
+   * state q(t) is reached: q's minimum and maximum for one mode, the trajectory's convex-hull
+   * vertices for two (exact), at most 1000 evenly spaced samples plus each mode's minimum and
+   * maximum for three or more (a display bound the run may exceed).
+   */
+  extreme_samples: Uint32Array;
 }
+/** Largest |q| over the run of each response of one mode. */
+export interface ResponsePeaks { euler: number; centrifugal: number; coriolis: number; total: number }
+/** Largest |strain| over the run at the strain point, per component. */
+export interface StrainPeaks { eps_x: number; eps_y: number; gamma_xy: number }
+export interface AnalysisPeaks { q: ResponsePeaks[]; strain: StrainPeaks | null }
 export interface SweepModeColumns {
   euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array;
   effective_freq_hz: Float64Array; beat_period_s: Float64Array; peak_abs_q: Float64Array; stable: boolean[];

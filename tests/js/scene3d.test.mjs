@@ -102,6 +102,21 @@ test('strainRanges: one fixed range per component from the run’s extremes (rob
   assert.ok(Math.abs(dmax - brute) < 1e-15);
 });
 
+test('statesAt / strainRangesAt / maxDeflectionAt: given sample indices (the core\'s extreme_samples) give the same ranges', () => {
+  const nNodes = 50;
+  const strain = Float64Array.from({ length: 2 * nNodes * 3 }, (_, j) => Math.sin(j * 0.7));
+  const shapes = Float64Array.from({ length: 2 * nNodes }, (_, j) => 1e-3 * Math.cos(j * 0.3));
+  const q1 = Float64Array.from({ length: 3000 }, (_, i) => 2 * Math.sin(i / 10));
+  const q2 = Float64Array.from({ length: 3000 }, (_, i) => 0.5 * Math.cos(i / 7) + 0.1 * Math.sin(i / 300));
+  const idx = S.hull2(q1, q2).sort((a, b) => a - b);
+  const states = S.statesAt([q1, q2], Uint32Array.from([...idx, 99999]));
+  assert.equal(states.length, idx.length, 'an index past the end is skipped');
+  assert.deepEqual(S.strainRangesAt(strain, nNodes, states), S.strainRanges(strain, nNodes, [q1, q2]));
+  assert.equal(S.maxDeflectionAt(shapes, nNodes, states), S.maxDeflection(shapes, nNodes, [q1, q2]));
+  assert.equal(S.maxDeflectionAt(shapes, nNodes, []), 0, 'no states: 0, not NaN');
+  assert.deepEqual(S.strainRangesAt(strain, nNodes, []), { 1: 0, 2: 0, 3: 0, 4: 0 });
+});
+
 test('hull2 with the interior filter equals the plain hull; outline holds every node', () => {
   const n = 3000;
   const xs = Float64Array.from({ length: n }, (_, i) => Math.sin(i * 0.37) * (1 + 0.3 * Math.sin(i * 0.011)));

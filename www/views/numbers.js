@@ -7,6 +7,21 @@ import { toQuery } from '../state.js';
 
 export const title = 'Floquet & contributions';
 
+/**
+ * The largest |q| over the run of mode k's response `key`: the core's value (Analysis.peaks),
+ * else (an analysis without it) a scan of the samples.
+ * @param {any} a an Analysis
+ * @param {number} k
+ * @param {'euler' | 'centrifugal' | 'coriolis' | 'total'} key
+ */
+export function peakOf(a, k, key) {
+  const p = a.peaks && a.peaks.q[k];
+  if (p) return p[key];
+  let peak = 0;
+  for (const v of a.sim.modes[k].q[key]) peak = Math.max(peak, Math.abs(v));
+  return peak;
+}
+
 export const ROWS = [
   ['freq', 'Natural frequency f_k (Hz)'],
   ['feff', 'Floquet effective frequency (Hz)'],
@@ -86,9 +101,8 @@ export function mount(ctx) {
       set('centrifugal', k, fmt(c.centrifugal, 4));
       set('coriolis', k, fmt(c.coriolis, 4));
       set('sum', k, fmt(c.euler + c.centrifugal + c.coriolis, 4));
-      let peak = 0;
-      for (const v of m.q.total) peak = Math.max(peak, Math.abs(v));
-      set('peak', k, fmt(peak, 4));
+      // The core's run-wide peak (Analysis.peaks): no scan of every sample on the page's thread.
+      set('peak', k, fmt(peakOf(a, k, 'total'), 4));
     });
     cols.forEach((col, k) => col.forEach((c) => c.classList.toggle('wl-selmode', k === s.result.k)));
     table.dataset.selected = String(s.result.k + 1);

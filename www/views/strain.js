@@ -282,8 +282,10 @@ export function mount(ctx) {
     } else {
       const w = plot.u.bbox ? plot.u.bbox.width / (globalThis.devicePixelRatio || 1) : 600;
       plot.setData(decimate(a.sim.t, [st.eps_x, st.eps_y, st.gamma_xy], Math.min(1500, Math.max(200, Math.round(w)))));
-      const pk = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
-      plot.setSummary(`Peak |strain| at the strain point over the run (${unit(s)}): ε_x ${fmt(pk(st.eps_x), 3)}, ε_y ${fmt(pk(st.eps_y), 3)}, γ_xy ${fmt(pk(st.gamma_xy), 3)}.`);
+      // The core's run-wide peaks (Analysis.peaks.strain); a scan only for an analysis without them.
+      const sp = a.peaks && a.peaks.strain;
+      const pk = (/** @type {'eps_x' | 'eps_y' | 'gamma_xy'} */ c) => { if (sp) return sp[c]; let p = 0; for (const v of st[c]) p = Math.max(p, Math.abs(v)); return p; };
+      plot.setSummary(`Peak |strain| at the strain point over the run (${unit(s)}): ε_x ${fmt(pk('eps_x'), 3)}, ε_y ${fmt(pk('eps_y'), 3)}, γ_xy ${fmt(pk('gamma_xy'), 3)}.`);
     }
     drawMap();
   };

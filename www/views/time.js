@@ -9,6 +9,7 @@ import { fmt, plain, UNITS } from '../format.js';
 import { decimate } from '../decimate.js';
 import { beatInfo, beatWindow, shares, smooth } from '../beat.js';
 import { linePlot, color } from '../plot.js';
+import { peakOf } from './numbers.js';
 import { toQuery, describe } from '../state.js';
 
 export const title = 'Responses and the beat (paper Fig. 5)';
@@ -243,8 +244,9 @@ export function mount(ctx) {
     drawBeat(a, k, s);
     drawShares(a, k);
     const peak = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
+    // The responses' peaks are the core's (Analysis.peaks); only the smoothed envelope is scanned here.
     main.setSummary(
-      `Mode ${k + 1}, window ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s of a ${fmt(hi, 3)} s run. Peak |q| (${plain(Q)}): total ${fmt(peak(m.q.total), 3)}, Euler ${fmt(peak(m.q.euler), 3)}, centrifugal ${fmt(peak(m.q.centrifugal), 3)}, Coriolis ${fmt(peak(m.q.coriolis), 3)}; largest Coriolis envelope ${fmt(peak(env), 3)}. ` +
+      `Mode ${k + 1}, window ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s of a ${fmt(hi, 3)} s run. Peak |q| (${plain(Q)}): total ${fmt(peakOf(a, k, 'total'), 3)}, Euler ${fmt(peakOf(a, k, 'euler'), 3)}, centrifugal ${fmt(peakOf(a, k, 'centrifugal'), 3)}, Coriolis ${fmt(peakOf(a, k, 'coriolis'), 3)}; largest Coriolis envelope ${fmt(peak(env), 3)}. ` +
       (beat.period == null ? 'No beat.' : `Beat period ${fmt(beat.period, 4)} s, marked from ${fmt(bw.mark ? bw.mark[0] : NaN, 4)} s.`),
     );
     ov.setSummary(`Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.`);

@@ -593,8 +593,11 @@ export function mount(ctx) {
     const qs = a.sim.modes.map((m) => m.q.total);
     const n = fe.nodes.length / 3;
     // Display ranges: with 3+ modes over RANGE_SAMPLES states (exact hull vertices for 1–2).
-    ranges = S.strainRanges(fe.strain_nodes, n, qs, S.RANGE_QUANTILE, RANGE_SAMPLES);
-    runDeflection = S.maxDeflection(fe.shapes, n, qs, RANGE_SAMPLES);
+    // The core lists those states' samples (Analysis.extreme_samples, computed in the live
+    // worker), so this redraw costs (states × nodes), not a pass over every sample.
+    const states = a.extreme_samples ? S.statesAt(qs, a.extreme_samples) : S.extremeStates(qs, RANGE_SAMPLES);
+    ranges = S.strainRangesAt(fe.strain_nodes, n, states, S.RANGE_QUANTILE);
+    runDeflection = S.maxDeflectionAt(fe.shapes, n, states);
     applyRange();
     // Refit when the stroke, the canvas or the drawn deflection (true × exaggeration) changes.
     const lift = runDeflection * exaggeration();
