@@ -186,7 +186,7 @@ fn block_ldlt_solves_and_matches_the_skyline_matrix() {
     let mut xb = vec![0.0; n];
     for (node, e) in sky.eq.iter().enumerate() {
         for d in 0..6 {
-            if e[d] != wingbeat::fem::assembly::CLAMPED {
+            if e[d] != assembly::CLAMPED {
                 xs[e[d]] = x_node[blk.eq[node][d]];
                 xb[blk.eq[node][d]] = x_node[blk.eq[node][d]];
             }
@@ -198,7 +198,7 @@ fn block_ldlt_solves_and_matches_the_skyline_matrix() {
     let scale = yb.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     for (node, e) in sky.eq.iter().enumerate() {
         for d in 0..6 {
-            if e[d] != wingbeat::fem::assembly::CLAMPED {
+            if e[d] != assembly::CLAMPED {
                 let diff = (ys[e[d]] - yb[blk.eq[node][d]]).abs();
                 assert!(diff <= 1e-12 * scale, "node {node} dof {d}: {diff:e}");
             }

@@ -120,7 +120,7 @@ pub fn system_size_for(mesh: &Mesh, clamped: &[bool], backend: super::Backend) -
             }
         }
     }
-    for a in adj.iter_mut() {
+    for a in &mut adj {
         a.sort_unstable();
         a.dedup();
     }

@@ -180,7 +180,7 @@ impl BlockSym {
                 adj[j].push(i);
             }
         }
-        for a in adj.iter_mut() {
+        for a in &mut adj {
             a.sort_unstable();
             a.dedup();
         }
@@ -256,15 +256,11 @@ pub fn minimum_degree(mut adj: Vec<Vec<usize>>) -> Symbolic {
                         p += 1;
                         x
                     }
-                    (Some(_), Some(&y)) => {
-                        q += 1;
-                        y
-                    }
                     (Some(&x), None) => {
                         p += 1;
                         x
                     }
-                    (None, Some(&y)) => {
+                    (_, Some(&y)) => {
                         q += 1;
                         y
                     }

@@ -381,7 +381,7 @@ fn refine<K: SymOperator>(
         }
         for _ in 0..2 {
             let mw: Vec<f64> = w.iter().zip(m_diag).map(|(a, b)| a * b).collect();
-            for v in ys.iter() {
+            for v in &ys {
                 let c = dot(v, &mw);
                 w.iter_mut().zip(v).for_each(|(a, b)| *a -= c * b);
             }

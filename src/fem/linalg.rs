@@ -76,7 +76,7 @@ impl SymOperator for Skyline {
         self.diag(i)
     }
     fn mul(&self, x: &[f64], y: &mut [f64]) {
-        self.matvec(x, y)
+        self.matvec(x, y);
     }
 }
 
@@ -88,7 +88,7 @@ impl SymOperator for BlockSym {
         self.diag(i)
     }
     fn mul(&self, x: &[f64], y: &mut [f64]) {
-        self.matvec(x, y)
+        self.matvec(x, y);
     }
 }
 
