@@ -15,6 +15,7 @@
 //   * the 3-D view: frame time at 1280×720 of a ~10k-triangle synthetic wing (WebGL2, default
 //     flags; set_frame + render, wall time per requestAnimationFrame with the GPU work
 //     finished: median over 120 frames) and the same for the lab's FE wing;
+//   * the lab's 3-D view playing at 1280×800 (WebGL2): scripts/perf-3d.mjs's measure3d;
 //   * the shell FE wing of the lab (wasm feModes, 1.25 mm and the CLI's 1.0 mm), median of 3;
 //   * the wasm module's size, raw and gzipped (-9).
 // Usage: node scripts/perf.mjs [--screenshot] [--latency-only]   (--screenshot also writes
@@ -25,6 +26,7 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import os from 'node:os';
 import { setup, openPage, waitRenders, ROOT, OUT } from '../tests/e2e/helpers.mjs';
+import { measure3d } from './perf-3d.mjs';
 
 const median = (xs) => {
   const s = [...xs].sort((a, b) => a - b);
@@ -191,8 +193,16 @@ try {
     await shot.context.close();
     await phone.context.close();
   }
+  if (!process.argv.includes('--latency-only')) {
+    // The lab's 3-D view playing at the default layout (WebGL2 with this browser's flags):
+    // rAF intervals, JS and CPU per frame (scripts/perf-3d.mjs; run it alone for WebGPU too).
+    await context.close();
+    result.lab_3d_webgl2 = await measure3d(env.browser, { url: env.url, seconds: 5, viewport: { width: 1280, height: 800 } });
+    log('lab 3-D view playing (WebGL2):', JSON.stringify(result.lab_3d_webgl2));
+  } else {
+    await context.close();
+  }
   result.console_problems = problems;
-  await context.close();
 } finally {
   await env.close();
 }
