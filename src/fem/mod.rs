@@ -336,7 +336,8 @@ pub struct FemModes {
 pub const FE_MAX_WORK: f64 = 5.0e9;
 
 /// Most FE work one browser run may take (wasm `feModes`, about 2–3× slower than native):
-/// admits the default wing at 0.5 mm with 6 modes (about 1.1e9 units), refuses 64 modes at
+/// should admit the default wing near 0.5 mm with 6 modes (about 1.4e9 units by N^1.5
+/// scaling from 10 000 nodes; not measured), refuses 64 modes at
 /// 0.75 mm (the Gram–Schmidt term of 216 basis vectors alone is 1.6e9).
 pub const BROWSER_FE_MAX_WORK: f64 = 1.5e9;
 
