@@ -363,7 +363,8 @@ export function extremeStates(qs, maxSamples = 4000) {
 
 /** The p-quantile of |values| (rank round((n−1)·p); p = 0.98 is the renderer's own robust range). */
 export function robust(values, p = 0.98) {
-  const a = Array.from(values, Math.abs).filter(Number.isFinite).sort((x, y) => x - y);
+  // A typed array sorts numerically without a comparator call per comparison (several times faster).
+  const a = Float64Array.from(values, Math.abs).filter(Number.isFinite).sort();
   if (!a.length) return 0;
   return a[Math.round((a.length - 1) * p)];
 }

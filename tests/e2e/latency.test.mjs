@@ -67,7 +67,28 @@ const compare = (page) =>
     const sp = direct.spectra[k].total.psd, sq = shown.spectra[k].total.psd;
     let psdDiff = 0;
     for (let i = 0; i < sp.length; i++) psdDiff = Math.max(psdDiff, Math.abs(sp[i] - sq[i]));
+    // The core's run-wide peaks (Analysis.peaks, used by the numbers, responses and strain
+    // panels) equal a scan of every sample; its extreme_samples give the 3-D view the same
+    // modal states as the page's own hull of the whole run (scene3d.extremeStates).
+    const scan = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
+    /** @type {string[]} */
+    const peakMismatch = [];
+    shown.sim.modes.forEach((m, j) => {
+      for (const key of ['euler', 'centrifugal', 'coriolis', 'total']) {
+        if (shown.peaks.q[j][key] !== scan(m.q[key])) peakMismatch.push(`q ${j} ${key}: ${shown.peaks.q[j][key]} vs ${scan(m.q[key])}`);
+      }
+    });
+    const st = shown.sim.strain;
+    if (!st || !shown.peaks.strain) peakMismatch.push('no strain peaks');
+    else for (const key of ['eps_x', 'eps_y', 'gamma_xy']) if (shown.peaks.strain[key] !== scan(st[key])) peakMismatch.push(`strain ${key}`);
+    const S = await import('./scene3d.js');
+    const qs = shown.sim.modes.map((m) => m.q.total);
+    const key = (st) => st.map((x) => x.join()).sort().join(';');
+    const statesSame = key(S.statesAt(qs, shown.extreme_samples)) === key(S.extremeStates(qs, 1000));
     return {
+      peakMismatch,
+      statesSame,
+      nStates: shown.extreme_samples.length,
       flap: shown.sim.flap_freq_hz,
       cfgFlap: cfg.kinematics.flap_freq_hz,
       maxDiff,
@@ -105,6 +126,8 @@ test('rapid key presses on f_d end in the result of the final value; superseded 
   assert.equal(c.feff[0], c.feff[1]);
   assert.equal(c.mod[0], c.mod[1]);
   assert.equal(c.peak[0], c.peak[1]);
+  assert.deepEqual(c.peakMismatch, [], 'the core’s peaks equal a scan of every sample');
+  assert.ok(c.statesSame && c.nStates > 2, `extreme_samples: the hull of the whole run (${c.nStates} states)`);
   assert.equal(c.anglesN, c.n, 'angles on the whole time grid (for the 3-D view)');
   assert.deepEqual(problems, []);
   await context.close();

@@ -335,8 +335,20 @@ export function mount(ctx) {
     try { c.getContext('webgl2', WEBGL_ATTRIBUTES); } catch { /* wgpu reports it */ }
   }
 
+  /**
+   * The canvas's CSS size, measured once per resize (fitCanvas clears it): the play loop places
+   * labels every frame, and reading clientWidth after the previous frame's style writes forced
+   * a style/layout pass each time.
+   */
+  let cssW = 0, cssH = 0;
+  function canvasCss() {
+    if (!cssW || !cssH) { cssW = canvas.clientWidth; cssH = canvas.clientHeight; }
+    return [cssW, cssH];
+  }
+
   /** Drawing-buffer size from the stage (device pixels). Returns true when it changed. */
   function fitCanvas() {
+    cssW = 0;
     const w = Math.max(160, Math.round(stage.clientWidth || 640));
     const aspect = w < 520 ? 0.72 : 0.78;
     const h = Math.max(140, Math.round(Math.min(w * aspect, 520)));
@@ -469,7 +481,7 @@ export function mount(ctx) {
       sensorGroups = null;
       return;
     }
-    const w = canvas.clientWidth, h = canvas.clientHeight;
+    const [w, h] = canvasCss();
     const pr = S.projector(/** @type {S.Camera} */ (cam), w, h);
     const { nodes, shapes } = fe;
     const n = nodes.length / 3;
@@ -702,6 +714,7 @@ export function mount(ctx) {
   }
   function onVisibility() { if (!document.hidden) startLoop(); }
 
+
   function bindCamera() {
     /** @type {number[] | null} */
     let last = null;
@@ -759,7 +772,8 @@ export function mount(ctx) {
     const i = Math.min(a.sim.t.length - 1, Math.max(0, Math.round(t * a.sim.sample_rate_hz)));
     const ang = [r.angles.alpha[i], r.angles.beta[i], r.angles.gamma[i]];
     const q = a.sim.modes.map((m) => m.q.total[i]);
-    return { ang, q, proj: S.projectNodes(fe.nodes, fe.shapes, q, exaggeration(), ang, cam, canvas.clientWidth, canvas.clientHeight) };
+    const [w, h] = canvasCss();
+    return { ang, q, proj: S.projectNodes(fe.nodes, fe.shapes, q, exaggeration(), ang, cam, w, h) };
   }
 
   /**
@@ -819,7 +833,8 @@ export function mount(ctx) {
     const p = s.strain_point || (fe && fe.strain_point_mm);
     if (!fe || !p || s.modes !== 'fe' || !cam) { pointMark.hidden = true; return; }
     const at = drawnPoint(p[0], p[1], t);
-    const ok = !!at && at[0] > 0 && at[1] > 0 && at[0] < canvas.clientWidth && at[1] < canvas.clientHeight;
+    const [cw, ch] = canvasCss();
+    const ok = !!at && at[0] > 0 && at[1] > 0 && at[0] < cw && at[1] < ch;
     pointMark.hidden = !ok;
     if (at && ok) pointMark.style.transform = `translate(${Math.round(at[0] - 7)}px, ${Math.round(at[1] - 7)}px)`;
     const title = `strain point (${p[0]}, ${p[1]}) mm`;
@@ -830,7 +845,7 @@ export function mount(ctx) {
   function placeSceneLabels(ang) {
     if (!cam || !fe) return;
     const l = S.spanOf(fe.nodes);
-    const w = canvas.clientWidth, h = canvas.clientHeight;
+    const [w, h] = canvasCss();
     const pr = S.projector(cam, w, h);
     const fr = (p) => S.rotate(ang[0], ang[1], 0, p);
     const pts = [
