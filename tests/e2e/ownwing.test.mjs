@@ -153,13 +153,15 @@ test('an outline without the default strain point works; an edited outline survi
   const sp = await page.evaluate(() => document.querySelector('wing-lab').fe.strain_point_mm);
   assert.ok(sp[1] > -4 && sp[1] < 0 && sp[0] > 0 && sp[0] < 22, `strain point inside the narrow outline: ${sp}`);
   // Edit point 3 by keyboard: select it, set x, compute.
+  const hash0 = await page.evaluate(() => location.hash);
   await setField(page, 'point', 3);
   await setField(page, 'x', 24);
   assert.match(await page.textContent(W('check')), /^Valid outline/);
   await page.focus(W('compute'));
   await page.keyboard.press('Enter');
   assert.match(await computed(page), /^Computed/);
-  await page.waitForFunction(() => document.querySelector('wing-lab').fe.freq_hz[0] && /#s=/.test(location.hash), null, { timeout: 30000 });
+  // The URL is written off the key press's task, at most every 250 ms: wait for the edited outline.
+  await page.waitForFunction((h0) => document.querySelector('wing-lab').fe.freq_hz[0] && /#s=/.test(location.hash) && location.hash !== h0, hash0, { timeout: 30000 });
   const before = await labFreqs(page);
   const url = page.url();
   await context.close();
