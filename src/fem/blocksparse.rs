@@ -36,7 +36,7 @@ pub struct BlockSym {
     /// Block row of each stored block, ascending within a column; the first of a column is
     /// its diagonal block.
     pub row: Vec<usize>,
-    /// The blocks: `val[p][6 r + c]` = A[6 row[p] + r][6 j + c] for block column j.
+    /// The blocks: `val[p][6 r + c]` = `A[6 row[p] + r][6 j + c]` for block column j.
     pub val: Vec<Blk>,
 }
 
