@@ -15,6 +15,7 @@ import { BODY_RATE, BODY_AXIS, BODY_AXIS_LABELS, bodyRateVector, toQuery } from 
 import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor, clusterMarkers, groupLabel } from '../sensemap.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
+import { fitPlanform, pickOnMap } from '../planform.js';
 import { experimentQuery } from '../experiments.js';
 
 export const title = 'Sensing body rotation';
@@ -34,8 +35,6 @@ export const title = 'Sensing body rotation';
 
 /** Wait after the last change before a new analysis is asked for, ms. */
 export const SENSE_DELAY_MS = 250;
-/** Arrow-key step of the picked point, mm (Shift: ×4). */
-const KEY_STEP_MM = 0.5;
 const COMP_LABEL = { eps_x: 'ε_x', eps_y: 'ε_y', gamma_xy: 'γ_xy' };
 
 /** @param {import('../lab.js').ViewContext} ctx */
@@ -310,29 +309,11 @@ export function mount(ctx) {
     canvas.hidden = false;
     const have = result && !stale() && result.n_nodes === fe.n_nodes;
     if (have && !running) mapBox.dataset.state = 'ready';
-    const n = fe.nodes.length / 3;
-    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
-    for (let i = 0; i < n; i++) {
-      const x = fe.nodes[3 * i] * 1e3, y = fe.nodes[3 * i + 1] * 1e3;
-      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
-    }
-    const pad = 14;
-    const cssW = Math.max(200, Math.min(720, canvas.parentElement ? canvas.parentElement.clientWidth : 600));
-    const k = (cssW - 2 * pad) / Math.max(1e-9, x1 - x0);
-    const cssH = Math.round(Math.min(360, (y1 - y0) * k + 2 * pad));
-    const kk = Math.min(k, (cssH - 2 * pad) / Math.max(1e-9, y1 - y0));
-    const dpr = Math.min(2, globalThis.devicePixelRatio || 1);
-    canvas.style.width = `${cssW}px`;
-    canvas.style.height = `${cssH}px`;
-    if (canvas.width !== Math.round(cssW * dpr) || canvas.height !== Math.round(cssH * dpr)) {
-      canvas.width = Math.round(cssW * dpr);
-      canvas.height = Math.round(cssH * dpr);
-    }
-    const c2 = context2d(canvas);
-    c2.setTransform(dpr, 0, 0, dpr, 0, 0);
-    c2.clearRect(0, 0, cssW, cssH);
-    frame = { x0: x0 - pad / kk, y1: y1 + pad / kk, k: kk };
-    const f = frame;
+    const fit = fitPlanform(canvas, fe.nodes, 14);
+    const { c2, cssW, cssH } = fit;
+    frame = fit.frame;
+    const f = fit.frame;
+    const kk = f.k;
     const px = (x) => (x - f.x0) * kk;
     const py = (y) => (f.y1 - y) * kk;
     const scale = have ? mapScale(result.d_best, /** @type {any} */ (scaleSel.value)) : null;
@@ -534,20 +515,7 @@ export function mount(ctx) {
     schedule();
     return true;
   }
-  canvas.addEventListener('click', (e) => {
-    if (!frame) return;
-    const b = canvas.getBoundingClientRect();
-    choose(frame.x0 + (e.clientX - b.left) / frame.k, frame.y1 - (e.clientY - b.top) / frame.k);
-  });
-  canvas.addEventListener('keydown', (e) => {
-    const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[e.key];
-    if (!d) return;
-    e.preventDefault();
-    const p = point || (result ? result.point_mm : null);
-    if (!p) return;
-    const step = KEY_STEP_MM * (e.shiftKey ? 4 : 1);
-    choose(p[0] + d[0] * step, p[1] + d[1] * step);
-  });
+  pickOnMap(canvas, () => frame, () => point || (result ? result.point_mm : null), choose);
 
   const unsubs = [
     store.subscribe(['body_rate', 'body_axis'], () => { syncControls(); schedule(); }),

@@ -11,11 +11,10 @@ import { linePlot, color } from '../plot.js';
 import { toQuery, describe } from '../state.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
+import { fitPlanform, pickOnMap } from '../planform.js';
 
 export const title = 'Strain where you point (paper Fig. 9)';
 
-/** Arrow-key step of the strain point on the map, mm (Shift: ×4). */
-const KEY_STEP_MM = 0.5;
 /**
  * A peak map visits every sample of every node (~0.5 s for 1650 nodes × 20 000 samples × 6
  * modes): computed this long after the last change, so moving a slider stays smooth (the
@@ -163,27 +162,10 @@ export function mount(ctx) {
     }
     if (cached || force || map.stat !== 'peak') delete mapBox.dataset.pending;
     // Size: the planform's aspect, the panel's width (device pixels for sharpness).
-    const n = fe.nodes.length / 3;
-    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
-    for (let i = 0; i < n; i++) {
-      const x = fe.nodes[3 * i] * 1e3, y = fe.nodes[3 * i + 1] * 1e3;
-      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
-    }
-    const pad = 10;
-    const cssW = Math.max(200, Math.min(720, canvas.parentElement ? canvas.parentElement.clientWidth : 600));
-    const k = (cssW - 2 * pad) / Math.max(1e-9, x1 - x0);
-    const cssH = Math.round(Math.min(360, (y1 - y0) * k + 2 * pad));
-    const kk = Math.min(k, (cssH - 2 * pad) / Math.max(1e-9, y1 - y0));
-    const dpr = Math.min(2, globalThis.devicePixelRatio || 1);
-    canvas.style.width = `${cssW}px`;
-    canvas.style.height = `${cssH}px`;
-    if (canvas.width !== Math.round(cssW * dpr) || canvas.height !== Math.round(cssH * dpr)) {
-      canvas.width = Math.round(cssW * dpr);
-      canvas.height = Math.round(cssH * dpr);
-    }
-    c2.setTransform(dpr, 0, 0, dpr, 0, 0);
-    c2.clearRect(0, 0, cssW, cssH);
-    frame = { x0: x0 - pad / kk, y1: y1 + pad / kk, k: kk };
+    const fit = fitPlanform(canvas, fe.nodes, 10);
+    const { cssW, cssH } = fit;
+    frame = fit.frame;
+    const kk = fit.frame.k;
     const px = (x) => (x - /** @type {any} */ (frame).x0) * kk;
     const py = (y) => (/** @type {any} */ (frame).y1 - y) * kk;
     const st = stops();
@@ -232,7 +214,7 @@ export function mount(ctx) {
       ? `${signed ? fmt(-limit, 3) : '0'} … ${fmt(limit, 3)} strain (–): ${what}; the hottest ${Math.round(100 * (1 - S.RANGE_QUANTILE))} % of the nodes saturate (largest ${fmt(Math.max(...field), 3)})`
       : mapBox.dataset.pending ? 'computing the peak map…' : `no map: ${err || 'the wing and the run do not match'}`;
     canvas.dataset.limit = String(limit);
-    mapNote.replaceChildren(rich(`Colours: ${what}, per node of the FE mesh (${n} nodes), from the modal strain fields and q_k(t) of all ${fe.n_modes} modes; the same colour map as the 3-D view (choose “whole-run strain map” there to see it on the flapping wing). Top view: span to the right, leading edge up.`));
+    mapNote.replaceChildren(rich(`Colours: ${what}, per node of the FE mesh (${fe.nodes.length / 3} nodes), from the modal strain fields and q_k(t) of all ${fe.n_modes} modes; the same colour map as the 3-D view (choose “whole-run strain map” there to see it on the flapping wing). Top view: span to the right, leading edge up.`));
     pointText.textContent = `Strain point (x, y) = (${fmt(sx, 3)}, ${fmt(sy, 3)}) mm. ${touch ? 'Tap the map or the 3-D wing to move it.' : 'Click the map or the 3-D wing, or focus the map and use the arrow keys (Shift: bigger steps), to move it.'}`;
   }
 
@@ -250,21 +232,7 @@ export function mount(ctx) {
     return true;
   }
 
-  canvas.addEventListener('click', (e) => {
-    if (!frame) return;
-    const b = canvas.getBoundingClientRect();
-    const x = frame.x0 + (e.clientX - b.left) / frame.k;
-    const y = frame.y1 - (e.clientY - b.top) / frame.k;
-    choose(x, y);
-  });
-  canvas.addEventListener('keydown', (e) => {
-    const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[e.key];
-    if (!d) return;
-    e.preventDefault();
-    const [x, y] = pointOf(store.get());
-    const step = KEY_STEP_MM * (e.shiftKey ? 4 : 1);
-    choose(x + d[0] * step, y + d[1] * step);
-  });
+  pickOnMap(canvas, () => frame, () => pointOf(store.get()), choose);
 
   const draw = (s) => {
     const r = s.result;

@@ -1,0 +1,31 @@
+// The planform map's frame (www/planform.js), shared by the strain and sensing panels.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { planformFrame, KEY_STEP_MM } from '../../www/planform.js';
+
+test('a planform fills the width, keeps its aspect and maps mm to pixels inside the margins', () => {
+  // A 40 mm × 10 mm rectangle (nodes in m), drawn 400 px wide with 10 px margins.
+  const nodes = [0, -0.01, 0, 0.04, -0.01, 0, 0.04, 0, 0, 0, 0, 0];
+  const { cssW, cssH, frame } = planformFrame(nodes, 400, 10);
+  assert.equal(cssW, 400);
+  assert.equal(cssH, Math.round(10 * (380 / 40) + 20)); // 115 px: the aspect kept
+  const px = (x) => (x - frame.x0) * frame.k, py = (y) => (frame.y1 - y) * frame.k;
+  assert.ok(Math.abs(px(0) - 10) < 1e-9 && Math.abs(px(40) - 390) < 1e-9, 'span fills the width inside the margins');
+  assert.ok(py(0) >= 10 - 1e-9 && py(-10) <= cssH - 10 + 1e-9, 'chord inside the height');
+  assert.ok(py(0) < py(-10), 'leading edge (y = 0) above the trailing edge');
+});
+
+test('the width is clamped to 200…720 px and a very deep planform to 360 px high', () => {
+  const tall = [0, 0, 0, 0.001, 0, 0, 0, -0.05, 0];
+  assert.equal(planformFrame(tall, 50, 10).cssW, 200);
+  const r = planformFrame(tall, 5000, 10);
+  assert.equal(r.cssW, 720);
+  assert.equal(r.cssH, 360);
+  assert.ok((r.frame.y1 - -50) * r.frame.k <= 360 - 10 + 1e-9, 'the whole chord fits');
+  assert.equal(KEY_STEP_MM, 0.5);
+});
+
+test('no nodes gives a finite frame, never NaN', () => {
+  const { cssW, cssH, frame } = planformFrame([], 300, 10);
+  for (const v of [cssW, cssH, frame.x0, frame.y1, frame.k]) assert.ok(Number.isFinite(v));
+});

@@ -1,0 +1,81 @@
+// @ts-check
+// The planform map shared by the strain panel and the sensing panel: a 2-D canvas showing the
+// FE wing seen from above (x spanwise, y chordwise, mm), sized to the planform's aspect and the
+// panel's width, on which a click or the arrow keys pick a point (mm).
+import { context2d } from './export.js';
+
+/** Arrow-key step of the picked point on a map, mm (Shift: ×4). */
+export const KEY_STEP_MM = 0.5;
+
+/**
+ * Pure: the map's size in CSS pixels and its frame for a planform whose nodes are `nodes`
+ * (m, x y z per node) drawn `widthCss` wide with `pad` pixels of margin; the height follows the
+ * planform's aspect (at most 360 px). A point (x, y) in mm is drawn at
+ * ((x − x0)·k, (y1 − y)·k).
+ * @param {ArrayLike<number>} nodes
+ * @param {number} widthCss
+ * @param {number} pad
+ * @returns {{ cssW: number, cssH: number, frame: { x0: number, y1: number, k: number } }}
+ */
+export function planformFrame(nodes, widthCss, pad) {
+  const n = Math.floor(nodes.length / 3);
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (let i = 0; i < n; i++) {
+    const x = nodes[3 * i] * 1e3, y = nodes[3 * i + 1] * 1e3;
+    x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+  }
+  if (!(n > 0)) { x0 = 0; x1 = 1; y0 = 0; y1 = 1; }
+  const cssW = Math.max(200, Math.min(720, widthCss));
+  const k = (cssW - 2 * pad) / Math.max(1e-9, x1 - x0);
+  const cssH = Math.round(Math.min(360, (y1 - y0) * k + 2 * pad));
+  const kk = Math.min(k, (cssH - 2 * pad) / Math.max(1e-9, y1 - y0));
+  return { cssW, cssH, frame: { x0: x0 - pad / kk, y1: y1 + pad / kk, k: kk } };
+}
+
+/**
+ * Sizes `canvas` for the planform (CSS size from the panel's width, backing store at the device
+ * pixel ratio, at most 2) and clears it; returns the 2-D context set to draw in CSS pixels.
+ * @param {HTMLCanvasElement} canvas
+ * @param {ArrayLike<number>} nodes
+ * @param {number} pad
+ */
+export function fitPlanform(canvas, nodes, pad) {
+  const { cssW, cssH, frame } = planformFrame(nodes, canvas.parentElement ? canvas.parentElement.clientWidth : 600, pad);
+  const dpr = Math.min(2, globalThis.devicePixelRatio || 1);
+  canvas.style.width = `${cssW}px`;
+  canvas.style.height = `${cssH}px`;
+  if (canvas.width !== Math.round(cssW * dpr) || canvas.height !== Math.round(cssH * dpr)) {
+    canvas.width = Math.round(cssW * dpr);
+    canvas.height = Math.round(cssH * dpr);
+  }
+  const c2 = context2d(canvas);
+  c2.setTransform(dpr, 0, 0, dpr, 0, 0);
+  c2.clearRect(0, 0, cssW, cssH);
+  return { c2, cssW, cssH, frame };
+}
+
+/**
+ * Picking on a map: a click chooses the point under the pointer, an arrow key moves the current
+ * point by KEY_STEP_MM (×4 with Shift). `choose(x, y)` (mm) validates and applies it.
+ * @param {HTMLCanvasElement} canvas
+ * @param {() => ({ x0: number, y1: number, k: number } | null)} frameOf the frame last drawn
+ * @param {() => (number[] | null)} pointOf the current point (mm), or null when there is none
+ * @param {(x: number, y: number) => unknown} choose
+ */
+export function pickOnMap(canvas, frameOf, pointOf, choose) {
+  canvas.addEventListener('click', (e) => {
+    const f = frameOf();
+    if (!f) return;
+    const b = canvas.getBoundingClientRect();
+    choose(f.x0 + (e.clientX - b.left) / f.k, f.y1 - (e.clientY - b.top) / f.k);
+  });
+  canvas.addEventListener('keydown', (e) => {
+    const d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[e.key];
+    if (!d) return;
+    e.preventDefault();
+    const p = pointOf();
+    if (!p) return;
+    const step = KEY_STEP_MM * (e.shiftKey ? 4 : 1);
+    choose(p[0] + d[0] * step, p[1] + d[1] * step);
+  });
+}
