@@ -173,7 +173,7 @@ test('strain where you point: 3-D click and planform map move the point; the ser
   assert.match(await page.textContent('wing-lab section.wl-strain .wl-note'), /strain point \(2\d(\.\d+)?, -1\d/);
 
   // The planform map: a click on it moves the point; arrow keys step it by 0.5 mm.
-  const map = 'wing-lab canvas.wl-smap-canvas';
+  const map = 'wing-lab canvas.wl-smap-canvas[id$="-smap"]'; // the strain panel's map (the sensing panel's map shares the class)
   await page.locator(map).scrollIntoViewIfNeeded();
   const mb = await page.locator(map).boundingBox();
   await page.mouse.click(mb.x + mb.width * 0.45, mb.y + mb.height * 0.3);
@@ -190,7 +190,7 @@ test('strain where you point: 3-D click and planform map move the point; the ser
 
 test('whole-wing strain map colours the planform canvas and the 3-D wing', async () => {
   const { page, problems, context } = await openSix();
-  const map = 'wing-lab canvas.wl-smap-canvas';
+  const map = 'wing-lab canvas.wl-smap-canvas[id$="-smap"]'; // the strain panel's map (the sensing panel's map shares the class)
   await page.locator(map).scrollIntoViewIfNeeded();
   await page.waitForFunction(() => __wl.q('[data-smap]').dataset.state === 'ready');
   const a = await page.locator(map).screenshot({ path: path.join(OUT, 'nmodes-strainmap-gxy-rms.png') });
