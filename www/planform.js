@@ -55,6 +55,34 @@ export function fitPlanform(canvas, nodes, pad) {
 }
 
 /**
+ * Fills the planform's triangles, each in the colour `rgbOf(a, b, c)` of its three node indices
+ * (outlined in the same colour so no seams show between them), in the frame of fitPlanform.
+ * @param {CanvasRenderingContext2D} c2
+ * @param {ArrayLike<number>} nodes m, x y z per node
+ * @param {ArrayLike<number>} triangles node indices, three per triangle
+ * @param {{ x0: number, y1: number, k: number }} frame
+ * @param {(a: number, b: number, c: number) => number[]} rgbOf
+ */
+export function fillPlanform(c2, nodes, triangles, frame, rgbOf) {
+  const px = (/** @type {number} */ i) => (nodes[3 * i] * 1e3 - frame.x0) * frame.k;
+  const py = (/** @type {number} */ i) => (frame.y1 - nodes[3 * i + 1] * 1e3) * frame.k;
+  c2.lineWidth = 0.6;
+  for (let t = 0; t + 2 < triangles.length; t += 3) {
+    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+    const rgb = rgbOf(a, b, c);
+    c2.fillStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
+    c2.strokeStyle = c2.fillStyle;
+    c2.beginPath();
+    c2.moveTo(px(a), py(a));
+    c2.lineTo(px(b), py(b));
+    c2.lineTo(px(c), py(c));
+    c2.closePath();
+    c2.fill();
+    c2.stroke();
+  }
+}
+
+/**
  * Picking on a map: a click chooses the point under the pointer, an arrow key moves the current
  * point by KEY_STEP_MM (×4 with Shift). `choose(x, y)` (mm) validates and applies it.
  * @param {HTMLCanvasElement} canvas

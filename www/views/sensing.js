@@ -15,7 +15,7 @@ import { BODY_RATE, BODY_AXIS, BODY_AXIS_LABELS, bodyRateVector, toQuery } from 
 import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor, clusterMarkers, groupLabel } from '../sensemap.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
-import { fitPlanform, pickOnMap } from '../planform.js';
+import { fitPlanform, fillPlanform, pickOnMap } from '../planform.js';
 import { experimentQuery } from '../experiments.js';
 
 export const title = 'Sensing body rotation';
@@ -317,23 +317,10 @@ export function mount(ctx) {
     const px = (x) => (x - f.x0) * kk;
     const py = (y) => (f.y1 - y) * kk;
     const scale = have ? mapScale(result.d_best, /** @type {any} */ (scaleSel.value)) : null;
-    const tri = fe.triangles;
-    for (let t = 0; t + 2 < tri.length; t += 3) {
-      const a = tri[t], b = tri[t + 1], c = tri[t + 2];
-      let rgb = [215, 215, 215];
-      if (scale && scale.max > 0) rgb = viridis(scale.t((result.d_best[a] + result.d_best[b] + result.d_best[c]) / 3));
-      else if (scale) rgb = viridis(0);
-      c2.fillStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
-      c2.strokeStyle = c2.fillStyle;
-      c2.lineWidth = 0.6;
-      c2.beginPath();
-      c2.moveTo(px(fe.nodes[3 * a] * 1e3), py(fe.nodes[3 * a + 1] * 1e3));
-      c2.lineTo(px(fe.nodes[3 * b] * 1e3), py(fe.nodes[3 * b + 1] * 1e3));
-      c2.lineTo(px(fe.nodes[3 * c] * 1e3), py(fe.nodes[3 * c + 1] * 1e3));
-      c2.closePath();
-      c2.fill();
-      c2.stroke();
-    }
+    fillPlanform(c2, fe.nodes, fe.triangles, f, (a, b, c) => {
+      if (scale && scale.max > 0) return viridis(scale.t((result.d_best[a] + result.d_best[b] + result.d_best[c]) / 3));
+      return scale ? viridis(0) : [215, 215, 215];
+    });
     // the K best sensors: numbered discs (last drawn on top: the best)
     const K = have ? kNow() : 0;
     c2.font = 'bold 10px system-ui, sans-serif';

@@ -11,7 +11,7 @@ import { linePlot, color } from '../plot.js';
 import { toQuery, describe } from '../state.js';
 import * as S from '../scene3d.js';
 import { context2d } from '../export.js';
-import { fitPlanform, pickOnMap } from '../planform.js';
+import { fitPlanform, fillPlanform, pickOnMap } from '../planform.js';
 
 export const title = 'Strain where you point (paper Fig. 9)';
 
@@ -172,22 +172,10 @@ export function mount(ctx) {
     limit = field ? S.mapLimit(field) : 0;
     const signed = !!field && field.some((v) => v < 0);
     const tOf = (v) => (limit > 0 ? 0.5 + 0.5 * Math.max(-1, Math.min(1, v / limit)) : 0.5);
-    const tri = fe.triangles;
-    for (let t = 0; t + 2 < tri.length; t += 3) {
-      const a = tri[t], b = tri[t + 1], c = tri[t + 2];
+    fillPlanform(c2, fe.nodes, fe.triangles, fit.frame, (a, b, c) => {
       const v = field ? (field[a] + field[b] + field[c]) / 3 : 0;
-      const rgb = st ? S.colourAt(st, tOf(v)) : [200, 200, 200];
-      c2.fillStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
-      c2.strokeStyle = c2.fillStyle;
-      c2.lineWidth = 0.6;
-      c2.beginPath();
-      c2.moveTo(px(fe.nodes[3 * a] * 1e3), py(fe.nodes[3 * a + 1] * 1e3));
-      c2.lineTo(px(fe.nodes[3 * b] * 1e3), py(fe.nodes[3 * b + 1] * 1e3));
-      c2.lineTo(px(fe.nodes[3 * c] * 1e3), py(fe.nodes[3 * c + 1] * 1e3));
-      c2.closePath();
-      c2.fill();
-      c2.stroke();
-    }
+      return st ? S.colourAt(st, tOf(v)) : [200, 200, 200];
+    });
     // The strain point: a ring with a dark and a light edge (visible on every colour).
     const [sx, sy] = pointOf(s);
     const cx = px(sx), cy = py(sy);
