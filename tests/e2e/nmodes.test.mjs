@@ -98,6 +98,8 @@ test('6 modes: table, picker, spectra and 3-D view use every mode', async () => 
   await page.waitForFunction(() => { const l = document.querySelector('wing-lab'); return l.store.get().fe.n_modes === 3 && l.analysis.sim.modes.length === 3; }, null, { timeout: 90000 });
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.03));
   await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.modes === '3', null, { timeout: 30000 });
+  // Panels redraw a new result one task each (visible first), so the table may follow the 3-D view.
+  await page.waitForFunction(() => __wl.q('table.wl-numtable')?.dataset.modes === '3', null, { timeout: 30000 });
   assert.equal(await page.getAttribute('wing-lab table.wl-numtable', 'data-modes'), '3');
   assert.equal(await page.locator('wing-lab section.wl-modeshape select option').count(), 3);
   assert.equal(await page.locator('wing-lab [data-wing3d] canvas.wl-w3-canvas').count(), 1);
