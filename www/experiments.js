@@ -14,7 +14,7 @@
 // wasm `resonanceMap` of the paper case (see docs/lab.md), not guessed; their predictions are
 // still recomputed from whatever the analysis returns.
 
-import { defaults, toQuery } from './state.js';
+import { defaults, toQuery, NUMERIC, ENUMS } from './state.js';
 import { UNITS, errorText } from './format.js';
 
 /**
@@ -410,6 +410,36 @@ export function experimentState(id, panels) {
   if (!('mode' in e.params)) s.mode = (e.mode ?? 0) === 1 ? '2' : '1';
   if (panels) s.panels = panels.slice();
   return s;
+}
+
+/**
+ * The parameters an experiment sets: every slider and enum of www/state.js (on the paper
+ * defaults) except the mode set, which stays as it is unless the experiment names one (the
+ * sensing experiment asks for the FE wing).
+ */
+const EXPERIMENT_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.filter((e) => e.key !== 'modes').map((e) => e.key)];
+
+/**
+ * What opening an experiment changes: `exp` and the experiment's parameters (experimentState),
+ * except the keys in `given` — values stated with it in the same URL, attribute set or message,
+ * which win over the experiment's. The ONE definition every entry point applies: a chip
+ * (views/experiments.js), `?exp=` in the URL and `<wing-lab exp=…>` (lab.js), and the message
+ * API's `set({ exp })` (embed-api.js). Null for an unknown id.
+ * @param {string} id
+ * @param {Iterable<string>} [given]
+ * @returns {Record<string, unknown> | null}
+ */
+export function experimentPatch(id, given = []) {
+  const e = experiment(id);
+  const s = experimentState(id);
+  if (!e || !s) return null;
+  const keep = new Set(given);
+  /** @type {Record<string, unknown>} */
+  const from = s;
+  /** @type {Record<string, unknown>} */
+  const patch = { exp: id };
+  for (const k of new Set([...EXPERIMENT_KEYS, ...Object.keys(e.params)])) if (!keep.has(k)) patch[k] = from[k];
+  return patch;
 }
 
 /** The experiment's shareable query string (no leading '?'): every parameter plus exp=<id>. */

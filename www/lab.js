@@ -49,6 +49,7 @@
 // timeCursor, fe, config(), modeIndex(); inside: lab.shadowRoot.
 import { NUMERIC, ENUMS, WING, parsePairs, parseQuery, toQuery, defaults, paramsOf, describe } from './state.js';
 import { shareLink, decodeShare, fragmentValue, checkPoints } from './share.js';
+import { experimentPatch } from './experiments.js';
 import { createStore } from './store.js';
 import { createEngine } from './engine.js';
 import { el, shadowStyles } from './dom.js';
@@ -136,7 +137,7 @@ const FIG_W = 900, FIG_H = 560;
 /** Attributes that are not lab parameters. */
 const NOT_PARAMS = ['id', 'class', 'style', 'sync-url', 'embed', 'layout', 'hidden', 'title', 'lang', 'dir', 'slot', 'part', 'tabindex', 'nonce', 'role', 'inert', 'translate', 'is'];
 /** Parameter attributes that apply live when changed after connection (planform= needs a fetch: not live). */
-const LIVE_ATTRS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'panels'];
+const LIVE_ATTRS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'panels', 'exp'];
 const EVENT = { bubbles: true, composed: true };
 let instances = 0;
 /** Labs built so far on this page: the second one on is "lab 2", … in its sections' names. */
@@ -233,6 +234,9 @@ export class WingLab extends HTMLElement {
     }
     // A wing parameter, outline or planform file given without a mode set means the FE wing.
     const given = new Set([...attrs.map((a) => a[0]), ...(this.hasAttribute('sync-url') ? [...new URLSearchParams(location.search).keys()] : [])]);
+    // A guided experiment (exp= attribute or URL) brings its parameters, as its chip does; values
+    // given with it (and accepted) win.
+    if (params.exp) Object.assign(params, experimentPatch(params.exp, [...given].filter((k) => !rejected.some((r) => r.key === k))));
     if (!given.has('modes') && WING_KEYS.some((k) => given.has(k) && !rejected.some((r) => r.key === k))) params.modes = 'fe';
     const nModes = params.modes === 'fe' ? params.n_modes : 2;
     if (Number(params.mode) > nModes) {
@@ -318,7 +322,8 @@ export class WingLab extends HTMLElement {
       this.notice(`Ignored the attribute ${rejected.map((r) => `${r.key} (${r.why})`).join('; ')}.`);
       return;
     }
-    this.store.set({ [name]: state[name] });
+    // exp= opens the experiment with its parameters (as its chip does); removed, it closes it.
+    this.store.set(name === 'exp' && state.exp ? /** @type {Partial<LabState>} */ (experimentPatch(state.exp)) : { [name]: state[name] });
   }
 
   // ---------- DOM ----------

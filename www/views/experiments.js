@@ -7,12 +7,9 @@
 // experiment's parameters (ctx.setParams).
 import { el } from '../dom.js';
 import { plain, errorText } from '../format.js';
-import { NUMERIC, ENUMS } from '../state.js';
-import { EXPERIMENTS, experiment, experimentState, experimentQuery, predict } from '../experiments.js';
+import { EXPERIMENTS, experiment, experimentPatch, experimentQuery, predict } from '../experiments.js';
 
 export const title = 'Guided experiments';
-
-const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.filter((e) => e.key !== 'modes').map((e) => e.key)];
 
 /** An absolute link to the lab page (index.html next to lab.js) with `query`. */
 export function experimentHref(id) {
@@ -45,13 +42,10 @@ export function mount(ctx) {
   const studies = new Map(); // key → { result, error, job }
   let lastAnnounced = '';
 
-  /** Applies an experiment: its parameters (on the paper defaults, mode set kept) and exp=id. */
+  /** Applies an experiment: exp=id and its parameters (experimentPatch: the same as its URL). */
   function choose(id) {
-    const s = experimentState(id);
-    if (!s) return;
-    /** @type {Record<string, unknown>} */
-    const patch = { exp: id };
-    for (const k of PARAM_KEYS) patch[k] = s[k];
+    const patch = experimentPatch(id);
+    if (!patch) return;
     ctx.setParams(patch);
     refresh();
   }
