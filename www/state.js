@@ -6,6 +6,8 @@
 // a plain decimal number inside its slider's range, or not one of an enum's choices, is dropped
 // (the default is used) and reported by name so the page can show a notice (as text only).
 
+import { SCREEN_IDS } from './screens.js';
+
 /**
  * @typedef {{ key: 'alpha0' | 'beta0' | 'gamma0' | 'flap_hz' | 'zeta' | 'alpha_phase' | 'beta_phase' | 'gamma_phase' | 'duration',
  *   label: string, sym: string, unit: string, min: number, max: number, step: number, def: number }} NumericParam
@@ -122,7 +124,10 @@ const NUMBER_RE = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
  *   modes: 'paper' | 'fe', mode: string, detrend: 'none' | 'mean' | 'linear', panels: string[], exp: string, embed?: boolean,
  *   camber: number, clamp: number, e_pa: number, rho: number, nu: number, thickness_um: number, mesh_mm: number, n_modes: number,
  *   outline: string, planform: string, body_rate: number, body_axis: 'x' | 'y' | 'z',
+ *   screen?: string,
  * }} Params
+ * `screen`: the screen wanted (www/screens.js; '' or absent = the lab's choice). Not in
+ * defaults(): a reset of the parameters keeps the screen, like the panel choice.
  */
 
 /** @returns {Params} */
@@ -185,6 +190,7 @@ export function expectation(key) {
   if (key === 'panels') return `a comma-separated list of ${PANELS.join(', ')}`;
   if (key === 'embed') return '0 or 1';
   if (key === 'exp') return `one of ${EXPERIMENT_IDS.join(', ')}`;
+  if (key === 'screen') return `one of ${SCREEN_IDS.join(', ')}`;
   const w = WING.find((q) => q.key === key);
   if (w) return `${key === 'clamp' ? '"root" or ' : ''}a number in [${w.min}, ${w.max}]${w.unit ? ' ' + w.unit : ''}${key === 'n_modes' ? ' (a whole number)' : ''}`;
   if (key === 'outline') return `one of ${OUTLINE_IDS.join(', ')}`;
@@ -227,6 +233,7 @@ export function parsePairs(pairs, ignore = []) {
     else if (key === 'panels') v = parsePanels(raw);
     else if (key === 'embed') v = raw === '0' || raw === '1' ? raw === '1' : null;
     else if (key === 'exp') v = EXPERIMENT_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
+    else if (key === 'screen') v = SCREEN_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
     else if (WING.some((q) => q.key === key)) v = parseWing(/** @type {WingParam} */ (WING.find((q) => q.key === key)), raw);
     else if (key === 'outline') v = OUTLINE_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
     else if (key === 'planform') v = safePlanformPath(raw);
@@ -308,6 +315,7 @@ export function toQuery(state, extra = {}) {
   if (state.body_axis && state.body_axis !== BODY_AXIS.def) q.set('body_axis', state.body_axis);
   if (state.panels && state.panels.length !== PANELS.length) q.set('panels', state.panels.join(','));
   if (state.exp) q.set('exp', state.exp);
+  if (state.screen) q.set('screen', state.screen);
   for (const [k, v] of Object.entries(extra)) q.set(k, v);
   return q.toString();
 }
@@ -358,6 +366,7 @@ export function paramsOf(s) {
   out.body_axis = s.body_axis || BODY_AXIS.def;
   out.panels = s.panels;
   out.exp = s.exp || '';
+  out.screen = s.screen || '';
   return /** @type {Params} */ (out);
 }
 
