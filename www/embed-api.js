@@ -34,7 +34,7 @@ const NOT_SETTABLE = {
   parent_origin: 'fixed by the iframe’s src',
 };
 /** Keys that do not change the computation (no recompute to wait for). */
-const VIEW_ONLY = ['panels', 'exp'];
+const VIEW_ONLY = ['panels', 'exp', 'screen'];
 const MAX_KEYS = 40;
 const SETTLE_TIMEOUT_MS = 30000;
 
@@ -53,7 +53,7 @@ const SETTLE_TIMEOUT_MS = 30000;
  */
 /**
  * The element as this module uses it (the public hooks of <wing-lab>).
- * @typedef {HTMLElement & { store?: import('./store.js').Store<import('./lab.js').LabState>, state?: import('./state.js').Params, fe?: unknown }} LabElement
+ * @typedef {HTMLElement & { store?: import('./store.js').Store<import('./lab.js').LabState>, state?: import('./state.js').Params, fe?: unknown, screen?: string }} LabElement
  */
 
 /**
@@ -153,15 +153,15 @@ export function startEmbedApi(labEl, opts = {}) {
     return { mode_set: modeSet, selected_mode: r.k + 1, modes, summary, error, compute_ms: r.compute_ms };
   };
 
-  /** The lab's URL parameters as plain JSON (panels as a list). */
+  /** The lab's URL parameters as plain JSON (panels as a list, screen: the screen shown). */
   const params = () => {
     const st = store();
     const p = st ? paramsOf(st.get()) : lab.state;
-    return p ? { ...p, panels: [...p.panels] } : null;
+    return p ? { ...p, panels: [...p.panels], screen: lab.screen || p.screen || '' } : null;
   };
 
   /** A key of the parameters that decide the computation (panels and exp left out). */
-  const computeKey = (/** @type {import('./state.js').Params} */ p) => toQuery({ ...p, panels: PANELS.slice(), exp: '' });
+  const computeKey = (/** @type {import('./state.js').Params} */ p) => toQuery({ ...p, panels: PANELS.slice(), exp: '', screen: '' });
 
   /** Whether the latest result belongs to the current parameters. */
   const current = () => {

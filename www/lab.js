@@ -19,6 +19,7 @@
 //   format.js    numbers, units and rich-label markup (f_d, kg^½·m → sub/superscripts)
 //   dom.js       el(), rich(), the shadow root's stylesheets, activeIn(), touch detection
 //   layout.js    the grid from the element's own width and the panels shown (pure)
+//   screens.js   the screens: which panels each shows, which one an experiment opens (pure)
 //   plot.js      uPlot wrapper: HTML axis titles, keyboard legend toggles, markers, a11y summary
 //   export.js    CSV, PNG (2×) and SVG figures from one drawing routine
 //   beat.js      the beat period, the three-beat window, the force shares (pure)
@@ -33,7 +34,10 @@
 // it a place in layout.js's TEMPLATES (the grid is computed there from the panels shown).
 // The view gets ctx = { store, engine, section, uid, id(s), registerPlot(name, plot),
 // registerExport(name, { csv, figure, table, canvas }), exportButtons(name, label, kinds),
-// toCSV, emit(type, detail), notice(text), setParams(patch) }.
+// toCSV, emit(type, detail), notice(text), setParams(patch), showPanel(name) }.
+// Screens (www/screens.js, the one table of screen → panels): a tablist above the grid opens one
+// screen at a time (`screen` attribute / URL parameter, lab.screen, iframe set({screen})); the
+// panels of other screens are hidden and skip their redraws until shown (viewStore).
 //
 // Attributes: every URL parameter of www/state.js (alpha0, beta0, gamma0, flap_hz, zeta,
 // alpha_phase, beta_phase, gamma_phase, duration, modes, mode, detrend, panels), plus
@@ -54,6 +58,7 @@ import { createStore } from './store.js';
 import { createEngine } from './engine.js';
 import { el, shadowStyles } from './dom.js';
 import { layoutMode, gridLayout, areasCss } from './layout.js';
+import { SCREENS, EXPERIMENT_SCREEN, resolveScreen, screenOfPanel } from './screens.js';
 import { plain, errorText } from './format.js';
 import { toCSV, download, figurePNG, figureSVG, tablePNG, drawFigure, canvasPainter, context2d } from './export.js';
 import * as controls from './views/controls.js';
@@ -122,6 +127,7 @@ export { loadWasm } from './engine.js';
  *   emit: (type: string, detail?: unknown) => void,
  *   notice: (text: string) => void,
  *   setParams: (patch: Partial<LabState>) => void,
+ *   showPanel: (name: string) => void,
  * }} ViewContext
  */
 /** A mounted view: destroy() always; some views add hooks (startWhenVisible, setLayout, studies …). */
@@ -137,7 +143,7 @@ const FIG_W = 900, FIG_H = 560;
 /** Attributes that are not lab parameters. */
 const NOT_PARAMS = ['id', 'class', 'style', 'sync-url', 'embed', 'layout', 'hidden', 'title', 'lang', 'dir', 'slot', 'part', 'tabindex', 'nonce', 'role', 'inert', 'translate', 'is'];
 /** Parameter attributes that apply live when changed after connection (planform= needs a fetch: not live). */
-const LIVE_ATTRS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'panels', 'exp'];
+const LIVE_ATTRS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'panels', 'exp', 'screen'];
 const EVENT = { bubbles: true, composed: true };
 let instances = 0;
 /** Labs built so far on this page: the second one on is "lab 2", … in its sections' names. */
@@ -159,6 +165,12 @@ export class WingLab extends HTMLElement {
   panels;
   /** @type {HTMLElement | null} the panels' grid (its template is set by applyLayout) */
   grid = null;
+  /** @type {HTMLElement} the screen nav (a tablist, see buildNav) */
+  nav;
+  /** @type {HTMLElement} the line that says what the screen shown is for */
+  aboutEl;
+  /** @type {Record<string, HTMLButtonElement>} the nav's tabs by screen id */
+  tabs = {};
   /** the grid's current columns and areas (CSS text) */
   gridCols = '';
   gridAreas = '';
@@ -189,6 +201,12 @@ export class WingLab extends HTMLElement {
     this.drawing = false;
     /** @type {{ name: string, fn: Function }[]} */
     this.drawQueue = [];
+    /** @type {{ name: string, fn: Function }[]} redraws skipped by hidden panels (flushStale) */
+    this.stale = [];
+    /** @type {string | undefined} the screen shown (applyPanels) */
+    this.shownScreen = undefined;
+    /** @type {string[] | null} its panels */
+    this.shownPanels = null;
     /** @type {MessageChannel | null} */
     this.drawPort = null;
     /** bumped when the element is removed: a redraw sequence of the old build stops */
@@ -243,7 +261,9 @@ export class WingLab extends HTMLElement {
       rejected.push({ key: 'mode', why: `expected 1 to ${nModes} (the modes of the ${params.modes === 'fe' ? 'FE wing' : 'paper table'})` });
       params.mode = '1';
     }
-    this.store = createStore({ ...params, result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
+    // A guided experiment opens the screen that shows what it talks about (screen= wins).
+    if (params.exp && !params.screen) params.screen = EXPERIMENT_SCREEN[params.exp] || '';
+    this.store = createStore({ ...params, screen: params.screen || '', result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
     this.engine = createEngine();
     this.build();
     if (rejected.length) {
@@ -254,8 +274,12 @@ export class WingLab extends HTMLElement {
         this.schedule();
         if (this.hasAttribute('sync-url')) this.scheduleUrl();
       }),
-      this.store.subscribe(['panels'], () => this.applyPanels()),
-      this.store.subscribe(['exp'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
+      this.store.subscribe(['panels', 'screen'], () => this.applyPanels()),
+      this.store.subscribe(['exp', 'screen'], (st, changed) => {
+        // Choosing an experiment (chip, attribute, message) opens its screen.
+        if (st.exp && changed.includes('exp') && !changed.includes('screen') && EXPERIMENT_SCREEN[st.exp]) this.store.set({ screen: EXPERIMENT_SCREEN[st.exp] });
+        if (this.hasAttribute('sync-url')) this.scheduleUrl();
+      }),
       this.store.subscribe(['body_rate', 'body_axis'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
       this.store.subscribe(WING_KEYS, () => { this.wantWing(); this.schedule(); }),
       this.store.subscribe(['modes', 'mode'], (st) => {
@@ -288,6 +312,9 @@ export class WingLab extends HTMLElement {
     this.raf = 0;
     this.drawing = false;
     this.drawQueue = [];
+    this.stale = [];
+    this.shownScreen = undefined;
+    this.shownPanels = null;
     this.pendingRender = null;
     this.drawGen++;
     for (const v of Object.values(this.views)) if (v && v.destroy) v.destroy();
@@ -333,8 +360,11 @@ export class WingLab extends HTMLElement {
     this.root = el('div', { class: 'wl-root wl-loading' });
     this.noticeEl = el('p', { class: 'wl-notice', role: 'status', hidden: true });
     this.errorEl = el('p', { class: 'wl-error', role: 'alert', hidden: true });
-    const grid = el('div', { class: 'wl-grid' });
-    this.root.append(this.noticeEl, this.errorEl, grid);
+    const grid = el('div', { class: 'wl-grid', id: id('screen'), role: 'tabpanel' });
+    this.nav = this.buildNav(id);
+    this.aboutEl = el('p', { class: 'wl-screen-about', id: id('screen-about') });
+    grid.setAttribute('aria-describedby', id('screen-about'));
+    this.root.append(this.noticeEl, this.errorEl, this.nav, this.aboutEl, grid);
     this.panels = {};
     const ctx0 = {
       store: this.store,
@@ -348,6 +378,7 @@ export class WingLab extends HTMLElement {
       emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail, ...EVENT })),
       notice: (t) => this.notice(t),
       setParams: (patch) => this.store.set(patch),
+      showPanel: (name) => this.showPanel(name),
     };
     // Several labs on a page: each names its sections after itself (unique landmarks): its
     // aria-label, else the caption of the figure it is in, else "lab N" from the second lab on.
@@ -397,7 +428,7 @@ export class WingLab extends HTMLElement {
     if (!this.grid) return;
     const w = this.getBoundingClientRect().width || this.clientWidth || 1200;
     const mode = layoutMode(w, { embed: this.hasAttribute('embed'), forced: this.getAttribute('layout') });
-    const on = this.store.get().panels;
+    const on = this.shownPanels || this.store.get().panels;
     const visible = LAYOUT.filter((p) => on.includes(p));
     const g = gridLayout(visible, mode);
     const cols = g.columns.join(' ');
@@ -429,13 +460,110 @@ export class WingLab extends HTMLElement {
     return box;
   }
 
+  /**
+   * Shows the panels of the screen in use (www/screens.js: the wanted screen and the author's
+   * `panels=` choice), selects its tab, and redraws the panels that come into view with what
+   * they skipped while hidden (hidden panels do not redraw, see viewStore).
+   */
   applyPanels() {
-    const on = this.store.get().panels;
+    const st = this.store.get();
+    const r = resolveScreen(st.screen || '', st.panels, LAYOUT);
+    const before = this.shownScreen;
+    this.shownScreen = r.id;
+    this.shownPanels = r.shown;
+    const shadow = /** @type {ShadowRoot} */ (this.shadowRoot);
+    const focused = shadow.activeElement;
     for (const [name, sec] of Object.entries(this.panels)) {
-      sec.hidden = !on.includes(name);
+      const was = sec.hidden;
+      sec.hidden = !r.shown.includes(name);
       sec.style.gridArea = name;
+      if (was && !sec.hidden) this.flushStale(name);
     }
+    // The nav belongs to the whole lab: an author's own panel choice (panels=) is one page.
+    const chosen = LAYOUT.every((p) => st.panels.includes(p));
+    this.nav.hidden = !chosen;
+    this.aboutEl.hidden = !chosen;
+    for (const sc of SCREENS) {
+      const tab = this.tabs[sc.id];
+      const on = sc.id === r.id;
+      tab.setAttribute('aria-selected', String(on));
+      tab.tabIndex = on ? 0 : -1;
+      if (on) {
+        this.aboutEl.textContent = `${sc.label}: ${sc.about}.`;
+        /** @type {HTMLElement} */ (this.grid || tab).setAttribute('aria-labelledby', tab.id);
+      }
+    }
+    this.dataset.screen = r.id;
     this.applyLayout();
+    if (before !== undefined && before !== r.id) {
+      // Focus that was in a panel now hidden goes to the selected tab (never lost to <body>).
+      if (focused && focused !== this.tabs[r.id] && !(/** @type {HTMLElement} */ (focused)).checkVisibility?.()) this.tabs[r.id].focus();
+      this.dispatchEvent(new CustomEvent('wl-screen', { detail: { screen: r.id, panels: r.shown.slice() }, ...EVENT }));
+    }
+  }
+
+  /**
+   * The screen nav: a tablist (one tab per screen of www/screens.js; arrow keys, Home and End
+   * move between the tabs, Enter or Space opens one) above the panels' grid (its tabpanel).
+   * @param {(s: string) => string} id
+   */
+  buildNav(id) {
+    const labName = this.labName();
+    const list = el('div', { class: 'wl-screens', role: 'tablist', 'aria-label': labName ? `Screens — ${labName}` : 'Screens of the lab' });
+    this.tabs = {};
+    for (const sc of SCREENS) {
+      const tab = /** @type {HTMLButtonElement} */ (el('button', {
+        type: 'button', role: 'tab', class: 'wl-tab', id: id(`tab-${sc.id}`), 'data-screen': sc.id,
+        'aria-controls': id('screen'), 'aria-selected': 'false', tabindex: '-1', text: sc.label, title: sc.about,
+      }));
+      tab.addEventListener('click', () => this.showScreen(sc.id));
+      this.tabs[sc.id] = tab;
+      list.append(tab);
+    }
+    list.addEventListener('keydown', (e) => {
+      const tabs = Object.values(this.tabs);
+      const at = tabs.indexOf(/** @type {HTMLButtonElement} */ (e.target));
+      if (at < 0) return;
+      const to = { ArrowRight: at + 1, ArrowDown: at + 1, ArrowLeft: at - 1, ArrowUp: at - 1, Home: 0, End: tabs.length - 1 }[e.key];
+      if (to === undefined) return;
+      e.preventDefault();
+      const next = tabs[(to + tabs.length) % tabs.length];
+      for (const t of tabs) t.tabIndex = t === next ? 0 : -1;
+      next.focus();
+    });
+    return list;
+  }
+
+  /**
+   * Opens a screen (an id of www/screens.js); false for an unknown id. `lab.screen = id` does
+   * the same; the `screen` attribute and URL parameter are validated like the others.
+   * @param {string} name
+   */
+  showScreen(name) {
+    if (!SCREENS.some((sc) => sc.id === name)) return false;
+    this.store.set({ screen: name });
+    return true;
+  }
+
+  /** The screen shown (www/screens.js id). */
+  get screen() { return this.shownScreen || ''; }
+  set screen(v) { this.showScreen(String(v)); }
+
+  /** Opens the screen that holds a panel (e.g. a guided experiment's "Go to" button). */
+  showPanel(/** @type {string} */ name) {
+    if (this.panels[name] && this.panels[name].hidden) this.showScreen(screenOfPanel(name, LAYOUT));
+  }
+
+  /** Redraws a panel that comes into view with the new results it skipped while hidden. */
+  flushStale(/** @type {string} */ name) {
+    const entries = this.stale.filter((e) => e.name === name);
+    if (!entries.length) return;
+    this.stale = this.stale.filter((e) => e.name !== name);
+    for (const e of entries) this.deferDraw(e);
+    if (!this.drawing) {
+      this.drawing = true;
+      this.drainDraws(() => { this.drawing = false; this.finishRender(); });
+    }
   }
 
   notice(text) {
@@ -551,7 +679,12 @@ export class WingLab extends HTMLElement {
         if (keys === '*' || !keys.includes('result')) return store.subscribe(keys, fn);
         const entry = { name, fn };
         return store.subscribe(keys, (st, changed) => {
-          if (this.drawing && changed.length === 1 && changed[0] === 'result') this.deferDraw(entry);
+          const onlyResult = changed.length === 1 && changed[0] === 'result';
+          // A panel off the current screen does no work for a new result until it is shown.
+          const sec = this.panels[name];
+          if (onlyResult && sec && sec.hidden) {
+            if (!this.stale.includes(entry)) this.stale.push(entry);
+          } else if (this.drawing && onlyResult) this.deferDraw(entry);
           else fn(st, changed);
         });
       },

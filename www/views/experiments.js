@@ -122,6 +122,7 @@ export function mount(ctx) {
       go.addEventListener('click', () => {
         const sec = section.parentElement && section.parentElement.querySelector(`[data-panel="${target}"]`);
         if (!sec) return;
+        ctx.showPanel(target); // its screen, when the panel is on another one
         sec.scrollIntoView({ behavior: 'smooth', block: 'start' });
         /** @type {HTMLElement | null} */
         const study = sec.querySelector(`[data-study="${e.study.kind === 'resonance' ? 'resonance' : e.study.kind}"]`);
