@@ -90,11 +90,12 @@ export const FE_LAB_INPUT = Object.freeze({ n_modes: 2, mesh_size_mm: 1.0 });
  * The wing's parameters (URL parameters too, written only when they differ from the default so
  * that short links stay short). `core` is the key of the core's table (wasm `wingParameters()`,
  * src/params.rs; tests/js/wing.test.mjs compares ranges with it when the wasm has it). The
- * ranges are the core's; the defaults are the lab's default FE wing (FE_LAB_INPUT: 1 mm
- * elements, 2 modes, as before), which differ from the core table's (automatic size, 4 modes):
- * the lab passes every key to `wingInput`, so its wing never depends on the core's defaults.
- * `clamp` is the basal strip width in mm, 0 = the root edge (also written `clamp=root`);
- * `mesh_mm` 0 = the core's automatic size from the planform.
+ * ranges are the core's; the defaults are the lab's default FE wing (FE_LAB_INPUT: 2 modes,
+ * where the core table has 4): the lab passes every key to `wingInput`, so its wing never
+ * depends on the core's defaults. `clamp` is the basal strip width in mm, 0 = the root edge
+ * (also written `clamp=root`); `mesh_mm` 0 = the core's automatic size from the planform, the
+ * default as in `wingbeat modes` without --mesh-size-mm (1 mm on the default outline, 0.53 mm on
+ * examples/planform-tapered.csv), so a loaded outline is meshed as the CLI meshes it.
  * @type {WingParam[]}
  */
 export const WING = [
@@ -104,7 +105,7 @@ export const WING = [
   { key: 'rho', core: 'rho', label: 'Density ρ', unit: 'kg/m³', min: 10, max: 20000, step: 1, def: 860 },
   { key: 'nu', core: 'nu', label: 'Poisson’s ratio ν', unit: '', min: 0, max: 0.49, step: 0.01, def: 0.3 },
   { key: 'thickness_um', core: 'thickness_um', label: 'Thickness', unit: 'µm', min: 1, max: 10000, step: 0.1, def: 81 },
-  { key: 'mesh_mm', core: 'mesh_mm', label: 'Element size (0 = automatic)', unit: 'mm', min: 0, max: 100, step: 0.05, def: 1 },
+  { key: 'mesh_mm', core: 'mesh_mm', label: 'Element size (0 = automatic)', unit: 'mm', min: 0, max: 100, step: 0.05, def: 0 },
   { key: 'n_modes', core: 'n_modes', label: 'Number of modes', unit: '', min: 1, max: 8, step: 1, def: 2 },
 ];
 

@@ -60,6 +60,40 @@ export function looksLikeModes(text) {
   }
 }
 
+/** The name of the chosen strain point in exported modes documents (the CLI's --point name). */
+export const CHOSEN_POINT = 'S';
+
+/**
+ * A `wingbeat modes` document that carries the strain point the lab shows: with a chosen point
+ * (`chosen`, mm, and its modal strains per mode from modalStrainAt), that point first in every
+ * mode's `strains` (named CHOSEN_POINT; `wingbeat simulate --modes` reports the first point's
+ * strain), the document's own points after it; and `strain_points_mm` ({ name: [x, y] }, an
+ * extra key the CLI's reader ignores), so that an import puts the cross where it was.
+ * @param {string} text the document (feModes' modes_json)
+ * @param {[number, number] | null} chosen
+ * @param {{ eps_x: number, eps_y: number, gamma_xy: number }[] | null} strains per mode
+ * @param {[number, number] | null} own the document's own point P (mm), if known
+ * @returns {string}
+ */
+export function modesDocument(text, chosen, strains, own) {
+  const doc = JSON.parse(text);
+  const known = doc.strain_points_mm && typeof doc.strain_points_mm === 'object' ? doc.strain_points_mm : {};
+  /** @type {Record<string, [number, number]>} */
+  const at = {};
+  // The document's own first point (P, or the S of a document exported before) where it is.
+  const own0 = doc.modes[0] && doc.modes[0].strains && doc.modes[0].strains[0] ? doc.modes[0].strains[0].point : null;
+  if (own && own0 && !(own0 in known)) at[own0] = [own[0], own[1]];
+  if (chosen && strains) {
+    doc.modes.forEach((m, k) => {
+      const rest = (m.strains || []).filter((p) => p.point !== CHOSEN_POINT);
+      m.strains = [{ point: CHOSEN_POINT, eps_x: strains[k].eps_x, eps_y: strains[k].eps_y, gamma_xy: strains[k].gamma_xy }, ...rest];
+    });
+    at[CHOSEN_POINT] = [chosen[0], chosen[1]];
+  }
+  if (Object.keys(at).length) doc.strain_points_mm = { ...known, ...at };
+  return JSON.stringify(doc);
+}
+
 /** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, engine, section, id } = ctx;
@@ -456,10 +490,19 @@ export function mount(ctx) {
     const s = store.get();
     const fe = s.fe;
     if (!fe || s.modes !== 'fe') return say('No FE wing in use yet: choose the FE wing mode set or compute a wing first.', true);
-    const json = /** @type {any} */ (fe).modes_json;
-    if (typeof json !== 'string') return say('This wasm build does not produce the modes document: rebuild www/pkg.', true);
+    const raw = /** @type {any} */ (fe).modes_json;
+    if (typeof raw !== 'string') return say('This wasm build does not produce the modes document: rebuild www/pkg.', true);
+    // The strain point shown (a chosen one, else the wing's own P) goes with the modes.
+    let json;
+    try {
+      const strains = s.strain_point ? engine.modalStrainAt(s.strain_point) : null;
+      json = modesDocument(raw, s.strain_point, strains, fe.strain_point_mm || null);
+    } catch (e) {
+      return say(`Could not export the modes: ${errorText(e)}`, true);
+    }
     download('wingbeat-modes.json', new Blob([json], { type: 'application/json' }));
-    say(`Exported ${fe.modes.length} modes as wingbeat-modes.json (use it with: wingbeat simulate --modes wingbeat-modes.json).`);
+    const sp = s.strain_point;
+    say(`Exported ${fe.modes.length} modes as wingbeat-modes.json${sp ? `, with the chosen strain point ${CHOSEN_POINT} = (${fmt(sp[0], 4)}, ${fmt(sp[1], 4)}) mm first` : ''} (use it with: wingbeat simulate --modes wingbeat-modes.json).`);
     ctx.emit('wl-wing', { state: 'exported' });
   });
   resetBtn.addEventListener('click', () => {
@@ -494,8 +537,21 @@ export function mount(ctx) {
       modes_json: text,
       imported: true,
     };
+    // The strain point the document was exported with (its first point's coordinates, when it
+    // says them): the lab shows the same strain, with the cross where it was.
+    /** @type {[number, number] | null} */
+    let point = null;
+    try {
+      const at = JSON.parse(text).strain_points_mm;
+      const first = r.modes[0] && r.modes[0].strains && r.modes[0].strains[0] && r.modes[0].strains[0].point;
+      const p = at && first ? at[first] : null;
+      if (Array.isArray(p) && p.length === 2 && p.every((v) => typeof v === 'number' && Number.isFinite(v))) point = [p[0], p[1]];
+    } catch {
+      point = null;
+    }
+    if (point) fe.strain_point_mm = point;
     engine.useFe(fe, `import:${name}:${text.length}`);
-    store.set({ modes: 'fe', wing: { input: null, source: 'import', label: name.slice(0, 80), outline: 'file', points: null }, fe, mode: '1' });
+    store.set({ modes: 'fe', wing: { input: null, source: 'import', label: name.slice(0, 80), outline: 'file', points: null }, fe, mode: '1', strain_point: null });
     say(`Imported ${r.modes.length} modes from ${name}.`);
     ctx.emit('wl-wing', { state: 'imported' });
   };
