@@ -106,3 +106,49 @@ export function smooth(env, width) {
   }
   return out;
 }
+
+/**
+ * @typedef {{ kind: 'none' | 'steady' | 'decays' | 'gone', tau: number | null, goneAt: number | null, floor: number }} BeatFate
+ */
+
+/**
+ * What becomes of the beat over a run of `duration` s. The beat is the free vibration (at
+ * f_eff) drifting against the forced one; with damping the free vibration decays as
+ * exp(−t/τ), τ = −1/σ from the Floquet growth rate σ (−ζω for a damped mode), and the beat's
+ * swing with it. `goneAt` = τ·ln(1/floor) is when that swing is down to `floor` (5 %: 3.0 τ) of
+ * its start. Kinds: `none` (no beat period), `steady` (undamped, unstable, or τ too long for the
+ * beat to fade within the run), `decays` (it fades within the run, after at least one beat),
+ * `gone` (it fades within one beat period: nothing to see).
+ * @param {BeatInfo} info
+ * @param {number} growthRate Floquet growth rate σ of the mode, 1/s
+ * @param {number} duration s
+ * @param {{ floor?: number }} [o]
+ * @returns {BeatFate}
+ */
+export function beatFate(info, growthRate, duration, { floor = 0.05 } = {}) {
+  if (info.period == null) return { kind: 'none', tau: null, goneAt: null, floor };
+  if (!info.stable || !(growthRate < 0) || !Number.isFinite(growthRate)) return { kind: 'steady', tau: null, goneAt: null, floor };
+  const tau = -1 / growthRate;
+  const goneAt = tau * Math.log(1 / floor);
+  if (goneAt <= info.period) return { kind: 'gone', tau, goneAt, floor };
+  if (goneAt < duration) return { kind: 'decays', tau, goneAt, floor };
+  return { kind: 'steady', tau, goneAt, floor };
+}
+
+/**
+ * The swing of an envelope between times a and b (s): modulation index (max − min)/(max + min)
+ * of `env` (already averaged over a flap) sampled at `t`; 0 for an empty window.
+ * @param {ArrayLike<number>} t
+ * @param {ArrayLike<number>} env
+ * @param {number} a
+ * @param {number} b
+ */
+export function modulation(t, env, a, b) {
+  let mx = -Infinity, mn = Infinity;
+  for (let i = 0; i < t.length; i++) {
+    if (t[i] < a || t[i] > b) continue;
+    if (env[i] > mx) mx = env[i];
+    if (env[i] < mn) mn = env[i];
+  }
+  return mx + mn > 0 && Number.isFinite(mx) ? (mx - mn) / (mx + mn) : 0;
+}

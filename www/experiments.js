@@ -223,7 +223,7 @@ export const EXPERIMENTS = [
     figure: 'Fig. 8',
     params: { zeta: 0.01, duration: 10 },
     mode: 0,
-    look: 'Look at the overview of the whole 10 s run under the responses plot: the envelope (red) swings strongly at first, then settles to a steady amplitude as the free vibration dies out.',
+    look: 'Look at the overview of the whole run under the responses plot: the envelope (red) swings strongly at first, then settles to a steady amplitude as the free vibration dies out. The responses panel gives the decay time and greys the part of the run where the beat is gone.',
     predict(a, ctx = {}) {
       const k = ctx.mode ?? 0;
       const m = a.sim.modes[k];

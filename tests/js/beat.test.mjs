@@ -1,7 +1,7 @@
 // The beat made explicit (www/beat.js): period = Floquet beat_period_s, formula terms, window.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { beatInfo, beatWindow, shares } from '../../www/beat.js';
+import { beatInfo, beatWindow, beatFate, modulation, shares } from '../../www/beat.js';
 
 const analysis = (over = {}) => ({
   sim: {
@@ -54,4 +54,30 @@ test('smooth: a one-period moving average removes the ripple and keeps the slow 
     const slow = 1 + 0.5 * g * Math.sin((2 * Math.PI * (i - 0.5)) / 2000);
     assert.ok(Math.abs(s[i] - slow) < 2e-3, `${i}: ${s[i]} vs ${slow}`);
   }
+});
+
+test('beatFate: a damped beat decays with τ = −1/σ and is gone after ln(1/floor)·τ; undamped it stays', () => {
+  const b = beatInfo(analysis(), 0); // T_beat = 0.0970 s
+  // ζ = 0.01 at f1 = 62.5 Hz: σ = −ζω = −3.927 1/s, τ = 0.2546 s, gone (5 %) after 0.763 s.
+  const sigma = -0.01 * 2 * Math.PI * 62.5;
+  const f = beatFate(b, sigma, 10);
+  assert.equal(f.kind, 'decays');
+  assert.ok(Math.abs(f.tau - 1 / (0.01 * 2 * Math.PI * 62.5)) < 1e-12);
+  assert.ok(Math.abs(f.goneAt - f.tau * Math.log(20)) < 1e-12);
+  // The same damping in a run shorter than 3τ: the beat lasts the whole run.
+  assert.equal(beatFate(b, sigma, 0.5).kind, 'steady');
+  // Undamped (σ = 0) or unstable: steady; ζ = 0.1 kills it within one beat period: gone.
+  assert.equal(beatFate(b, 0, 10).kind, 'steady');
+  assert.equal(beatFate(b, 0, 10).tau, null);
+  assert.equal(beatFate({ ...b, stable: false }, 0.5, 10).kind, 'steady');
+  assert.equal(beatFate(b, -0.1 * 2 * Math.PI * 62.5, 2).kind, 'gone');
+  assert.equal(beatFate({ ...b, period: null }, sigma, 10).kind, 'none');
+});
+
+test('modulation: (max − min)/(max + min) of the envelope inside a time window', () => {
+  const t = Float64Array.from({ length: 1001 }, (_, i) => i / 1000);
+  const env = Float64Array.from(t, (x) => (x < 0.5 ? 1 + 0.5 * Math.cos(40 * x) : 1));
+  assert.ok(Math.abs(modulation(t, env, 0, 0.4) - 0.5) < 1e-3);
+  assert.equal(modulation(t, env, 0.6, 1), 0);
+  assert.equal(modulation(t, env, 2, 3), 0);
 });

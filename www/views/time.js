@@ -7,7 +7,7 @@
 import { el, rich, isTouch } from '../dom.js';
 import { fmt, plain, UNITS } from '../format.js';
 import { decimate } from '../decimate.js';
-import { beatInfo, beatWindow, shares, smooth } from '../beat.js';
+import { beatInfo, beatWindow, beatFate, modulation, shares, smooth } from '../beat.js';
 import { linePlot, color } from '../plot.js';
 import { peakOf } from './numbers.js';
 import { toQuery, describe } from '../state.js';
@@ -32,6 +32,15 @@ export function mount(ctx) {
   let beat = null;
   /** @type {ReturnType<typeof beatWindow> | null} */
   let bw = null;
+  /** @type {import('../beat.js').BeatFate | null} what becomes of the beat over the run */
+  let fate = null;
+  /** The grey band where a damped beat has died out (both plots). */
+  const goneBand = () => {
+    const r = store.get().result;
+    if (!fate || fate.kind !== 'decays' || fate.goneAt == null || !r) return [];
+    const t = r.analysis.sim.t;
+    return [{ x0: fate.goneAt, x1: t[t.length - 1], label: `beat gone (< ${fmt(100 * fate.floor, 2)} %)`, color: '#555', fill: 'rgba(90,90,90,0.13)' }];
+  };
   /** @type {number[] | null} window shown [t0, t1] (s) */
   let win = null;
   let userWin = false;
@@ -53,7 +62,7 @@ export function mount(ctx) {
       { label: '−envelope', color: color('envelope'), width: 2, legend: false },
     ],
     height: 230,
-    bands: () => (bw && bw.mark && beat && beat.period != null ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []),
+    bands: () => [...(bw && bw.mark && beat && beat.period != null ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []), ...goneBand()],
     markers: () => {
       /** @type {import('../plot.js').Marker[]} */
       const out = [];
@@ -61,7 +70,8 @@ export function mount(ctx) {
         const [x0, x1] = main.xWindow();
         for (let j = -40; j <= 40; j++) {
           const x = bw.mark[0] + j * beat.period;
-          if (j !== 0 && j !== 1 && x0 != null && x1 != null && x >= x0 && x <= x1) out.push({ x, label: '', color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
+          const alive = !fate || fate.kind !== 'decays' || fate.goneAt == null || x <= fate.goneAt;
+          if (j !== 0 && j !== 1 && alive && x0 != null && x1 != null && x >= x0 && x <= x1) out.push({ x, label: '', color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
         }
       }
       const t3 = store.get().t3d;
@@ -103,12 +113,12 @@ export function mount(ctx) {
     xUnit: 's',
     yLabel: '',
     series: [
-      { label: 'Total', color: '#777', width: 1, legend: false },
-      { label: 'Envelope', color: color('envelope'), width: 1, legend: false },
+      { label: 'Total', color: '#8a8a8a', width: 1, legend: false },
+      { label: 'Envelope', color: color('envelope'), width: 1.6, legend: false },
     ],
-    height: 64,
+    height: 150,
     keys: false,
-    bands: () => (win ? [{ x0: win[0], x1: win[1], fill: 'rgba(31,95,191,0.18)' }] : []),
+    bands: () => [...goneBand(), ...(win ? [{ x0: win[0], x1: win[1], fill: 'rgba(31,95,191,0.18)' }] : [])],
     cursor: { drag: { x: true, y: false, setScale: false } },
     hooks: {
       setSelect: [
@@ -178,28 +188,58 @@ export function mount(ctx) {
     const b = beat;
     if (!b) return;
     const m = a.sim.modes[k];
-    const sig = `${k}|${b.period}|${b.fEff}|${b.n}|${b.fd}|${b.stable}|${b.maxModulus}|${s.gamma0 === 0}`;
+    const f = fate || { kind: 'steady', tau: null, goneAt: null, floor: 0.05 };
+    const t = a.sim.t;
+    const env = smooth(a.envelope[k], a.sim.sample_rate_hz / a.sim.flap_freq_hz);
+    const sig = `${k}|${b.period}|${b.fEff}|${b.n}|${b.fd}|${b.stable}|${b.maxModulus}|${s.gamma0 === 0}|${f.kind}|${f.tau}|${t[t.length - 1]}`;
     if (sig === beatSig) return; // unchanged text: no DOM churn (and no repeated live-region announcement)
     beatSig = sig;
     beatBox.replaceChildren();
     beatBox.dataset.beatPeriod = b.period == null ? '' : String(b.period);
+    beatBox.dataset.beatFate = f.kind;
+    beatBox.dataset.beatTau = f.tau == null ? '' : String(f.tau);
+    beatBox.dataset.beatGoneAt = f.goneAt == null ? '' : String(f.goneAt);
     const p = (/** @type {string} */ markup) => el('p', {}, rich(markup));
+    const sigma = m.floquet.growth_rate_per_s;
+    const tauText = f.tau == null ? '' : `τ = −1/σ = ${fmt(f.tau, 3)} s (σ = ${fmt(sigma, 3)} 1/s, the Floquet growth rate; −ζω_{${k + 1}} with ζ = ${fmt(s.zeta, 3)})`;
+    if (f.kind === 'gone' && f.goneAt != null) {
+      beatBox.append(el('p', { class: 'wl-beat-lead' }, el('strong', { class: 'wl-beat-value' }, rich(`No beat to see in mode ${k + 1}`)), rich(`: damping makes the wing’s free vibration die out as exp(−t/τ), ${tauText}. Its swing is down to ${fmt(100 * f.floor, 2)} % after ${fmt(f.goneAt, 3)} s, before one beat period (T_{beat} = ${fmt(b.period, 4)} s) has passed, so the response settles straight into the forced vibration at ${b.n}·f_d = ${fmt(b.fHarm, 6)} Hz.`)));
+      return;
+    }
     if (b.period == null) {
       beatBox.append(p(`**No beat in mode ${k + 1}.**`.replace(/\*\*/g, '')));
       beatBox.append(p(b.stable ? `The effective frequency f_{eff} = ${fmt(b.fEff, 6)} Hz sits on a flap harmonic, so there is nothing to beat against.` : `The largest Floquet multiplier |λ| = ${fmt(b.maxModulus, 6)} exceeds 1: the response grows every flap (a parametric instability) instead of beating.`));
       return;
     }
     const strong = el('strong', { class: 'wl-beat-value', 'data-beat': String(b.period) }, rich(`T_{beat} = ${fmt(b.period, 4)} s`));
-    const lead = el('p', { class: 'wl-beat-lead' },
-      'The beat: the responses — clearest in the Coriolis envelope (red) — swell and fade once every ',
-      strong,
-      ' (shaded; dotted lines repeat it).');
+    const lead = f.kind === 'decays'
+      ? el('p', { class: 'wl-beat-lead' },
+        'The beat decays: the responses — clearest in the Coriolis envelope (red) — swell and fade every ',
+        strong,
+        rich(` only at first (shaded), because damping makes the wing’s free vibration die out as exp(−t/τ), ${tauText}.`))
+      : el('p', { class: 'wl-beat-lead' },
+        'The beat: the responses — clearest in the Coriolis envelope (red) — swell and fade once every ',
+        strong,
+        ' (shaded; dotted lines repeat it).');
     const formula = p(
       `The wing rings at its effective natural frequency f_{eff} = ${fmt(b.fEff, 6)} Hz while the flapping drives it at ${b.n}·f_d = ${b.n} × ${fmt(b.fd, 4)} Hz = ${fmt(b.fHarm, 6)} Hz; the two drift in and out of step: ` +
       `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(b.fEff, 6)} − ${fmt(b.fHarm, 6)}| Hz = ${fmt(b.period, 4)} s.`,
     );
     formula.className = 'wl-beat-formula';
-    beatBox.append(lead, formula);
+    beatBox.append(lead);
+    if (f.kind === 'decays' && f.goneAt != null) {
+      const hi = t[t.length - 1];
+      const early = modulation(t, env, t[0] + 1 / b.fd, Math.min(f.goneAt, t[0] + 1 / b.fd + 2 * b.period));
+      const late = modulation(t, env, f.goneAt, hi - 1 / b.fd);
+      const gone = p(`After ${fmt(f.goneAt, 3)} s (${fmt(Math.log(1 / f.floor), 2)} τ) the swing is below ${fmt(100 * f.floor, 2)} % of its start and the beat is gone: only the forced vibration at ${b.n}·f_d remains and the envelope is flat (grey in both plots). Measured swing of the envelope, (max − min)/(max + min): ${fmt(early, 3)} over the first two beats, ${fmt(late, 2)} from ${fmt(f.goneAt, 3)} s to the end of the ${fmt(hi, 3)} s run.`);
+      gone.className = 'wl-beat-gone';
+      gone.dataset.early = String(early);
+      gone.dataset.late = String(late);
+      beatBox.append(gone);
+    } else if (f.kind === 'steady' && f.tau != null) {
+      beatBox.append(p(`Damping fades it slowly: the free vibration decays as exp(−t/τ), ${tauText}, longer than this ${fmt(t[t.length - 1], 3)} s run would need to lose it.`));
+    }
+    beatBox.append(formula);
     if (s.gamma0 === 0) beatBox.append(p('With γ_0 = 0 there is no Coriolis force (the Coriolis response is zero); the other responses still beat with this period.'));
     if (!b.stable) beatBox.append(p(`Unstable: |λ| = ${fmt(b.maxModulus, 6)} > 1, the response grows.`));
     void m;
@@ -234,8 +274,11 @@ export function mount(ctx) {
     const neg = new Float64Array(env.length);
     for (let i = 0; i < env.length; i++) neg[i] = -env[i];
     beat = beatInfo(a, k);
-    bw = beatWindow(a.sim.t, env, beat.period);
     const [lo, hi] = [a.sim.t[0], a.sim.t[a.sim.t.length - 1]];
+    fate = beatFate(beat, m.floquet.growth_rate_per_s, hi - lo);
+    bw = beatWindow(a.sim.t, env, fate.kind === 'gone' ? null : beat.period);
+    // A damped beat: the marked beat only where the beat still is.
+    if (fate.kind === 'decays' && bw.mark && fate.goneAt != null && bw.mark[1] > fate.goneAt) bw = { ...bw, mark: null };
     let w = userWin && win ? [Math.max(lo, win[0]), Math.min(hi, win[1])] : [bw.x0, bw.x1];
     if (!(w[1] > w[0])) w = [bw.x0, bw.x1];
     main.setData([a.sim.t, m.q.euler, m.q.centrifugal, m.q.coriolis, m.q.total, env, neg], w);
@@ -247,9 +290,9 @@ export function mount(ctx) {
     // The responses' peaks are the core's (Analysis.peaks); only the smoothed envelope is scanned here.
     main.setSummary(
       `Mode ${k + 1}, window ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s of a ${fmt(hi, 3)} s run. Peak |q| (${plain(Q)}): total ${fmt(peakOf(a, k, 'total'), 3)}, Euler ${fmt(peakOf(a, k, 'euler'), 3)}, centrifugal ${fmt(peakOf(a, k, 'centrifugal'), 3)}, Coriolis ${fmt(peakOf(a, k, 'coriolis'), 3)}; largest Coriolis envelope ${fmt(peak(env), 3)}. ` +
-      (beat.period == null ? 'No beat.' : `Beat period ${fmt(beat.period, 4)} s, marked from ${fmt(bw.mark ? bw.mark[0] : NaN, 4)} s.`),
+      (beat.period == null || fate.kind === 'gone' ? 'No beat.' : `Beat period ${fmt(beat.period, 4)} s${bw.mark ? `, marked from ${fmt(bw.mark[0], 4)} s` : ''}${fate.kind === 'decays' && fate.goneAt != null ? `; the beat decays (τ = ${fmt(/** @type {number} */ (fate.tau), 3)} s) and is gone after ${fmt(fate.goneAt, 3)} s` : ''}.`),
     );
-    ov.setSummary(`Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.`);
+    ov.setSummary(`Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.${fate.kind === 'decays' && fate.goneAt != null ? ` Grey from ${fmt(fate.goneAt, 3)} s: the beat is gone.` : ''}`);
   };
   const unsub = [
     store.subscribe(['result'], draw),
@@ -286,7 +329,7 @@ export function mount(ctx) {
         xLabel: 't (s)',
         yLabel: `q (${Q})`,
         series: main.exportSeries(),
-        bands: bw && bw.mark && beat ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : [],
+        bands: [...(bw && bw.mark && beat ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []), ...goneBand()],
         note: beat && beat.period != null ? `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(beat.fEff, 6)} − ${beat.n}×${fmt(beat.fd, 4)}| Hz = ${fmt(beat.period, 4)} s (Floquet). ` + (s.modes === 'paper' ? 'q in paper units (Table 4 is not SI).' : 'q in SI.') : '',
       };
     },
