@@ -40,6 +40,10 @@ mkdir -p "$dest/vendor"
 cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css "$dest/vendor/"
 cp node_modules/uplot/LICENSE "$dest/vendor/uPlot.LICENSE" 2>/dev/null || true
 
+# The service worker's precache list (www/sw.js): the real files of this folder, written after
+# everything else is in place (the dist/ extras below are left out by the script itself).
+node scripts/precache-manifest.mjs "$dest"
+
 if [ "$dest" = dist ]; then
   # The single-folder download: a little server (node serve.mjs), README.txt, and the service
   # worker's build stamp (a hash of the folder's files, so a new build replaces the old copy).

@@ -2,9 +2,11 @@
 // The lab's service worker (registered by www/offline.js, never by the element): keeps a copy of
 // the site's OWN files so that after one visit the lab works with the network off.
 //   - install: precaches the files the lab needs, including those not fetched yet (the worker,
-//     the wasm module, the views): a list of entry files plus every same-origin module, style
-//     sheet and page they reference (import / import() / new URL(…, import.meta.url), src=,
-//     href=, url()), so a new module is picked up without editing this list.
+//     the wasm module, the views): the files listed in precache.json, the manifest that
+//     scripts/build-web.sh writes from the built folder itself (every file it holds, less this
+//     worker, the manifest and TypeScript declarations), so the list is the real files and never
+//     a guess from the sources' text. A file added after the last build is cached when a page
+//     first fetches it (network first, below).
 //   - fetch: network first for same-origin GETs inside this scope (development never sees stale
 //     files; each answer refreshes the copy), the copy when the network fails or has not answered
 //     in NET_TIMEOUT_MS; cross-origin requests, other methods and range requests are left alone
@@ -31,77 +33,53 @@
   const BUILD = 'dev';
   /** How long a request waits for the network before the copy answers (when there is one). */
   const NET_TIMEOUT_MS = 4000;
-  /** Most files precached (a guard for the reference crawl). */
+  /** Most files precached (a guard against a runaway manifest). */
   const MAX_FILES = 300;
+  /** The build's file list (scripts/build-web.sh): { version: 1, files: [path relative to the scope] }. */
+  const MANIFEST = 'precache.json';
   const sw = /** @type {SwScope} */ (/** @type {unknown} */ (self));
   const SCOPE = sw.registration.scope;
   const CACHE = `wingbeat:${SCOPE}:${BUILD}`;
   /** Entry files, relative to the scope. Install fails (and is retried) if one of ESSENTIAL fails. */
   const ESSENTIAL = ['./', 'index.html', 'main.js', 'lab.js', 'worker.js', 'style.css', 'pkg/wingbeat.js', 'pkg/wingbeat_bg.wasm'];
-  const OPTIONAL = ['page.css', 'offline.js', 'embed-api.js', 'vendor/uPlot.esm.js', 'vendor/uPlot.min.css', 'embed-demo.html',
-    'examples/kinematics-measured.csv', 'examples/planform-narrow.json', 'examples/planform-tapered.csv'];
 
   /** @param {string} href */
   const inScope = (href) => href.startsWith(SCOPE) && !href.endsWith('/sw.js');
 
   /**
-   * Same-origin references in a text file (JS, CSS or HTML), resolved against `base`.
-   * @param {string} text
-   * @param {string} base
-   * @param {string} type
+   * The build's file list: absolute URLs inside the scope (the manifest is checked: a list of
+   * relative paths, no scheme, no `..`). Throws when it cannot be read: install then fails and
+   * is retried on the next visit.
    */
-  function references(text, base, type) {
-    /** @type {RegExp[]} */
-    const res = [];
-    if (/javascript/.test(type) || /\.m?js$/.test(base)) {
-      res.push(/\bfrom\s*['"]([^'"\n]+)['"]/g, /\bimport\s*\(\s*['"]([^'"\n]+)['"]\s*\)/g, /\bimport\s+['"]([^'"\n]+)['"]/g,
-        /new\s+URL\(\s*['"]([^'"\n]+)['"]\s*,\s*(?:import\.meta\.url|HERE)\s*\)/g);
-    }
-    if (/css/.test(type) || /\.css$/.test(base)) res.push(/url\(\s*['"]?([^'")\s]+)['"]?\s*\)/g, /@import\s+['"]([^'"]+)['"]/g);
-    if (/html/.test(type) || /\.html$|\/$/.test(base)) res.push(/\b(?:src|href)\s*=\s*["']([^"'#?]+)[^"']*["']/g);
+  async function manifest() {
+    const res = await fetch(new Request(new URL(MANIFEST, SCOPE).href, { cache: 'reload', credentials: 'same-origin' }));
+    if (!res.ok) throw new Error(`precache: ${MANIFEST}: HTTP ${res.status} (scripts/build-web.sh writes it)`);
+    const m = await res.json();
+    if (!m || m.version !== 1 || !Array.isArray(m.files)) throw new Error(`precache: ${MANIFEST}: expected { version: 1, files: [...] }`);
     /** @type {string[]} */
     const out = [];
-    for (const re of res) {
-      for (const m of text.matchAll(re)) {
-        const ref = m[1];
-        if (/^(?:data|blob|javascript|mailto):/i.test(ref) || ref.includes('${')) continue;
-        try {
-          const u = new URL(ref, base);
-          u.hash = '';
-          u.search = '';
-          if (inScope(u.href)) out.push(u.href);
-        } catch {
-          // not a URL
-        }
-      }
+    for (const f of m.files) {
+      if (typeof f !== 'string' || /^[a-z]+:|^\/|(^|\/)\.\.(\/|$)/i.test(f)) continue;
+      const u = new URL(f, SCOPE).href;
+      if (inScope(u)) out.push(u);
     }
-    return out;
+    return out.slice(0, MAX_FILES);
   }
 
-  /** Fetches the entry files and everything they reference into the cache. */
+  /** Fetches the entry files and every file of the build's manifest into the cache. */
   async function precache() {
     const cache = await caches.open(CACHE);
     const must = new Set(ESSENTIAL.map((p) => new URL(p, SCOPE).href));
-    const seen = new Set();
-    let level = [...must, ...OPTIONAL.map((p) => new URL(p, SCOPE).href)];
-    while (level.length && seen.size < MAX_FILES) {
-      const todo = [...new Set(level)].filter((u) => !seen.has(u)).slice(0, MAX_FILES - seen.size);
-      todo.forEach((u) => seen.add(u));
-      const found = await Promise.all(todo.map(async (url) => {
-        try {
-          const res = await fetch(new Request(url, { cache: 'reload', credentials: 'same-origin' }));
-          if (!res.ok || res.redirected || res.type !== 'basic') throw new Error(`HTTP ${res.status}`);
-          const type = res.headers.get('content-type') || '';
-          const refs = /javascript|css|html/.test(type) ? references(await res.clone().text(), url, type) : [];
-          await cache.put(url, res);
-          return refs;
-        } catch (e) {
-          if (must.has(url)) throw new Error(`precache: ${url}: ${e instanceof Error ? e.message : e}`);
-          return [];
-        }
-      }));
-      level = found.flat();
-    }
+    const all = [...new Set([...must, ...(await manifest())])];
+    await Promise.all(all.map(async (url) => {
+      try {
+        const res = await fetch(new Request(url, { cache: 'reload', credentials: 'same-origin' }));
+        if (!res.ok || res.redirected || res.type !== 'basic') throw new Error(`HTTP ${res.status}`);
+        await cache.put(url, res);
+      } catch (e) {
+        if (must.has(url)) throw new Error(`precache: ${url}: ${e instanceof Error ? e.message : e}`);
+      }
+    }));
   }
 
   sw.addEventListener('install', (e) => {
