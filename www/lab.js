@@ -446,7 +446,16 @@ export class WingLab extends HTMLElement {
   }
 
   exportButtons(name, label, kinds = ['csv', 'png']) {
+    // On a focused screen the kinds fold behind one "Export…" button (style.css); the full page
+    // shows them all, as before.
     const box = el('span', { class: 'wl-export' });
+    const toggle = el('button', { type: 'button', class: 'wl-export-toggle', 'aria-expanded': 'false', 'aria-label': `Export ${plain(label)}…`, text: 'Export…' });
+    toggle.addEventListener('click', () => {
+      const open = toggle.getAttribute('aria-expanded') !== 'true';
+      toggle.setAttribute('aria-expanded', String(open));
+      box.classList.toggle('wl-open', open);
+    });
+    box.append(toggle);
     for (const kind of kinds) {
       box.append(el('button', {
         type: 'button',
@@ -494,6 +503,8 @@ export class WingLab extends HTMLElement {
       }
     }
     this.dataset.screen = r.id;
+    // Views that show less on a focused screen (folded options) than on the full page.
+    if (before !== r.id) for (const v of Object.values(this.views)) if (v && v.setScreen) v.setScreen(r.id);
     this.applyLayout();
     if (before !== undefined && before !== r.id) {
       // Focus that was in a panel now hidden goes to the selected tab (never lost to <body>).

@@ -12,7 +12,7 @@
 // asked for `panels=controls,numbers,spectrum` shows exactly those three, as before.
 
 /**
- * @typedef {{ id: string, label: string, panels: string[] | null, about: string }} Screen
+ * @typedef {{ id: string, label: string, panels: readonly string[] | null, about: string }} Screen
  * `panels`: the panels of the screen in no particular order (the lab's LAYOUT orders them);
  * null = every panel (the full page). `about`: one line for the nav's description.
  */
@@ -20,11 +20,11 @@
 /** @type {readonly Screen[]} */
 export const SCREENS = Object.freeze([
   { id: 'beat', label: 'The beat', panels: ['wing3d', 'controls', 'time', 'experiments'], about: 'the flapping wing in 3-D, the main sliders and the responses with their beat' },
-  { id: 'forces', label: 'Forces', panels: ['controls', 'spectrum', 'numbers', 'studies', 'experiments'], about: 'the spectra of the force terms, their shares and the paper’s studies' },
-  { id: 'wing', label: 'Your wing', panels: ['wing', 'kinematics', 'modeshape', 'strain'], about: 'your own wing outline and stroke, its mode shapes and the strain' },
+  { id: 'forces', label: 'Forces', panels: ['controls', 'kinematics', 'spectrum', 'numbers'], about: 'the stroke that drives the wing, the spectra of the force terms and each force’s share of the response' },
+  { id: 'wing', label: 'Your wing', panels: ['wing', 'modeshape', 'strain'], about: 'your own wing outline and material, its mode shapes and the strain' },
   { id: 'sensing', label: 'Sensing', panels: ['wing3d', 'sensing', 'experiments'], about: 'sensing a body rotation with strain sensors on the wing' },
-  { id: 'research', label: 'Research', panels: ['resonance', 'time', 'report', 'experiments'], about: 'the resonance map, the responses and the paper’s claims checked' },
-  { id: 'full', label: 'Full page', panels: null, about: 'every panel on one long page' },
+  { id: 'research', label: 'Research', panels: ['studies', 'resonance', 'numbers', 'report', 'experiments'], about: 'the paper’s studies (Figs. 6–8), the resonance map and the paper’s claims checked' },
+  { id: 'full', label: 'Full page', panels: null, about: 'every panel on one long page, as for research' },
 ].map((s) => Object.freeze({ ...s, panels: s.panels ? Object.freeze(s.panels.slice()) : null })));
 
 /** Screen ids, in nav order (`screen=` takes one of them). */
@@ -33,15 +33,20 @@ export const SCREEN_IDS = Object.freeze(SCREENS.map((s) => s.id));
 /** The screen the lab opens when nothing asks for another. */
 export const DEFAULT_SCREEN = 'beat';
 
-/** The screen that shows what each guided experiment (www/experiments.js) talks about. */
+/**
+ * The screen that shows what each guided experiment (www/experiments.js) talks about: the
+ * responses plot for most, the study for the yaw sweep (Fig. 6) and the initial-condition map
+ * (Fig. 7); an experiment's study's "Go to" button (views/experiments.js) opens the screen
+ * of the study's panel (screenOfPanel), which holds the experiment's text too.
+ */
 export const EXPERIMENT_SCREEN = Object.freeze({
   beat: 'beat',
   'no-yaw': 'beat',
   damping: 'beat',
-  yaw: 'forces',
-  ic: 'forces',
-  resonance: 'research',
-  instability: 'research',
+  yaw: 'research',
+  ic: 'research',
+  resonance: 'beat',
+  instability: 'beat',
   sensing: 'sensing',
 });
 
@@ -62,7 +67,8 @@ export function screen(id) {
 export function screenPanels(id, all) {
   const s = screen(id);
   if (!s) return [];
-  return s.panels ? all.filter((p) => /** @type {readonly string[]} */ (s.panels).includes(p)) : all.slice();
+  const own = s.panels;
+  return own ? all.filter((p) => own.includes(p)) : all.slice();
 }
 
 /**

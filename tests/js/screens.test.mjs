@@ -37,9 +37,9 @@ test('resolveScreen: default, wanted, and an author\'s panels= choice shown exac
   const m = resolveScreen('', ['controls', 'experiments', 'sensing'], all);
   assert.deepEqual(m.shown.slice().sort(), ['controls', 'experiments', 'sensing']);
   // A wanted screen holding none of the chosen panels falls back like no screen.
-  const n = resolveScreen('research', ['numbers'], all);
+  const n = resolveScreen('beat', ['numbers'], all);
   assert.deepEqual(n.shown, ['numbers']);
-  assert.ok(!n.offered.includes('research'));
+  assert.ok(!n.offered.includes('beat'));
   // A wanted screen with a choice: its chosen panels only.
   assert.deepEqual(resolveScreen('beat', ['controls', 'numbers', 'spectrum'], all).shown, ['controls']);
 });
@@ -65,10 +65,12 @@ test('every guided experiment opens a screen that shows the experiment and what 
     const shown = screenPanels(id, PANELS);
     assert.ok(shown.includes('experiments'), `${e.id}: the experiment's text is on ${id}`);
     if (e.study) {
+      // Its "Go to" button opens the study's screen, which shows the experiment's text too.
       const target = e.study.kind === 'resonance' ? 'resonance' : 'studies';
-      assert.ok(shown.includes(target), `${e.id}: its study (${target}) is on ${id}`);
+      const there = screenPanels(screenOfPanel(target, PANELS), PANELS);
+      assert.ok(there.includes(target) && there.includes('experiments'), `${e.id}: ${target} with the experiment`);
     }
   }
   assert.ok(screenPanels(EXPERIMENT_SCREEN.sensing, PANELS).includes('sensing'));
-  for (const id of ['beat', 'no-yaw', 'damping']) assert.ok(screenPanels(EXPERIMENT_SCREEN[id], PANELS).includes('time'), `${id} talks about the responses plot`);
+  for (const id of ['beat', 'no-yaw', 'damping', 'resonance', 'instability']) assert.ok(screenPanels(EXPERIMENT_SCREEN[id], PANELS).includes('time'), `${id} talks about the responses plot`);
 });

@@ -83,6 +83,9 @@ export function mount(ctx) {
     timingEl,
   );
 
+  let narrow = false;
+  /** @type {boolean | null} on a focused screen (null: not told yet) */
+  let focused = null;
   const setMore = (/** @type {boolean} */ open) => {
     moreBox.hidden = !open;
     moreBtn.setAttribute('aria-expanded', String(open));
@@ -136,9 +139,21 @@ export function mount(ctx) {
     selects,
     /** Phone: a compact strip of the five main sliders; "More parameters" folds away. */
     setLayout(mode) {
-      const narrow = mode === 'narrow';
+      narrow = mode === 'narrow';
       section.classList.toggle('wl-compact', narrow);
-      setMore(!narrow);
+      setMore(!(narrow || focused));
+    },
+    /**
+     * A focused screen (www/screens.js): the five main sliders, the rest folded under "More
+     * parameters…" as on a phone (full labels kept); the full page shows them all.
+     * @param {string} screen
+     */
+    setScreen(screen) {
+      const f = screen !== 'full';
+      if (f === focused) return;
+      focused = f;
+      section.classList.toggle('wl-foldable', focused);
+      setMore(!(narrow || focused));
     },
     destroy() {
       unsub.forEach((f) => f());

@@ -7,6 +7,7 @@
 // experiment's parameters (ctx.setParams).
 import { el } from '../dom.js';
 import { plain, errorText } from '../format.js';
+import { SCREENS, EXPERIMENT_SCREEN } from '../screens.js';
 import { EXPERIMENTS, experiment, experimentPatch, experimentQuery, predict } from '../experiments.js';
 
 export const title = 'Guided experiments';
@@ -37,7 +38,9 @@ export function mount(ctx) {
   }
   const detail = el('div', { class: 'wl-exp-detail' });
   const live = el('div', { class: 'wl-sr', 'aria-live': 'polite' });
-  section.append(list, detail, live);
+  // On a focused screen only its own experiments are listed (www/screens.js); the rest are named.
+  const elsewhere = el('p', { class: 'wl-note wl-exp-elsewhere', hidden: true });
+  section.append(list, elsewhere, detail, live);
 
   const studies = new Map(); // key → { result, error, job }
   let lastAnnounced = '';
@@ -143,6 +146,22 @@ export function mount(ctx) {
   const unsub = store.subscribe(['exp', 'result'], refresh);
   refresh();
   return {
+    /**
+     * Lists the experiments of a screen (all on the full page) and says where the others are.
+     * @param {string} screenId
+     */
+    setScreen(screenId) {
+      const other = new Set();
+      for (const [k, a] of links) {
+        const home = EXPERIMENT_SCREEN[/** @type {keyof typeof EXPERIMENT_SCREEN} */ (k)];
+        const here = screenId === 'full' || home === screenId;
+        /** @type {HTMLElement} */ (a.parentElement).hidden = !here;
+        if (!here) other.add(home);
+      }
+      const names = SCREENS.filter((sc) => other.has(sc.id)).map((sc) => `“${sc.label}”`);
+      elsewhere.hidden = names.length === 0;
+      elsewhere.textContent = names.length ? `More experiments on the ${names.join(', ').replace(/, ([^,]*)$/, ' and $1')} screen${names.length > 1 ? 's' : ''}.` : '';
+    },
     choose,
     refresh,
     destroy() {

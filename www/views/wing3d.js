@@ -225,6 +225,9 @@ export function mount(ctx) {
     options,
   );
   const sceneBox = options;
+  let narrowNow = false;
+  /** @type {boolean | null} on a focused screen (null: not told yet) */
+  let focusedNow = null;
   const defl = el('p', { class: 'wl-w3-defl' });
   const note = el('p', { class: 'wl-note' });
   options.append(note);
@@ -1057,7 +1060,14 @@ export function mount(ctx) {
       store.set({ playing: false, t3d: Math.min(dur, Math.max(0, Number.isFinite(t) ? t : 0)) });
     },
     setPlaying(on) { store.set({ playing: !!on }); },
-    setLayout(mode) { options.open = mode !== 'narrow'; },
+    setLayout(mode) { narrowNow = mode === 'narrow'; options.open = !narrowNow && !focusedNow; },
+    /** A focused screen (www/screens.js) starts with the view options folded; the full page open. */
+    setScreen(screen) {
+      const f = screen !== 'full';
+      if (f === focusedNow) return;
+      focusedNow = f;
+      options.open = !narrowNow && !focusedNow;
+    },
     destroy() {
       unsub.forEach((f) => f());
       store.set({ playing: false });
