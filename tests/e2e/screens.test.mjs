@@ -70,6 +70,15 @@ async function openScreen(query, viewport = { width: 1280, height: 800 }) {
   return o;
 }
 
+/** Waits until a shown 3-D view has its wing (its placeholder is taller than the view). */
+async function settled(page) {
+  await page.waitForFunction(() => {
+    const box = __wl.q('[data-wing3d]');
+    return !box || !box.checkVisibility() || box.dataset.state !== 'loading';
+  }, null, { timeout: 60000 });
+  await page.waitForTimeout(300);
+}
+
 /** Injects axe and runs every default rule plus target-size on the whole page. */
 async function axe(page) {
   await page.addScriptTag({ path: AXE });
@@ -87,7 +96,7 @@ after(() => {
 for (const s of FOCUSED) {
   test(`screen ${s.id} at 1280×800: at most ${MAX_HEIGHT} px tall, at most ${MAX_CONTROLS} visible controls, its panels only, no axe violations`, async () => {
     const { page, problems, context } = await openScreen(`?screen=${s.id}`);
-    await page.waitForTimeout(300); // the 3-D view and late panels settle
+    await settled(page);
     const m = await measure(page);
     measured.push({ screen: s.id, viewport: '1280x800', ...m });
     assert.equal(m.screen, s.id);
@@ -104,6 +113,7 @@ for (const s of FOCUSED) {
 
 test('the full page keeps every panel (and is the long page it was), with no axe violations', async () => {
   const { page, problems, context } = await openScreen('?screen=full');
+  await settled(page);
   const m = await measure(page);
   measured.push({ screen: 'full', viewport: '1280x800', ...m });
   assert.deepEqual(m.panels.slice().sort(), PANELS.slice().sort());
@@ -120,7 +130,7 @@ test('phone 390×844: every screen shown, screenshots, no axe violations', async
   for (const id of SCREEN_IDS) {
     await page.evaluate((s) => { document.querySelector('wing-lab').screen = s; }, id);
     await page.waitForFunction((s) => document.querySelector('wing-lab').dataset.screen === s, id);
-    await page.waitForTimeout(300);
+    await settled(page);
     const m = await measure(page);
     measured.push({ screen: id, viewport: '390x844', ...m });
     await page.screenshot({ path: path.join(SHOTS, `${id}-390.png`), fullPage: true });
