@@ -15,9 +15,10 @@ after(async () => {
   if (env) await env.close();
 });
 
+/** The lab page on its full-page screen (these tests drive panels of every screen), unless the query picks a screen. */
 async function lab(query = '', viewport) {
   const o = await openPage(env.browser, env.url, viewport);
-  await o.page.goto(env.url + query);
+  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
   await waitRenders(o.page, 1);
   return o;
 }
