@@ -49,7 +49,8 @@ function save(name, vs) {
 for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
   test(`axe: the lab page has no violations (${viewport.width}×${viewport.height}, experiment + resonance map open)`, async () => {
     const { page, problems, context } = await openPage(env.browser, env.url, viewport);
-    await page.goto(`${env.url}?${experimentQuery('beat')}`);
+    // The full page: every panel scanned at once (tests/e2e/screens.test.mjs scans each screen).
+    await page.goto(`${env.url}?${experimentQuery('beat')}&screen=full`);
     await waitRenders(page, 1);
     await page.waitForFunction(() => __wl.q('[data-panel="experiments"] [data-check]'), null, { timeout: 30000 });
     const inner = '[data-study="resonance"]';
