@@ -21,9 +21,10 @@ after(async () => {
   if (env) await env.close();
 });
 
+/** The lab page on its full-page screen (every panel), unless the query picks a screen. */
 async function open(viewport, query = '') {
   const o = await openPage(env.browser, env.url, viewport);
-  await o.page.goto(env.url + query);
+  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
   await waitRenders(o.page, 1);
   return o;
 }
@@ -142,13 +143,14 @@ for (const vp of SIZES) {
         if (r.width === 0 || r.height === 0 || cs.visibility === 'hidden') continue;
         e.dataset.tabProbe = String(out.length);
         const panel = e.closest('.wl-panel');
-        out.push({ i: out.length, panel: panel ? panel.dataset.panel : '', top: r.top + scrollY, left: r.left + scrollX, bottom: r.bottom + scrollY, tag: e.tagName, text: (e.getAttribute('aria-label') || e.textContent || '').slice(0, 30) });
+        // The screen tabs (one tab stop) come before the panels.
+        out.push({ i: out.length, panel: panel ? panel.dataset.panel : e.closest('[role=tablist]') ? 'screens' : '', top: r.top + scrollY, left: r.left + scrollX, bottom: r.bottom + scrollY, tag: e.tagName, text: (e.getAttribute('aria-label') || e.textContent || '').slice(0, 30) });
       }
       return out;
     });
     assert.ok(items.length > 30);
     // Panel boxes at scroll 0 (the phone's slider strip is sticky: it moves once the page scrolls).
-    const boxes = await page.$$eval('wing-lab .wl-panel', (ps) => Object.fromEntries(ps.filter((p) => !p.hidden).map((p) => { const r = p.getBoundingClientRect(); return [p.dataset.panel, [r.top + scrollY, r.left]]; })));
+    const boxes = await page.$$eval('wing-lab .wl-panel, wing-lab [role=tablist]', (ps) => Object.fromEntries(ps.filter((p) => !p.hidden).map((p) => { const r = p.getBoundingClientRect(); return [p.dataset.panel || 'screens', [r.top + scrollY, r.left]]; })));
 
     // Focus order, by pressing Tab from the page start (focus inside the lab's shadow root shows
     // on the page as the lab itself: __wl.active() follows it down).
