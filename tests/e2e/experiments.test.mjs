@@ -131,7 +131,7 @@ test('a click on an experiment link applies it in place and writes a shareable U
 test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, cancel', async () => {
   const o = await openPage(env.browser, env.url, { width: 1280, height: 800 });
   const { page } = o;
-  await page.goto(env.url);
+  await page.goto(`${env.url}?screen=full`); // every panel, export buttons unfolded
   await waitRenders(page, 1);
   const box = `wing-lab ${BOX_IN}`;
   await page.click(`${box} [data-run="resonance"]`);
@@ -193,7 +193,8 @@ test('resonance map with α0 as a second axis draws a heat map; phone layout scr
   for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
     const o = await openPage(env.browser, env.url, viewport);
     const { page } = o;
-    await page.goto(`${env.url}?${experimentQuery('instability')}`);
+    // The experiment opens The beat (the responses); its map is on the Research screen.
+    await page.goto(`${env.url}?${experimentQuery('instability')}&screen=research`);
     await waitRenders(page, 1);
     await waitChecks(page, 'instability');
     await page.locator(PANEL).scrollIntoViewIfNeeded();

@@ -301,3 +301,21 @@ test('the screen attribute of <wing-lab> and the iframe API set({screen}) open a
   assert.deepEqual(problems, []);
   await context.close();
 });
+
+test('a focused screen folds the export kinds behind one Export… button; opened, they export', async () => {
+  const { page, problems, context } = await openScreen('?screen=beat');
+  const head = 'wing-lab [data-panel="time"] .wl-head';
+  assert.equal(await page.isVisible(`${head} [data-export="csv"]`), false);
+  assert.equal(await page.getAttribute(`${head} .wl-export-toggle`, 'aria-expanded'), 'false');
+  await page.click(`${head} .wl-export-toggle`);
+  assert.equal(await page.getAttribute(`${head} .wl-export-toggle`, 'aria-expanded'), 'true');
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click(`${head} [data-export="csv"]`)]);
+  assert.equal(dl.suggestedFilename(), 'wingbeat-time.csv');
+  // The full page shows the kinds as before, with no toggle.
+  await page.click('wing-lab [role=tab][data-screen="full"]');
+  await page.waitForFunction(() => document.querySelector('wing-lab').dataset.screen === 'full');
+  assert.equal(await page.isVisible(`${head} .wl-export-toggle`), false);
+  assert.equal(await page.isVisible(`wing-lab [data-panel="spectrum"] .wl-head [data-export="svg"]`), true);
+  assert.deepEqual(problems, []);
+  await context.close();
+});
