@@ -21,9 +21,8 @@
 // Parameters are validated by the URL parser (state.js parsePairs): the same ranges, the same
 // messages. A set is all or nothing.
 
-import { parsePairs, paramsOf, toQuery, PANELS } from './state.js';
+import { parsePairs, paramsOf, toQuery, shortKey, PANELS } from './state.js';
 import { fmt } from './format.js';
-import { experimentPatch } from './experiments.js';
 
 export const API_VERSION = 1;
 const PREFIX = 'wingbeat:';
@@ -212,31 +211,14 @@ export function startEmbedApi(labEl, opts = {}) {
     const errors = [];
     /** @type {Record<string, unknown>} */
     const patch = {};
-    if (!raw || typeof raw !== 'object' || Array.isArray(raw)) {
-      return { patch, errors: [{ field: 'params', message: 'params: expected an object such as { "gamma0": 0.1 }' }] };
-    }
-    const entries = Object.entries(raw);
-    if (entries.length === 0 || entries.length > MAX_KEYS) {
-      return { patch, errors: [{ field: 'params', message: `params: expected 1 to ${MAX_KEYS} parameters` }] };
-    }
-    /** @type {[string, string][]} */
-    const pairs = [];
-    for (const [key, v] of entries) {
-      if (key in NOT_SETTABLE) {
-        errors.push({ field: key, message: `${key}: not settable by message (${NOT_SETTABLE[key]})` });
-        continue;
-      }
-      if (typeof v === 'number' && Number.isFinite(v)) pairs.push([key, String(v)]);
-      else if (typeof v === 'string') pairs.push([key, v]);
-      else if (key === 'panels' && Array.isArray(v) && v.every((x) => typeof x === 'string')) pairs.push([key, v.join(',')]);
-      else errors.push({ field: short(key), message: `${short(key)}: expected a number or a string${key === 'panels' ? ' (or a list of panel names)' : ''}` });
-    }
+    const checked = paramPairs(raw);
+    if (checked.fatal) return { patch, errors: checked.errors };
+    errors.push(...checked.errors);
+    const pairs = checked.pairs;
     const parsed = parsePairs(pairs);
     for (const r of parsed.rejected) errors.push({ field: r.key, message: `${r.key}: ${r.why}` });
     const into = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (parsed.state));
     for (const [key] of pairs) if (!parsed.rejected.some((r) => r.key === short(key))) patch[key] = into[key];
-    // exp opens a guided experiment with its parameters, as its chip does (values set with it win).
-    if (typeof patch.exp === 'string' && patch.exp) Object.assign(patch, experimentPatch(patch.exp, Object.keys(patch)));
     // The selected mode must exist in the mode set it will be used with.
     if ('mode' in patch || 'modes' in patch) {
       const st = store();
@@ -260,12 +242,11 @@ export function startEmbedApi(labEl, opts = {}) {
     // Reply to the sender's origin; an opaque one ("null": a sandboxed host) can only be '*',
     // which still reaches nothing but our parent window.
     const to = e.origin && e.origin !== 'null' ? e.origin : '*';
-    const id = typeof d.id === 'string' || typeof d.id === 'number' ? d.id : null;
+    const env = checkEnvelope(d);
+    const id = env.id;
     const fail = (/** @type {string} */ code, /** @type {string} */ message, /** @type {Record<string, unknown>} */ more = {}) =>
-      post({ type: `${PREFIX}error`, id, request: String(d.type).slice(0, 40), code, message, ...more }, to);
-    if (d.version !== API_VERSION) {
-      return fail('bad-version', `version: this lab speaks version ${API_VERSION} of the wingbeat message API; got ${JSON.stringify(d.version ?? null)}`, { supported: [API_VERSION] });
-    }
+      post({ type: `${PREFIX}error`, id, request: shortKey(d.type), code, message, ...more }, to);
+    if (env.error) return fail(env.error.code, env.error.message, { field: env.error.field, ...env.error.more });
     const st = store();
     switch (d.type) {
       case `${PREFIX}get`:
@@ -320,7 +301,95 @@ export function startEmbedApi(labEl, opts = {}) {
 
 /** @param {string} key */
 function short(key) {
-  return key.length > 40 ? key.slice(0, 40) + '…' : key;
+  return shortKey(key);
+}
+
+/** Longest request id echoed back (characters). */
+const MAX_ID_CHARS = 200;
+/** Longest parameter value read from a message (characters); every valid one is far shorter. */
+const MAX_VALUE_CHARS = 1000;
+
+/**
+ * What a value is, for error messages (never its text).
+ * @param {unknown} v
+ */
+function kindOf(v) {
+  if (v === null) return 'null';
+  if (typeof v === 'number') return Number.isFinite(v) ? 'a number' : `the number ${String(v)}`;
+  if (typeof v === 'string') return `text of ${v.length} characters`;
+  if (Array.isArray(v)) return `a list of ${v.length} items`;
+  if (ArrayBuffer.isView(v)) return 'a typed array';
+  if (typeof v === 'object') return 'an object';
+  return `a ${typeof v}`;
+}
+
+/**
+ * Checks the envelope of a message whose type starts with "wingbeat:" (the caller has checked
+ * that): `version` must be API_VERSION and `id`, when given, a finite number or a string of at
+ * most MAX_ID_CHARS characters. Returns the id to echo (null when absent or refused) and the
+ * error to reply with (null when the envelope is fine), naming the field. Never throws, whatever
+ * the message holds (BigInts, cyclic objects, huge strings).
+ * @param {any} d
+ * @returns {{ id: string | number | null, error: null | { code: string, field: string, message: string, more: Record<string, unknown> } }}
+ */
+export function checkEnvelope(d) {
+  const rawId = d.id;
+  const idOk = rawId === undefined || rawId === null || (typeof rawId === 'number' && Number.isFinite(rawId)) ||
+    (typeof rawId === 'string' && rawId.length <= MAX_ID_CHARS);
+  const id = idOk && rawId !== undefined ? rawId : null;
+  if (d.version !== API_VERSION) {
+    const v = d.version;
+    const got = typeof v === 'number' || typeof v === 'boolean' ? String(v) : typeof v === 'string' ? JSON.stringify(shortKey(v)) : v === undefined ? 'none' : kindOf(v);
+    return { id, error: { code: 'bad-version', field: 'version', message: `version: this lab speaks version ${API_VERSION} of the wingbeat message API; got ${got}`, more: { supported: [API_VERSION] } } };
+  }
+  if (!idOk) {
+    return { id: null, error: { code: 'bad-id', field: 'id', message: `id: expected a finite number or a string of at most ${MAX_ID_CHARS} characters; got ${kindOf(rawId)}`, more: {} } };
+  }
+  return { id, error: null };
+}
+
+/**
+ * The `params` of a wingbeat:set message as name/value text pairs for the URL parser, with an
+ * error per refused entry, naming it: `params` must be a plain object of 1 to MAX_KEYS entries;
+ * each value a finite number, a string of at most MAX_VALUE_CHARS characters, or (panels) a list
+ * of panel names; names the URL fixes (NOT_SETTABLE) are refused. `fatal` when `params` itself
+ * is unusable. Never throws.
+ * @param {unknown} raw
+ * @returns {{ pairs: [string, string][], errors: { field: string, message: string }[], fatal: boolean }}
+ */
+export function paramPairs(raw) {
+  /** @type {{ field: string, message: string }[]} */
+  const errors = [];
+  /** @type {[string, string][]} */
+  const pairs = [];
+  const proto = raw && typeof raw === 'object' ? Object.getPrototypeOf(raw) : undefined;
+  if (!raw || typeof raw !== 'object' || (proto !== Object.prototype && proto !== null)) {
+    return { pairs, errors: [{ field: 'params', message: `params: expected an object such as { "gamma0": 0.1 }; got ${kindOf(raw)}` }], fatal: true };
+  }
+  let n = 0;
+  for (const k in raw) if (Object.hasOwn(raw, k) && ++n > MAX_KEYS) break;
+  if (n === 0 || n > MAX_KEYS) {
+    return { pairs, errors: [{ field: 'params', message: `params: expected 1 to ${MAX_KEYS} parameters; got ${n > MAX_KEYS ? 'more' : 'none'}` }], fatal: true };
+  }
+  const obj = /** @type {Record<string, unknown>} */ (raw);
+  for (const key of Object.keys(obj)) {
+    const v = obj[key];
+    const field = short(key);
+    if (Object.hasOwn(NOT_SETTABLE, key)) {
+      errors.push({ field, message: `${field}: not settable by message (${NOT_SETTABLE[/** @type {keyof typeof NOT_SETTABLE} */ (key)]})` });
+    } else if (typeof v === 'number' && Number.isFinite(v)) {
+      pairs.push([key, String(v)]);
+    } else if (typeof v === 'string' && v.length <= MAX_VALUE_CHARS) {
+      pairs.push([key, v]);
+    } else if (key === 'panels' && Array.isArray(v) && v.length <= 2 * PANELS.length && v.every((x) => typeof x === 'string' && x.length <= 40)) {
+      pairs.push([key, v.join(',')]);
+    } else {
+      const want = typeof v === 'number' ? 'a finite number' : typeof v === 'string' ? `text of at most ${MAX_VALUE_CHARS} characters` :
+        `a number or a string${key === 'panels' ? ` (or a list of at most ${2 * PANELS.length} panel names)` : ''}`;
+      errors.push({ field, message: `${field}: expected ${want}; got ${kindOf(v)}` });
+    }
+  }
+  return { pairs, errors, fatal: false };
 }
 
 /** The parameter names `wingbeat:set` takes (for the ready message and the docs). */

@@ -201,10 +201,27 @@ export function expectation(key) {
   return 'a known parameter';
 }
 
+/** Most name/value pairs read from one query, attribute list or message; the rest are reported. */
+export const MAX_PAIRS = 200;
+
+/**
+ * A name for notices and error replies: at most 40 code points (a truncated emoji leaves no
+ * lone surrogate); control characters and lone surrogates shown as U+FFFD. Never throws.
+ * @param {unknown} key
+ */
+export function shortKey(key) {
+  if (typeof key !== 'string') return `(a ${typeof key} as a name)`;
+  const cps = Array.from(key.slice(0, 82)).slice(0, 41);
+  // control characters and lone surrogates (a name cut from a malformed escape) as U+FFFD
+  const text = cps.slice(0, 40).join('').replace(/[\u0000-\u001f\u007f-\u009f\u2028\u2029\uD800-\uDFFF]/gu, '\uFFFD');
+  return cps.length > 40 ? text + '…' : text;
+}
+
 /**
  * Reads state from name/value pairs (URLSearchParams or element attributes).
- * Returns { state, rejected: [{ key, why }] }; `key` is truncated to 40 characters.
- * Unknown names are rejected too, except those in `ignore`.
+ * Returns { state, rejected: [{ key, why }] }; `key` is shortened by shortKey (40 characters).
+ * Unknown names are rejected too, except those in `ignore`; so is a name given more than once, a
+ * name or value that is not a string, and every pair after the first MAX_PAIRS. Never throws.
  * @param {Iterable<[string, string]> | string[][]} pairs
  * @param {string[]} [ignore]
  * @returns {{ state: Params, rejected: { key: string, why: string }[] }}
@@ -216,10 +233,24 @@ export function parsePairs(pairs, ignore = []) {
   /** @type {{ key: string, why: string }[]} */
   const rejected = [];
   const seen = new Set();
-  for (const [rawKey, raw] of pairs) {
-    const key = String(rawKey);
+  let count = 0;
+  for (const pair of pairs) {
+    if (++count > MAX_PAIRS) {
+      rejected.push({ key: '(query)', why: `more than ${MAX_PAIRS} parameters: the rest were not read` });
+      break;
+    }
+    const [rawKey, raw] = Array.isArray(pair) ? pair : [undefined, undefined];
+    if (typeof rawKey !== 'string') {
+      rejected.push({ key: shortKey(rawKey), why: 'a parameter name must be text' });
+      continue;
+    }
+    const key = rawKey;
     if (ignore.includes(key)) continue;
-    const short = key.length > 40 ? key.slice(0, 40) + '…' : key;
+    const short = shortKey(key);
+    if (typeof raw !== 'string') {
+      rejected.push({ key: short, why: `expected text: ${expectation(key)}` });
+      continue;
+    }
     if (seen.has(key)) {
       rejected.push({ key: short, why: 'given more than once' });
       continue;
@@ -233,13 +264,13 @@ export function parsePairs(pairs, ignore = []) {
     else if (e) v = parseEnum(e, raw);
     else if (key === 'panels') v = parsePanels(raw);
     else if (key === 'embed') v = raw === '0' || raw === '1' ? raw === '1' : null;
-    else if (key === 'exp') v = EXPERIMENT_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
+    else if (key === 'exp') v = EXPERIMENT_IDS.includes(raw.trim()) ? raw.trim() : null;
     else if (key === 'screen') v = SCREEN_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
     else if (WING.some((q) => q.key === key)) v = parseWing(/** @type {WingParam} */ (WING.find((q) => q.key === key)), raw);
-    else if (key === 'outline') v = OUTLINE_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
+    else if (key === 'outline') v = OUTLINE_IDS.includes(raw.trim()) ? raw.trim() : null;
     else if (key === 'planform') v = safePlanformPath(raw);
     else if (key === 'body_rate') v = parseNumber(/** @type {any} */ (BODY_RATE), raw);
-    else if (key === 'body_axis') v = BODY_AXIS.choices.includes(String(raw).trim()) ? String(raw).trim() : null;
+    else if (key === 'body_axis') v = BODY_AXIS.choices.includes(raw.trim()) ? raw.trim() : null;
     else {
       rejected.push({ key: short, why: 'unknown parameter' });
       continue;
