@@ -12,7 +12,8 @@
 //   any other subset: the sliders (controls, 250 px) as a sidebar beside the other panels —
 //           on the right when the 3-D wing is shown (it comes first, as in the template), else
 //           on the left; wide packs the other panels two per row, the broad ones (experiments,
-//           wing, studies, resonance, report) and a lone last one span both columns.
+//           wing, studies, resonance, report, sensing) and a lone last one span both columns; the
+//           3-D wing pairs with the guided experiments (the sensing screen).
 
 export const WIDE_AT = 1100;
 export const MEDIUM_AT = 720;
@@ -123,7 +124,10 @@ function sidebarLayout(visible, mode) {
   for (let i = 0; i < main.length; i++) {
     const p = main[i];
     const next = main[i + 1];
-    if (cols === 2 && !BROAD.includes(p) && next && !BROAD.includes(next)) {
+    // Two narrow panels share a row; so do the 3-D wing and the guided experiments (text that
+    // reads well at half width; the sensing screen: wing3d, experiments, sensing).
+    const pair = next && ((!BROAD.includes(p) && !BROAD.includes(next)) || (p === 'wing3d' && next === 'experiments'));
+    if (cols === 2 && pair) {
       rows.push([p, next]);
       i++;
     } else rows.push(Array(cols).fill(p));

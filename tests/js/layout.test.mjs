@@ -65,5 +65,8 @@ test('controls, numbers, spectrum: sliders beside the plots', () => {
   assert.equal(gridLayout(vis, 'medium').columns[0], '250px');
   // with the 3-D wing first, the sliders go on its right (as in the full layout)
   assert.equal(areasCss(gridLayout(['wing3d', 'controls', 'spectrum'], 'wide').rows), '"wing3d spectrum controls"');
+  // The sensing screen (no sliders): the 3-D wing beside the experiments, the sensing panel below.
+  assert.equal(areasCss(gridLayout(['wing3d', 'experiments', 'sensing'], 'wide').rows), '"wing3d experiments" "sensing sensing"');
+  assert.equal(areasCss(gridLayout(['wing3d', 'experiments', 'sensing'], 'medium').rows), '"wing3d" "experiments" "sensing"');
   assert.equal(areasCss(gridLayout(['wing3d', 'controls', 'spectrum'], 'medium').rows), '"wing3d controls" "spectrum spectrum"');
 });
