@@ -231,10 +231,13 @@ export function mount(ctx) {
       const hi = t[t.length - 1];
       const early = modulation(t, env, t[0] + 1 / b.fd, Math.min(f.goneAt, t[0] + 1 / b.fd + 2 * b.period));
       const late = modulation(t, env, f.goneAt, hi - 1 / b.fd);
-      const gone = p(`After ${fmt(f.goneAt, 3)} s (${fmt(Math.log(1 / f.floor), 2)} τ) the swing is below ${fmt(100 * f.floor, 2)} % of its start and the beat is gone: only the forced vibration at ${b.n}·f_d remains and the envelope is flat (grey in both plots). Measured swing of the envelope, (max − min)/(max + min): ${fmt(early, 3)} over the first two beats, ${fmt(late, 2)} from ${fmt(f.goneAt, 3)} s to the end of the ${fmt(hi, 3)} s run.`);
+      const t4 = Math.max(f.goneAt, t[0] + 0.8 * (hi - t[0]));
+      const tail = modulation(t, env, t4, hi - 1 / b.fd);
+      const gone = p(`After ${fmt(f.goneAt, 3)} s (${fmt(Math.log(1 / f.floor), 2)} τ) the free vibration is below ${fmt(100 * f.floor, 2)} % of its start and the beat is gone: only the forced vibration at ${b.n}·f_d remains and the envelope is flat (grey in both plots). Measured swing of the envelope, (max − min)/(max + min): ${fmt(early, 3)} over the first two beats, ${fmt(late, 2)} from ${fmt(f.goneAt, 3)} s on, ${fmt(tail, 2)} from ${fmt(t4, 3)} s to the end of the ${fmt(hi, 3)} s run.`);
       gone.className = 'wl-beat-gone';
       gone.dataset.early = String(early);
       gone.dataset.late = String(late);
+      gone.dataset.tail = String(tail);
       beatBox.append(gone);
     } else if (f.kind === 'steady' && f.tau != null) {
       beatBox.append(p(`Damping fades it slowly: the free vibration decays as exp(−t/τ), ${tauText}, longer than this ${fmt(t[t.length - 1], 3)} s run would need to lose it.`));
