@@ -190,7 +190,6 @@ export function mount(ctx) {
     const m = a.sim.modes[k];
     const f = fate || { kind: 'steady', tau: null, goneAt: null, floor: 0.05 };
     const t = a.sim.t;
-    const env = smooth(a.envelope[k], a.sim.sample_rate_hz / a.sim.flap_freq_hz);
     const sig = `${k}|${b.period}|${b.fEff}|${b.n}|${b.fd}|${b.stable}|${b.maxModulus}|${s.gamma0 === 0}|${f.kind}|${f.tau}|${t[t.length - 1]}`;
     if (sig === beatSig) return; // unchanged text: no DOM churn (and no repeated live-region announcement)
     beatSig = sig;
@@ -229,6 +228,7 @@ export function mount(ctx) {
     beatBox.append(lead);
     if (f.kind === 'decays' && f.goneAt != null) {
       const hi = t[t.length - 1];
+      const env = smooth(a.envelope[k] || new Float64Array(t.length), a.sim.sample_rate_hz / a.sim.flap_freq_hz);
       const early = modulation(t, env, t[0] + 1 / b.fd, Math.min(f.goneAt, t[0] + 1 / b.fd + 2 * b.period));
       const late = modulation(t, env, f.goneAt, hi - 1 / b.fd);
       const t4 = Math.max(f.goneAt, t[0] + 0.8 * (hi - t[0]));
