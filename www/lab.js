@@ -363,7 +363,6 @@ export class WingLab extends HTMLElement {
     const grid = el('div', { class: 'wl-grid', id: id('screen'), role: 'tabpanel' });
     this.nav = this.buildNav(id);
     this.aboutEl = el('p', { class: 'wl-screen-about', id: id('screen-about') });
-    grid.setAttribute('aria-describedby', id('screen-about'));
     this.root.append(this.noticeEl, this.errorEl, this.nav, this.aboutEl, grid);
     this.panels = {};
     const ctx0 = {
@@ -492,6 +491,16 @@ export class WingLab extends HTMLElement {
     const chosen = LAYOUT.every((p) => st.panels.includes(p));
     this.nav.hidden = !chosen;
     this.aboutEl.hidden = !chosen;
+    // Without the tabs the grid is no tabpanel (an author's page of panels).
+    if (this.grid) {
+      if (chosen) {
+        this.grid.setAttribute('role', 'tabpanel');
+        this.grid.setAttribute('aria-describedby', this.aboutEl.id);
+      } else {
+        this.grid.removeAttribute('role');
+        this.grid.removeAttribute('aria-describedby');
+      }
+    }
     for (const sc of SCREENS) {
       const tab = this.tabs[sc.id];
       const on = sc.id === r.id;
@@ -499,7 +508,10 @@ export class WingLab extends HTMLElement {
       tab.tabIndex = on ? 0 : -1;
       if (on) {
         this.aboutEl.textContent = `${sc.label}: ${sc.about}.`;
-        /** @type {HTMLElement} */ (this.grid || tab).setAttribute('aria-labelledby', tab.id);
+        if (this.grid) {
+          if (chosen) this.grid.setAttribute('aria-labelledby', tab.id);
+          else this.grid.removeAttribute('aria-labelledby');
+        }
       }
     }
     this.dataset.screen = r.id;

@@ -15,7 +15,8 @@ import { setup, openPage, pngStats, OUT } from './helpers.mjs';
 
 const require = createRequire(import.meta.url);
 const AXE = require.resolve('axe-core/axe.min.js');
-const SIX = '?modes=fe&n_modes=6';
+// The full-page screen: these tests use panels of several screens (table, spectra, 3-D, mode shapes, strain).
+const SIX = '?modes=fe&n_modes=6&screen=full';
 
 let env;
 before(async () => {

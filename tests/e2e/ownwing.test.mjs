@@ -43,7 +43,8 @@ const sig4 = (v) => String(Number(v.toPrecision(4)));
 
 async function lab(query = '', viewport = { width: 1280, height: 800 }) {
   const o = await openPage(env.browser, env.url, viewport);
-  await o.page.goto(env.url + query);
+  // The full-page screen: the wing, kinematics, numbers and 3-D panels are on different screens.
+  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
   await waitRenders(o.page, 1);
   return o;
 }
@@ -171,7 +172,7 @@ test('an outline without the default strain point works; an edited outline survi
   const pts = await o.page.evaluate(() => document.querySelector('wing-lab').store.get().wing.points);
   assert.deepEqual(pts[2], [24, -2]);
   // A damaged fragment: a clear notice, defaults used.
-  await o.page.goto(env.url + '?modes=fe#s=AAAAbroken');
+  await o.page.goto(env.url + '?modes=fe&screen=full#s=AAAAbroken');
   await o.page.waitForFunction(() => __wl.q('.wl-notice')?.hidden === false, null, { timeout: 30000 });
   assert.match(await o.page.textContent('wing-lab .wl-notice'), /could not be restored/);
   assert.deepEqual(problems, []);

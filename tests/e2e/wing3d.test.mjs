@@ -61,7 +61,7 @@ async function readbacks(page) {
 test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url);
   await readbacks(page);
-  await page.goto(env.url);
+  await page.goto(env.url + '?screen=full'); // every panel, the view options open
   await waitRenders(page, 1);
   const ds = await ready3d(page);
   assert.equal(ds.state, 'ready', await page.textContent('wing-lab [data-wing3d]'));
@@ -128,7 +128,7 @@ test('play pauses off screen and in a hidden tab, resumes when seen; phone backi
   const context = await env.browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 3 });
   await labHelpers(context);
   const page = await context.newPage();
-  await page.goto(env.url);
+  await page.goto(env.url + '?screen=full'); // every panel, the view options open
   await waitRenders(page, 1);
   const ds = await ready3d(page);
   assert.equal(ds.state, 'ready');
@@ -181,7 +181,7 @@ test('play pauses off screen and in a hidden tab, resumes when seen; phone backi
 
 test('FE wing mode set: SI responses drive the 3-D wing; numbers come from the shell FE', async () => {
   const { page, problems, context } = await openPage(env.browser, env.url);
-  await page.goto(env.url + '?modes=fe&gamma0=0.2');
+  await page.goto(env.url + '?modes=fe&gamma0=0.2&screen=full');
   await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
   await page.waitForFunction(() => document.querySelector('wing-lab').fe && Number(document.querySelector('wing-lab').dataset.renders || 0) > 0, null, { timeout: 90000 });
   const f1 = Number(await page.textContent('wing-lab [data-field="freq-0"]'));
@@ -230,7 +230,7 @@ test('no WebGPU and no WebGL2: the panel says why and the rest of the lab works'
       return orig.call(this, kind, ...rest);
     };
   });
-  await page.goto(env.url);
+  await page.goto(env.url + '?screen=full'); // every panel, the view options open
   await waitRenders(page, 1);
   const ds = await ready3d(page);
   assert.equal(ds.state, 'unavailable');
