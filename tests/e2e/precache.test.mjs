@@ -50,7 +50,9 @@ test('first and second visit: no failed or missing request (page or service work
     for (const f of m.files) assert.ok(cached.includes(url + f), `precached: ${f}`);
     assert.ok(log.some((r) => r.path === '/precache.json'), 'the worker read the manifest');
     const first = log.length;
-    // Second visit: a reload, then the page opened again in a new tab of the same browser.
+    // Second visit: a reload, then the page opened again in a new tab of the same browser. (The
+    // first page's late loads — the worker's modules — finish first: a reload would cancel them.)
+    await page.waitForLoadState('networkidle');
     await page.reload();
     await waitRenders(page, 1);
     const p2 = await context.newPage();
@@ -59,6 +61,8 @@ test('first and second visit: no failed or missing request (page or service work
     p2.on('pageerror', (e) => more.push(`pageerror: ${e.message}`));
     await p2.goto(url + 'index.html?gamma0=0.1');
     await waitRenders(p2, 1);
+    await page.waitForLoadState('networkidle');
+    await p2.waitForLoadState('networkidle');
     assert.ok(log.length > first, 'the second visit went to the server (network first)');
     assert.deepEqual(log.filter((r) => r.status >= 400), [], 'second visit: every request answered');
     assert.deepEqual([...problems, ...more], [], 'no console error, page error or failed request');
