@@ -16,7 +16,8 @@ after(async () => {
 
 async function lab(query = '') {
   const o = await openPage(env.browser, env.url, { width: 1280, height: 800 });
-  await o.page.goto(env.url + query);
+  // The full-page screen: the tests read the Floquet table, which is not on the first screen.
+  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
   await waitRenders(o.page, 1);
   // The first result is computed on the main thread; the sliders' go to the live worker once
   // it has loaded its wasm.
