@@ -60,6 +60,13 @@ export function looksLikeModes(text) {
   }
 }
 
+/**
+ * Whether exports say where their strain points are (`strain_points_mm`): only once the CLI's
+ * modes reader (src/modes_doc.rs) accepts that key; until then the chosen point still goes first
+ * in every mode's strains (what `simulate --modes` reports), without its coordinates.
+ */
+const WRITE_POINTS = false;
+
 /** The name of the chosen strain point in exported modes documents (the CLI's --point name). */
 export const CHOSEN_POINT = 'S';
 
@@ -90,7 +97,7 @@ export function modesDocument(text, chosen, strains, own) {
     });
     at[CHOSEN_POINT] = [chosen[0], chosen[1]];
   }
-  if (Object.keys(at).length) doc.strain_points_mm = { ...known, ...at };
+  if (Object.keys(at).length && WRITE_POINTS) doc.strain_points_mm = { ...known, ...at };
   return JSON.stringify(doc);
 }
 
