@@ -60,45 +60,79 @@ export function looksLikeModes(text) {
   }
 }
 
-/**
- * Whether exports say where their strain points are (`strain_points_mm`): only once the CLI's
- * modes reader (src/modes_doc.rs) accepts that key; until then the chosen point still goes first
- * in every mode's strains (what `simulate --modes` reports), without its coordinates.
- */
-const WRITE_POINTS = false;
-
 /** The name of the chosen strain point in exported modes documents (the CLI's --point name). */
 export const CHOSEN_POINT = 'S';
 
 /**
  * A `wingbeat modes` document that carries the strain point the lab shows: with a chosen point
- * (`chosen`, mm, and its modal strains per mode from modalStrainAt), that point first in every
- * mode's `strains` (named CHOSEN_POINT; `wingbeat simulate --modes` reports the first point's
- * strain), the document's own points after it; and `strain_points_mm` ({ name: [x, y] }, an
- * extra key the CLI's reader ignores), so that an import puts the cross where it was.
+ * (its modal strains per mode from modalStrainAt), that point first in every mode's `strains`,
+ * named CHOSEN_POINT (`wingbeat simulate --modes` reports the first point's strain), the
+ * document's own points after it. Without one, the document as it is.
  * @param {string} text the document (feModes' modes_json)
- * @param {[number, number] | null} chosen
  * @param {{ eps_x: number, eps_y: number, gamma_xy: number }[] | null} strains per mode
- * @param {[number, number] | null} own the document's own point P (mm), if known
  * @returns {string}
  */
-export function modesDocument(text, chosen, strains, own) {
+export function modesDocument(text, strains) {
+  if (!strains) return text;
   const doc = JSON.parse(text);
-  const known = doc.strain_points_mm && typeof doc.strain_points_mm === 'object' ? doc.strain_points_mm : {};
-  /** @type {Record<string, [number, number]>} */
-  const at = {};
-  // The document's own first point (P, or the S of a document exported before) where it is.
-  const own0 = doc.modes[0] && doc.modes[0].strains && doc.modes[0].strains[0] ? doc.modes[0].strains[0].point : null;
-  if (own && own0 && !(own0 in known)) at[own0] = [own[0], own[1]];
-  if (chosen && strains) {
-    doc.modes.forEach((m, k) => {
-      const rest = (m.strains || []).filter((p) => p.point !== CHOSEN_POINT);
-      m.strains = [{ point: CHOSEN_POINT, eps_x: strains[k].eps_x, eps_y: strains[k].eps_y, gamma_xy: strains[k].gamma_xy }, ...rest];
-    });
-    at[CHOSEN_POINT] = [chosen[0], chosen[1]];
-  }
-  if (Object.keys(at).length && WRITE_POINTS) doc.strain_points_mm = { ...known, ...at };
+  doc.modes.forEach((m, k) => {
+    const rest = (m.strains || []).filter((p) => p.point !== CHOSEN_POINT);
+    m.strains = [{ point: CHOSEN_POINT, eps_x: strains[k].eps_x, eps_y: strains[k].eps_y, gamma_xy: strains[k].gamma_xy }, ...rest];
+  });
   return JSON.stringify(doc);
+}
+
+/**
+ * Where on an FE wing a point's modal strains were taken (mm), found from the strains
+ * themselves: the modal strain at a point is the linear (barycentric) interpolation of the
+ * nodal strains of the triangle that holds it (analysis::strain::interpolate_strain), so the
+ * triangle whose nodal strains reproduce `target` (least squares over every mode and component,
+ * relative residual ≤ 1e-7, barycentric weights in [0, 1]) gives the point. Null when no
+ * triangle does (e.g. strains not from this mesh). Used on import: a modes document names its
+ * strain points but does not say where they are.
+ * @param {ArrayLike<number>} nodes flat [x, y, z] per node, m
+ * @param {ArrayLike<number>} triangles flat node indices
+ * @param {ArrayLike<number>} strainNodes flat [mode][node][ε_x, ε_y, γ_xy]
+ * @param {{ eps_x: number, eps_y: number, gamma_xy: number }[]} target per mode
+ * @returns {[number, number] | null}
+ */
+export function locateStrainPoint(nodes, triangles, strainNodes, target) {
+  const nn = nodes.length / 3;
+  const nm = target.length;
+  if (!nm || strainNodes.length !== nm * nn * 3) return null;
+  const tv = target.flatMap((t) => [t.eps_x, t.eps_y, t.gamma_xy]);
+  const scale = Math.max(...tv.map(Math.abs));
+  if (!(scale > 0) || !tv.every(Number.isFinite)) return null;
+  const sv = (node, j) => strainNodes[(Math.floor(j / 3) * nn + node) * 3 + (j % 3)];
+  /** @type {number[] | null} */
+  let best = null;
+  let bestRes = Infinity;
+  for (let t = 0; t + 2 < triangles.length; t += 3) {
+    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+    let uu = 0, uv = 0, vv = 0, ur = 0, vr = 0;
+    for (let j = 0; j < tv.length; j++) {
+      const s0 = sv(a, j), u = sv(b, j) - s0, v = sv(c, j) - s0, r = tv[j] - s0;
+      uu += u * u; uv += u * v; vv += v * v; ur += u * r; vr += v * r;
+    }
+    const det = uu * vv - uv * uv;
+    if (!(Math.abs(det) > 1e-300)) continue;
+    const l1 = (vv * ur - uv * vr) / det, l2 = (uu * vr - uv * ur) / det, l0 = 1 - l1 - l2;
+    const tol = 1e-9;
+    if (l0 < -tol || l1 < -tol || l2 < -tol) continue;
+    let res = 0;
+    for (let j = 0; j < tv.length; j++) {
+      const e = sv(a, j) * l0 + sv(b, j) * l1 + sv(c, j) * l2 - tv[j];
+      res += e * e;
+    }
+    res = Math.sqrt(res) / scale;
+    if (res < bestRes) {
+      bestRes = res;
+      best = [0, 1].map((k) => 1e3 * (l0 * nodes[3 * a + k] + l1 * nodes[3 * b + k] + l2 * nodes[3 * c + k]));
+    }
+  }
+  if (!best || !(bestRes <= 1e-7)) return null;
+  // Chosen points are kept to 0.001 mm; the solve returns them to about 1e-9 mm.
+  return [Number(best[0].toFixed(6)), Number(best[1].toFixed(6))];
 }
 
 /** @param {import('../lab.js').ViewContext} ctx */
@@ -499,11 +533,10 @@ export function mount(ctx) {
     if (!fe || s.modes !== 'fe') return say('No FE wing in use yet: choose the FE wing mode set or compute a wing first.', true);
     const raw = /** @type {any} */ (fe).modes_json;
     if (typeof raw !== 'string') return say('This wasm build does not produce the modes document: rebuild www/pkg.', true);
-    // The strain point shown (a chosen one, else the wing's own P) goes with the modes.
+    // A chosen strain point goes with the modes, first (the one simulate --modes reports).
     let json;
     try {
-      const strains = s.strain_point ? engine.modalStrainAt(s.strain_point) : null;
-      json = modesDocument(raw, s.strain_point, strains, fe.strain_point_mm || null);
+      json = modesDocument(raw, s.strain_point ? engine.modalStrainAt(s.strain_point) : null);
     } catch (e) {
       return say(`Could not export the modes: ${errorText(e)}`, true);
     }
@@ -544,18 +577,10 @@ export function mount(ctx) {
       modes_json: text,
       imported: true,
     };
-    // The strain point the document was exported with (its first point's coordinates, when it
-    // says them): the lab shows the same strain, with the cross where it was.
-    /** @type {[number, number] | null} */
-    let point = null;
-    try {
-      const at = JSON.parse(text).strain_points_mm;
-      const first = r.modes[0] && r.modes[0].strains && r.modes[0].strains[0] && r.modes[0].strains[0].point;
-      const p = at && first ? at[first] : null;
-      if (Array.isArray(p) && p.length === 2 && p.every((v) => typeof v === 'number' && Number.isFinite(v))) point = [p[0], p[1]];
-    } catch {
-      point = null;
-    }
+    // Where the document's first strain point is (the one the lab and simulate use): found from
+    // its modal strains on this mesh, so the cross on the maps sits where it was.
+    const s0 = r.modes.every((m) => m.strains && m.strains[0]) ? r.modes.map((m) => m.strains[0]) : null;
+    const point = s0 ? locateStrainPoint(fe.nodes, fe.triangles, fe.strain_nodes, s0) : null;
     if (point) fe.strain_point_mm = point;
     engine.useFe(fe, `import:${name}:${text.length}`);
     store.set({ modes: 'fe', wing: { input: null, source: 'import', label: name.slice(0, 80), outline: 'file', points: null }, fe, mode: '1', strain_point: null });
