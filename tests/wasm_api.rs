@@ -186,7 +186,7 @@ fn resonance_map_matches_core_and_reports_progress() {
         Closure::wrap(Box::new(move |i: f64, n: f64| c2.borrow_mut().push((i, n)))
             as Box<dyn FnMut(f64, f64)>);
     let f: js_sys::Function = cb.as_ref().clone().unchecked_into();
-    let js = wasm::resonance_map(to_js(&cfg), to_js(&opts), Some(f)).unwrap();
+    let js = wasm::resonance_map(to_js(&cfg), to_js(&opts), f.into()).unwrap();
     assert_eq!(calls.borrow().len(), 36);
     assert_eq!(calls.borrow().last(), Some(&(36.0, 36.0)));
     let core = core_resonance_map(&cfg, &opts, |_, _| {}).unwrap();
@@ -226,12 +226,12 @@ fn resonance_map_matches_core_and_reports_progress() {
         alpha0_values: None,
         ..opts
     };
-    let js = wasm::resonance_map(to_js(&cfg), to_js(&one), None).unwrap();
+    let js = wasm::resonance_map(to_js(&cfg), to_js(&one), JsValue::UNDEFINED).unwrap();
     assert!(get(&js, "alpha0").is_undefined());
     assert_eq!(f64s(&js, "modes.0.effective_freq_hz").len(), 12);
     // A throwing progress callback is ignored.
     let thrower = js_sys::Function::new_with_args("i, n", "throw new Error('boom')");
-    assert!(wasm::resonance_map(to_js(&cfg), to_js(&one), Some(thrower)).is_ok());
+    assert!(wasm::resonance_map(to_js(&cfg), to_js(&one), thrower.into()).is_ok());
 }
 
 #[wasm_bindgen_test]
@@ -267,10 +267,18 @@ fn resonance_map_names_bad_options() {
             "over the cap",
         ),
     ] {
-        let m = message(wasm::resonance_map(cfg.clone(), json(bad), None));
+        let m = message(wasm::resonance_map(
+            cfg.clone(),
+            json(bad),
+            JsValue::UNDEFINED,
+        ));
         assert!(m.contains(field), "{bad}: `{m}` lacks {field}");
     }
-    let m = message(wasm::resonance_map(cfg, JsValue::UNDEFINED, None));
+    let m = message(wasm::resonance_map(
+        cfg,
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("resonance"), "{m}");
 }
 
@@ -281,7 +289,7 @@ fn analyze_returns_the_angles_on_the_simulation_grid() {
         [("duration", 0.4), ("alpha_phase", 0.3)],
     )
     .unwrap();
-    let js = wasm::analyze(to_js(&cfg), JsValue::UNDEFINED, Some(0.0)).unwrap();
+    let js = wasm::analyze(to_js(&cfg), JsValue::UNDEFINED, JsValue::from(0.0)).unwrap();
     let t = f64s(&js, "sim.t");
     let core = angle_series(&cfg).unwrap();
     let kin = cfg.kinematics.compile();
@@ -309,7 +317,7 @@ fn resonance_map_of_200_points_is_fast() {
     let cfg = to_js(&SimConfig::paper());
     let opts = json(r#"{"from_hz": 5, "to_hz": 60, "points": 200}"#);
     let t0 = js_sys::Date::now();
-    let js = wasm::resonance_map(cfg, opts, None).unwrap();
+    let js = wasm::resonance_map(cfg, opts, JsValue::UNDEFINED).unwrap();
     let ms = js_sys::Date::now() - t0;
     wasm_bindgen_test::console_log!("resonanceMap, 200 points x 2 modes (paper wing): {ms} ms");
     assert_eq!(f64s(&js, "modes.1.max_modulus").len(), 200);
@@ -403,7 +411,7 @@ fn wing_input_path_matches_compute_modes() {
     .unwrap();
     let back: wingbeat::fem::FemInput = serde_wasm_bindgen::from_value(input.clone()).unwrap();
     assert_eq!(back, core_in);
-    let js = wasm::fe_modes(input, Some(0.0), JsValue::UNDEFINED).unwrap();
+    let js = wasm::fe_modes(input, JsValue::from(0.0), JsValue::UNDEFINED).unwrap();
     let core = compute_modes(&core_in).unwrap();
     let (px, py) = strain_point_for(&core_in);
     let modes = core
@@ -439,7 +447,14 @@ fn wing_input_path_matches_compute_modes() {
         .to_vec();
     let sn = f64s(&js, "strain_nodes");
     let p = [num(&js, "strain_point_mm.0"), num(&js, "strain_point_mm.1")];
-    let at = wasm::modal_strain_at(&nodes, &tris, &sn, 3.0, &p).unwrap();
+    let at = wasm::modal_strain_at(
+        wasm_common::fa(&nodes),
+        js_sys::Uint32Array::from(&(&tris)[..]).into(),
+        wasm_common::fa(&sn),
+        JsValue::from(3.0),
+        wasm_common::fa(&p),
+    )
+    .unwrap();
     for k in 0..3 {
         for c in ["eps_x", "eps_y", "gamma_xy"] {
             close(
@@ -453,25 +468,49 @@ fn wing_input_path_matches_compute_modes() {
     ts_common::check(&i, "ModalStrainValues", &js_keys(&get(&at, "0")));
     // Outside the wing and inconsistent arrays: named errors.
     let m = message(wasm::modal_strain_at(
-        &nodes,
-        &tris,
-        &sn,
-        3.0,
-        &[200.0, 0.0],
+        wasm_common::fa(&nodes),
+        js_sys::Uint32Array::from(&(&tris)[..]).into(),
+        wasm_common::fa(&sn),
+        JsValue::from(3.0),
+        wasm_common::fa(&[200.0, 0.0]),
     ));
     assert!(
         m.contains("point") && m.contains("inside the meshed planform"),
         "{m}"
     );
-    let m = message(wasm::modal_strain_at(&nodes, &tris, &sn, 4.0, &p));
+    let m = message(wasm::modal_strain_at(
+        wasm_common::fa(&nodes),
+        js_sys::Uint32Array::from(&(&tris)[..]).into(),
+        wasm_common::fa(&sn),
+        JsValue::from(4.0),
+        wasm_common::fa(&p),
+    ));
     assert!(m.contains("strain_nodes"), "{m}");
-    let m = message(wasm::modal_strain_at(&nodes, &tris, &sn, 2.5, &p));
+    let m = message(wasm::modal_strain_at(
+        wasm_common::fa(&nodes),
+        js_sys::Uint32Array::from(&(&tris)[..]).into(),
+        wasm_common::fa(&sn),
+        JsValue::from(2.5),
+        wasm_common::fa(&p),
+    ));
     assert!(m.contains("n_modes"), "{m}");
     let mut bad = tris.clone();
     bad[4] = 1_000_000;
-    let m = message(wasm::modal_strain_at(&nodes, &bad, &sn, 3.0, &p));
+    let m = message(wasm::modal_strain_at(
+        wasm_common::fa(&nodes),
+        js_sys::Uint32Array::from(&(&bad)[..]).into(),
+        wasm_common::fa(&sn),
+        JsValue::from(3.0),
+        wasm_common::fa(&p),
+    ));
     assert!(m.contains("triangles[4]"), "{m}");
-    let m = message(wasm::modal_strain_at(&nodes, &tris, &sn, 3.0, &[1.0]));
+    let m = message(wasm::modal_strain_at(
+        wasm_common::fa(&nodes),
+        js_sys::Uint32Array::from(&(&tris)[..]).into(),
+        wasm_common::fa(&sn),
+        JsValue::from(3.0),
+        wasm_common::fa(&[1.0]),
+    ));
     assert!(m.contains("point"), "{m}");
     // strainField against the core, both statistics.
     let qs: Vec<Vec<f64>> = (0..3)
@@ -492,9 +531,14 @@ fn wing_input_path_matches_compute_modes() {
         r#"{"component": "eps_y", "stat": "peak"}"#,
         r#"{"component": "gamma_xy", "stat": "rms"}"#,
     ] {
-        let got = wasm::strain_field(&sn, 3.0, arr.clone().into(), json(opts))
-            .unwrap()
-            .to_vec();
+        let got = wasm::strain_field(
+            wasm_common::fa(&sn),
+            JsValue::from(3.0),
+            arr.clone().into(),
+            json(opts),
+        )
+        .unwrap()
+        .to_vec();
         let o: StrainFieldOptions = serde_json::from_str(opts).unwrap();
         let want = core_strain_field(nn, 3, |k, i| core.strain_nodes[k][i], &refs, &o).unwrap();
         assert_eq!(got.len(), nn);
@@ -519,18 +563,32 @@ fn wing_input_path_matches_compute_modes() {
             "qs[1][1]",
         ),
     ] {
-        let m = message(wasm::strain_field(&sn, 3.0, qs, json(opts)));
+        let m = message(wasm::strain_field(
+            wasm_common::fa(&sn),
+            JsValue::from(3.0),
+            qs,
+            json(opts),
+        ));
         assert!(m.contains(want), "{opts}: `{m}` lacks {want}");
     }
-    let m = message(wasm::strain_field(&sn, 3.0, arr.into(), JsValue::UNDEFINED));
+    let m = message(wasm::strain_field(
+        wasm_common::fa(&sn),
+        JsValue::from(3.0),
+        arr.into(),
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("strainField"), "{m}");
 }
 
 #[wasm_bindgen_test]
 fn outline_functions_check_without_throwing() {
     let csv = "x_mm,y_mm\n0,-10\n40,-10\n40,0\n0,0\n";
-    let pts = wasm::parse_planform(csv, "csv").unwrap();
-    let same = wasm::parse_planform("[[0,-10],[40,-10],[40,0],[0,0]]", "json").unwrap();
+    let pts = wasm::parse_planform(JsValue::from(csv), JsValue::from("csv")).unwrap();
+    let same = wasm::parse_planform(
+        JsValue::from("[[0,-10],[40,-10],[40,0],[0,0]]"),
+        JsValue::from("json"),
+    )
+    .unwrap();
     assert_eq!(
         js_sys::JSON::stringify(&pts).unwrap(),
         js_sys::JSON::stringify(&same).unwrap()
@@ -575,8 +633,16 @@ fn outline_functions_check_without_throwing() {
     assert!(message(wasm::check_planform(JsValue::from_f64(3.0))).contains("points"));
     assert!(message(wasm::check_planform(json(r#"{"a": 1}"#))).contains("points"));
     // Parse errors and wingInput errors name the line, format or key.
-    assert!(message(wasm::parse_planform("x_mm,y_mm\n1,2\n3,a\n", "csv")).contains("line 3"));
-    assert!(message(wasm::parse_planform("[]", "xml")).contains("parsePlanform.format"));
+    assert!(message(wasm::parse_planform(
+        JsValue::from("x_mm,y_mm\n1,2\n3,a\n"),
+        JsValue::from("csv")
+    ))
+    .contains("line 3"));
+    assert!(message(wasm::parse_planform(
+        JsValue::from("[]"),
+        JsValue::from("xml")
+    ))
+    .contains("parsePlanform.format"));
     let m = message(wasm::wing_input(
         json(r#"{"camber": 0.9}"#),
         JsValue::UNDEFINED,
@@ -615,7 +681,11 @@ fn kinematics_from_csv_matches_core() {
             10.0 * (2.0 * th).cos()
         ));
     }
-    let js = wasm::kinematics_from_csv(&text, json(r#"{"units": "deg", "flap_hz": 25}"#)).unwrap();
+    let js = wasm::kinematics_from_csv(
+        JsValue::from(&text),
+        json(r#"{"units": "deg", "flap_hz": 25}"#),
+    )
+    .unwrap();
     let core = kinematics_from_csv(
         &text,
         &CsvKinematicsOptions {
@@ -657,15 +727,18 @@ fn kinematics_from_csv_matches_core() {
             "max_harmonic",
         ),
     ] {
-        let m = message(wasm::kinematics_from_csv(&text, json(opts)));
+        let m = message(wasm::kinematics_from_csv(JsValue::from(&text), json(opts)));
         assert!(m.contains(want), "{opts}: `{m}` lacks {want}");
     }
     let m = message(wasm::kinematics_from_csv(
-        "t,alpha\n0,1\n",
+        JsValue::from("t,alpha\n0,1\n"),
         json(r#"{"units": "deg", "flap_hz": 25}"#),
     ));
     assert!(m.contains("rows"), "{m}");
-    let m = message(wasm::kinematics_from_csv(&text, JsValue::UNDEFINED));
+    let m = message(wasm::kinematics_from_csv(
+        JsValue::from(&text),
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("kinematicsFromCsv"), "{m}");
     let l = wasm::limits().unwrap();
     assert_eq!(num(&l, "max_strain_field_work"), 5e8);
@@ -678,12 +751,12 @@ fn kinematics_from_csv_matches_core() {
 fn modes_from_json_reads_the_exported_document() {
     let js = wasm::fe_modes(
         json(r#"{"n_modes": 2, "mesh_size_mm": 3}"#),
-        Some(0.01),
+        JsValue::from(0.01),
         json(r#"{"json": true}"#),
     )
     .unwrap();
     let text = get(&js, "modes_json").as_string().unwrap();
-    let doc = wasm::modes_from_json(&text).unwrap();
+    let doc = wasm::modes_from_json(JsValue::from(&text)).unwrap();
     let i = ts_common::interfaces(ts_common::declarations());
     ts_common::check(&i, "ModesDocument", &js_keys(&doc));
     ts_common::check(&i, "ImportedFe", &js_keys(&get(&doc, "fe")));
@@ -723,17 +796,20 @@ fn modes_from_json_reads_the_exported_document() {
     };
     assert_eq!(t(&doc, "fe.triangles"), t(&js, "triangles"));
     // A plain modes list has no `fe`; damaged documents name the part.
-    let plain = wasm::modes_from_json(r#"{"modes": [{"freq_hz": 60, "a": [1e-4, 0]}]}"#).unwrap();
+    let plain = wasm::modes_from_json(JsValue::from(
+        r#"{"modes": [{"freq_hz": 60, "a": [1e-4, 0]}]}"#,
+    ))
+    .unwrap();
     assert!(get(&plain, "fe").is_undefined());
     assert_eq!(num(&plain, "modes.0.freq_hz"), 60.0);
-    let m = message(wasm::modes_from_json("{"));
+    let m = message(wasm::modes_from_json(JsValue::from("{")));
     assert!(m.contains("modes JSON"), "{m}");
-    let m = message(wasm::modes_from_json(
+    let m = message(wasm::modes_from_json(JsValue::from(
         r#"{"modes": [{"freq_hz": -1, "a": [0, 0]}]}"#,
-    ));
+    )));
     assert!(m.contains("modes[0].freq_hz"), "{m}");
     let broken = text.replacen("\"triangles\":[[", "\"triangles\":[[9999999,", 1);
-    let m = message(wasm::modes_from_json(&broken));
+    let m = message(wasm::modes_from_json(JsValue::from(&broken)));
     assert!(m.contains("modes JSON: fe"), "{m}");
 }
 
@@ -746,15 +822,23 @@ fn issue13_integer_arguments_are_never_coerced() {
         ..SimConfig::paper()
     });
     for k in [1.5, -1.0, f64::NAN, 4294967296.0, f64::INFINITY] {
-        let m = message(wasm::analyze(cfg.clone(), JsValue::UNDEFINED, Some(k)));
+        let m = message(wasm::analyze(
+            cfg.clone(),
+            JsValue::UNDEFINED,
+            JsValue::from(k),
+        ));
         assert!(m.contains("`mode`") && m.contains("integer"), "{k}: {m}");
         assert!(!m.contains("4294967295"), "{m}");
-        let m = message(wasm::spectra(cfg.clone(), JsValue::UNDEFINED, Some(k)));
+        let m = message(wasm::spectra(
+            cfg.clone(),
+            JsValue::UNDEFINED,
+            JsValue::from(k),
+        ));
         assert!(m.contains("`mode`"), "{k}: {m}");
     }
     let x = wasm_common::fa(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
     for b in [-1.0, f64::NAN, 1e20, 2.5] {
-        let m = message(wasm::decimate_min_max(x.clone(), b));
+        let m = message(wasm::decimate_min_max(x.clone(), JsValue::from(b)));
         assert!(m.contains("decimate.buckets"), "{b}: {m}");
     }
 }
@@ -762,7 +846,11 @@ fn issue13_integer_arguments_are_never_coerced() {
 #[wasm_bindgen_test]
 fn issue13_functions_and_fake_arrays_are_refused_by_name() {
     let f: JsValue = js_sys::Function::new_no_args("return 1").into();
-    let m = message(wasm::analyze(f.clone(), JsValue::UNDEFINED, None));
+    let m = message(wasm::analyze(
+        f.clone(),
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+    ));
     assert!(
         m.contains("a function") && !m.contains("unwrap_throw"),
         "{m}"
@@ -771,11 +859,21 @@ fn issue13_functions_and_fake_arrays_are_refused_by_name() {
     assert!(m.contains("a function"), "{m}");
     // `{ length: 2e9 }` is not allocated: refused by name.
     let fake = json(r#"{"length": 2000000000}"#);
-    let m = message(wasm::psd(fake.clone(), 100.0, JsValue::UNDEFINED, None));
+    let m = message(wasm::psd(
+        fake.clone(),
+        JsValue::from(100.0),
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("psd.series"), "{m}");
     let m = message(wasm::envelope(fake));
     assert!(m.contains("envelope.series"), "{m}");
-    let m = message(wasm::psd(f, 100.0, JsValue::UNDEFINED, None));
+    let m = message(wasm::psd(
+        f,
+        JsValue::from(100.0),
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("psd.series"), "{m}");
 }
 
@@ -784,13 +882,18 @@ fn issue13_psd_envelope_and_ic_map_are_finite_or_refused() {
     let x: Vec<f64> = (0..256).map(|i| (i as f64 * 0.3).sin()).collect();
     let m = message(wasm::psd(
         wasm_common::fa(&x),
-        5e-324,
+        JsValue::from(5e-324),
         JsValue::UNDEFINED,
-        None,
+        JsValue::UNDEFINED,
     ));
     assert!(m.contains("psd.sample_rate_hz"), "{m}");
     let big: Vec<f64> = x.iter().map(|v| v * 1e308).collect();
-    match wasm::psd(wasm_common::fa(&big), 100.0, JsValue::UNDEFINED, None) {
+    match wasm::psd(
+        wasm_common::fa(&big),
+        JsValue::from(100.0),
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+    ) {
         Ok(s) => assert!(f64s(&s, "psd").iter().all(|p| p.is_finite())),
         Err(e) => {
             let m = message::<()>(Err(e));
@@ -821,8 +924,8 @@ fn issue13_unknown_nested_keys_are_refused() {
         r#"{"modes":[{"freq_hz":62.5,"a":[7.5e-6,9.3e-7],"damping":0.05}]}"#,
     )));
     assert!(m.contains("modes[0].damping"), "{m}");
-    let m = message(wasm::modes_from_json(
+    let m = message(wasm::modes_from_json(JsValue::from(
         r#"{"modes":[{"freq_hz":60,"a":[1e-4,0],"damping":0.05}]}"#,
-    ));
+    )));
     assert!(m.contains("damping"), "{m}");
 }

@@ -4,8 +4,8 @@
 
 use super::helpers::{self, opt_or_nan};
 use super::marshal::{
-    config_from, err, f64a, from_js, obj_with, progress_fn, required_js, series_from_js, set,
-    sim_js, spectrum_js, to_js,
+    config_from, err, f64a, from_js, function_arg, int_arg, number_arg, obj_with, opt_number_arg,
+    progress_fn, required_js, series_from_js, set, sim_js, spectrum_js, to_js,
 };
 use crate::analysis::angles::angles_on;
 use crate::analysis::beat;
@@ -27,10 +27,20 @@ use wasm_bindgen::prelude::*;
 #[wasm_bindgen(unchecked_return_type = "Spectrum")]
 pub fn psd(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] series: JsValue,
-    sample_rate_hz: f64,
+    #[wasm_bindgen(unchecked_param_type = "number")] sample_rate_hz: JsValue,
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
-    flap_hz: Option<f64>,
+    #[wasm_bindgen(unchecked_param_type = "number | null | undefined")] flap_hz: JsValue,
 ) -> Result<JsValue, JsError> {
+    let sample_rate_hz = number_arg(
+        &sample_rate_hz,
+        "psd.sample_rate_hz",
+        "a positive number, Hz",
+    )?;
+    let flap_hz = opt_number_arg(
+        &flap_hz,
+        "psd.flap_hz",
+        "a positive number, Hz, or undefined",
+    )?;
     let opts: WelchOptions = from_js(opts, "psd")?;
     let series = series_from_js(&series, "psd.series", crate::config::MAX_SAMPLES)?;
     if let Some(f) = flap_hz {
@@ -53,10 +63,10 @@ pub fn envelope(
 #[wasm_bindgen(js_name = decimateMinMax)]
 pub fn decimate_min_max(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] series: JsValue,
-    buckets: f64,
+    #[wasm_bindgen(unchecked_param_type = "number")] buckets: JsValue,
 ) -> Result<JsValue, JsError> {
+    let buckets = int_arg(&buckets, "decimate.buckets", 0, 1 << 20)?;
     let series = series_from_js(&series, "decimate.series", crate::config::MAX_SAMPLES)?;
-    let buckets = helpers::check_int("decimate.buckets", buckets, 0, 1 << 20).map_err(err)?;
     let (idx, v) = helpers::decimate_minmax(&series, buckets);
     let idx: Vec<f64> = idx.into_iter().map(|i| i as f64).collect();
     Ok(obj_with(&[("index", &idx), ("value", &v)])?.into())
@@ -77,7 +87,13 @@ fn compute(cfg: &SimConfig, which: Option<usize>) -> Result<Computed, JsError> {
 
 /// The optional mode index a caller passed (a JS number): an integer in [0, modes − 1], never
 /// coerced.
-fn check_mode(cfg: &SimConfig, mode: Option<f64>) -> Result<Option<usize>, JsError> {
+fn check_mode(cfg: &SimConfig, mode: &JsValue) -> Result<Option<usize>, JsError> {
+    let hi = cfg.modes.len().saturating_sub(1);
+    let mode = opt_number_arg(
+        mode,
+        "mode",
+        &format!("an integer mode index in [0, {hi}], or undefined"),
+    )?;
     mode.map(|k| {
         helpers::check_int("mode", k, 0, cfg.modes.len().saturating_sub(1)).map_err(|_| {
             err(WingbeatError::invalid(
@@ -122,12 +138,12 @@ fn spectra_js(c: &Computed, fs: f64, opts: &WelchOptions) -> Result<Array, JsErr
 fn live_inputs(
     cfg: JsValue,
     opts: JsValue,
-    mode: Option<f64>,
+    mode: JsValue,
 ) -> Result<(SimConfig, WelchOptions, Option<usize>), JsError> {
     let cfg = config_from(cfg)?;
     let opts: WelchOptions = from_js(opts, "psd")?;
     opts.validate().map_err(err)?;
-    let mode = check_mode(&cfg, mode)?;
+    let mode = check_mode(&cfg, &mode)?;
     Ok((cfg, opts, mode))
 }
 
@@ -139,7 +155,7 @@ fn live_inputs(
 pub fn spectra(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
-    mode: Option<f64>,
+    #[wasm_bindgen(unchecked_param_type = "number | null | undefined")] mode: JsValue,
 ) -> Result<JsValue, JsError> {
     let (cfg, opts, mode) = live_inputs(cfg, opts, mode)?;
     Ok(spectra_js(&compute(&cfg, mode)?, cfg.sample_rate_hz, &opts)?.into())
@@ -159,7 +175,7 @@ pub fn spectra(
 pub fn analyze(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
     #[wasm_bindgen(unchecked_param_type = "WelchOptions | undefined")] opts: JsValue,
-    mode: Option<f64>,
+    #[wasm_bindgen(unchecked_param_type = "number | null | undefined")] mode: JsValue,
 ) -> Result<JsValue, JsError> {
     let (cfg, opts, mode) = live_inputs(cfg, opts, mode)?;
     let c = compute(&cfg, mode)?;
@@ -422,8 +438,12 @@ mod tests {
 pub fn sweep(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
     #[wasm_bindgen(unchecked_param_type = "SweepOptions")] opts: JsValue,
-    progress: Option<Function>,
+    #[wasm_bindgen(
+        unchecked_param_type = "((done: number, total: number) => void) | null | undefined"
+    )]
+    progress: JsValue,
 ) -> Result<JsValue, JsError> {
+    let progress: Option<Function> = function_arg(progress, "progress")?;
     let cfg = config_from(cfg)?;
     let opts: SweepOptions = required_js(opts, "sweep", "{ param, from, to, points }")?;
     let s = core_sweep(&cfg, &opts, progress_fn(progress)).map_err(err)?;
@@ -492,8 +512,12 @@ pub fn ic_map(
 pub fn resonance_map(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] cfg: JsValue,
     #[wasm_bindgen(unchecked_param_type = "ResonanceOptions")] opts: JsValue,
-    progress: Option<Function>,
+    #[wasm_bindgen(
+        unchecked_param_type = "((done: number, total: number) => void) | null | undefined"
+    )]
+    progress: JsValue,
 ) -> Result<JsValue, JsError> {
+    let progress: Option<Function> = function_arg(progress, "progress")?;
     let cfg = config_from(cfg)?;
     let opts: ResonanceOptions = required_js(
         opts,

@@ -41,12 +41,13 @@ pub(crate) fn browser_input(mut input: FemInput) -> FemInput {
 #[wasm_bindgen(js_name = feModes, unchecked_return_type = "FeModesResult")]
 pub fn fe_modes(
     #[wasm_bindgen(unchecked_param_type = "FemInput | undefined")] input: JsValue,
-    zeta: Option<f64>,
+    #[wasm_bindgen(unchecked_param_type = "number | null | undefined")] zeta: JsValue,
     #[wasm_bindgen(unchecked_param_type = "FeModesOptions | undefined")] opts: JsValue,
 ) -> Result<JsValue, JsError> {
+    let zeta = super::marshal::opt_number_arg(&zeta, "zeta", "a number in [0, 10], or undefined")?
+        .unwrap_or(0.0);
     let input = browser_input(from_js::<FemInput>(input, "fem")?);
     let opts: FeModesOptions = from_js(opts, "opts")?;
-    let zeta = zeta.unwrap_or(0.0);
     crate::error::check_range("zeta", zeta, 0.0, 10.0, "").map_err(err)?;
     let (px, py) = match opts.strain_point_mm {
         Some([x, y]) => (x, y),

@@ -21,7 +21,9 @@ pub(crate) fn err(e: WingbeatError) -> JsError {
 /// The value goes through `JSON.stringify` and serde_json — the same parser as the CLI's config
 /// files — rather than straight through serde-wasm-bindgen, whose struct deserialiser skips
 /// unknown keys and so would defeat `deny_unknown_fields`. NaN and ±Infinity become `null`
-/// there and are reported as such.
+/// there and are reported as such. Before that, [`check_js_value`] walks the value: its size
+/// and depth are bounded and a function, symbol, BigInt or typed array inside it is refused
+/// by path (`JSON.stringify` would drop the first two silently and throw on a BigInt).
 pub(crate) fn from_js<T: DeserializeOwned + Default>(v: JsValue, what: &str) -> Result<T, JsError> {
     if v.is_undefined() || v.is_null() {
         return Ok(T::default());
@@ -35,15 +37,11 @@ pub(crate) fn parse_js<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T,
 
 /// [`parse_js`] with the error as a plain message (for results that report rather than throw).
 pub(crate) fn parse_js_text<T: DeserializeOwned>(v: JsValue, what: &str) -> Result<T, String> {
-    if v.is_function() {
-        return Err(format!(
-            "invalid value for `{what}`: a function (expected a plain object, array or number)"
-        ));
-    }
+    check_js_value(&v, what)?;
     let text: String = js_sys::JSON::stringify(&v)
         .map_err(|_| {
             format!(
-                "invalid value for `{what}`: not JSON-serialisable (cyclic, BigInt or a throwing getter)"
+                "invalid value for `{what}`: not JSON-serialisable (cyclic, or a getter or toJSON that throws)"
             )
         })?
         .as_string()
@@ -68,35 +66,360 @@ pub(crate) fn parse_js_text<T: DeserializeOwned>(v: JsValue, what: &str) -> Resu
     })
 }
 
-/// Reads a numeric series passed from JS (a `Float64Array` or an array of numbers), checking
+// ---------------------------------------------------------------------------------------------
+// Argument checks. Every export takes its arguments as `JsValue`s and reads them through these
+// helpers, which check the type (never coercing: "3" is not a number, 1 is not `true`), the
+// length before anything is allocated, and finiteness, and name the argument in the error.
+// Typed wasm-bindgen parameters (`&str`, `&[f64]`, `Vec<f64>`, `u32`) would instead copy
+// whatever they are given into wasm memory first — a number where text is expected, or
+// `{ length: 2e9 }` where a slice is, trapped the instance or leaked the allocation. Every JS
+// call made here is a `catch` binding, so a throwing getter or a revoked proxy becomes an error
+// instead of an exception unwinding through Rust frames.
+// ---------------------------------------------------------------------------------------------
+
+#[wasm_bindgen]
+extern "C" {
+    /// `Array.isArray` (throws for a revoked proxy).
+    #[wasm_bindgen(catch, js_namespace = Array, js_name = isArray)]
+    fn js_is_array(v: &JsValue) -> Result<bool, JsValue>;
+    /// `Object.keys` (throws for some proxies).
+    #[wasm_bindgen(catch, js_namespace = Object, js_name = keys)]
+    fn js_object_keys(v: &JsValue) -> Result<Array, JsValue>;
+}
+
+/// `Array.isArray`, false for a value it throws on (a revoked proxy).
+pub(crate) fn is_array(v: &JsValue) -> bool {
+    js_is_array(v).unwrap_or(false)
+}
+
+/// `ArrayBuffer.isView`: a real typed array or DataView (a prototype trick cannot fake it).
+fn js_is_view(v: &JsValue) -> bool {
+    js_sys::ArrayBuffer::is_view(v)
+}
+
+/// `new Float64Array(typedArray)`: the values from the source's internal slots, no user code;
+/// an error for BigInt arrays.
+fn js_f64_copy(v: &JsValue) -> Result<Float64Array, JsValue> {
+    let ctor = Float64Array::new_with_length(0).constructor();
+    Reflect::construct(&ctor, &Array::of1(v)).map(JsCast::unchecked_into)
+}
+
+/// Most characters a text argument may have (file contents: outlines, kinematics CSV, modes
+/// JSON): 32 Mi UTF-16 code units. The copy into wasm memory is at most 3 bytes per unit.
+pub const MAX_TEXT_CHARS: usize = 32 * 1024 * 1024;
+
+/// Most values (numbers, strings, array elements, object entries) an object argument (a
+/// config, an options object, an FE input) may hold, and how deeply it may nest; checked
+/// before it is serialised.
+pub const MAX_JS_VALUES: usize = 1_000_000;
+/// See [`MAX_JS_VALUES`].
+pub const MAX_JS_DEPTH: usize = 32;
+
+fn bad(field: &str, got: impl std::fmt::Display, allowed: impl Into<String>) -> JsError {
+    err(WingbeatError::invalid(field, got, allowed))
+}
+
+/// A JS number as it would print in JS (`NaN`, `Infinity`, `1e+300` as `1e300`).
+fn js_number(x: f64) -> String {
+    if x.is_nan() {
+        "NaN".into()
+    } else if x.is_infinite() {
+        if x > 0.0 { "Infinity" } else { "-Infinity" }.into()
+    } else {
+        crate::error::num(x)
+    }
+}
+
+/// The length property of an array-like, when it is a number (a `catch` read).
+fn length_of(v: &JsValue) -> Option<f64> {
+    Reflect::get(v, &JsValue::from_str("length"))
+        .ok()
+        .and_then(|l| l.as_f64())
+}
+
+/// What a JS value is, for error messages (never its whole text).
+pub(crate) fn kind(v: &JsValue) -> String {
+    if v.is_undefined() {
+        return "undefined".into();
+    }
+    if v.is_null() {
+        return "null".into();
+    }
+    if let Some(x) = v.as_f64() {
+        return format!("the number {}", js_number(x));
+    }
+    if let Some(b) = v.as_bool() {
+        return format!("the boolean {b}");
+    }
+    if v.is_string() {
+        let n = v.unchecked_ref::<js_sys::JsString>().length();
+        return format!("a string of {n} characters");
+    }
+    match v.js_typeof().as_string().as_deref() {
+        Some("function") => return "a function".into(),
+        Some("symbol") => return "a symbol".into(),
+        Some("bigint") => return "a BigInt".into(),
+        _ => {}
+    }
+    if js_is_view(v) {
+        let name = Reflect::get(v, &JsValue::from_str("constructor"))
+            .ok()
+            .and_then(|c| Reflect::get(&c, &JsValue::from_str("name")).ok())
+            .and_then(|n| n.as_string())
+            .filter(|n| n.len() <= 40)
+            .unwrap_or_else(|| "typed array".into());
+        return format!("a {name}");
+    }
+    if js_is_array(v).unwrap_or(false) {
+        return match length_of(v) {
+            Some(n) => format!("an array of {} elements", js_number(n)),
+            None => "an array".into(),
+        };
+    }
+    match length_of(v) {
+        Some(n) => format!("an object with length {}", js_number(n)),
+        None => "an object".into(),
+    }
+}
+
+/// Walks an object argument before it is serialised: at most [`MAX_JS_VALUES`] values and
+/// [`MAX_JS_DEPTH`] levels; a function, symbol, BigInt or typed array anywhere in it is
+/// refused, naming its path (`what.key[i]`).
+pub(crate) fn check_js_value(v: &JsValue, what: &str) -> Result<(), String> {
+    let mut budget = MAX_JS_VALUES;
+    walk_js(v, what, 0, &mut budget)
+}
+
+fn walk_js(v: &JsValue, path: &str, depth: usize, budget: &mut usize) -> Result<(), String> {
+    let too_big = |path: &str| {
+        WingbeatError::ResourceCap {
+            field: path.to_string(),
+            requested: format!("more than {MAX_JS_VALUES} values"),
+            cap: format!("{MAX_JS_VALUES} values in one argument"),
+            why: "the argument is copied into wasm memory as JSON".into(),
+        }
+        .to_string()
+    };
+    if *budget == 0 {
+        return Err(too_big(path));
+    }
+    *budget -= 1;
+    if v.is_undefined() || v.is_null() || v.as_f64().is_some() || v.as_bool().is_some() {
+        return Ok(());
+    }
+    if v.is_string() {
+        let n = v.unchecked_ref::<js_sys::JsString>().length() as usize;
+        if n > MAX_TEXT_CHARS {
+            return Err(WingbeatError::invalid(
+                path,
+                kind(v),
+                format!("a string of at most {MAX_TEXT_CHARS} characters"),
+            )
+            .to_string());
+        }
+        return Ok(());
+    }
+    if !v.is_object() || js_is_view(v) {
+        // a function, symbol, BigInt, typed array or DataView
+        return Err(WingbeatError::invalid(
+            path,
+            kind(v),
+            "plain JSON values: numbers, strings, booleans, arrays and objects",
+        )
+        .to_string());
+    }
+    if depth >= MAX_JS_DEPTH {
+        return Err(WingbeatError::invalid(
+            path,
+            "nested too deeply",
+            format!("at most {MAX_JS_DEPTH} levels of arrays and objects"),
+        )
+        .to_string());
+    }
+    let unreadable = |path: &str| {
+        WingbeatError::invalid(path, "unreadable (a getter or proxy threw)", "plain data")
+            .to_string()
+    };
+    if js_is_array(v).map_err(|_| unreadable(path))? {
+        let n = length_of(v).ok_or_else(|| unreadable(path))?;
+        if !(n >= 0.0 && n <= *budget as f64) {
+            return Err(too_big(path));
+        }
+        for i in 0..n as u32 {
+            let e = Reflect::get_u32(v, i).map_err(|_| unreadable(path))?;
+            if e.is_undefined() || e.is_null() || e.as_f64().is_some() || e.as_bool().is_some() {
+                // the common case (a list of numbers): no path string built
+                if *budget == 0 {
+                    return Err(too_big(path));
+                }
+                *budget -= 1;
+            } else {
+                walk_js(&e, &format!("{path}[{i}]"), depth + 1, budget)?;
+            }
+        }
+        return Ok(());
+    }
+    let keys = js_object_keys(v).map_err(|_| unreadable(path))?;
+    let n = keys.length() as usize;
+    if n > *budget {
+        return Err(too_big(path));
+    }
+    for k in keys.iter() {
+        let e = Reflect::get(v, &k).map_err(|_| unreadable(path))?;
+        let key = k.as_string().unwrap_or_default();
+        walk_js(&e, &format!("{path}.{key}"), depth + 1, budget)?;
+    }
+    Ok(())
+}
+
+/// A text argument (a file's contents, a name): a JS string of at most `max_chars` UTF-16
+/// units, checked before it is copied into wasm memory. `allowed` describes it for the error.
+pub(crate) fn text_arg(
+    v: &JsValue,
+    field: &str,
+    max_chars: usize,
+    allowed: &str,
+) -> Result<String, JsError> {
+    if !v.is_string() {
+        return Err(bad(field, kind(v), allowed));
+    }
+    let n = v.unchecked_ref::<js_sys::JsString>().length() as usize;
+    if n > max_chars {
+        return Err(bad(
+            field,
+            kind(v),
+            format!("{allowed}, at most {max_chars} characters"),
+        ));
+    }
+    Ok(v.as_string().unwrap_or_default())
+}
+
+/// A number argument: a JS number (no coercion from strings, booleans or objects); NaN and
+/// ±Infinity are passed on for the caller's own range check.
+pub(crate) fn number_arg(v: &JsValue, field: &str, allowed: &str) -> Result<f64, JsError> {
+    v.as_f64().ok_or_else(|| bad(field, kind(v), allowed))
+}
+
+/// A finite number argument within `[lo, hi]`.
+pub(crate) fn finite_arg(v: &JsValue, field: &str, lo: f64, hi: f64) -> Result<f64, JsError> {
+    let allowed = format!("a finite number in [{}, {}]", js_number(lo), js_number(hi));
+    let x = number_arg(v, field, &allowed)?;
+    if !(x.is_finite() && x >= lo && x <= hi) {
+        return Err(bad(field, js_number(x), allowed));
+    }
+    Ok(x)
+}
+
+/// An optional number argument: `undefined`/`null` is `None`.
+pub(crate) fn opt_number_arg(
+    v: &JsValue,
+    field: &str,
+    allowed: &str,
+) -> Result<Option<f64>, JsError> {
+    if v.is_undefined() || v.is_null() {
+        return Ok(None);
+    }
+    number_arg(v, field, allowed).map(Some)
+}
+
+/// An integer argument in `[lo, hi]` (a JS number; 1.5, NaN, "3" are refused).
+pub(crate) fn int_arg(v: &JsValue, field: &str, lo: usize, hi: usize) -> Result<usize, JsError> {
+    let x = number_arg(v, field, &format!("an integer in [{lo}, {hi}]"))?;
+    super::helpers::check_int(field, x, lo, hi).map_err(err)
+}
+
+/// A boolean argument (`true`/`false` only).
+pub(crate) fn bool_arg(v: &JsValue, field: &str) -> Result<bool, JsError> {
+    v.as_bool()
+        .ok_or_else(|| bad(field, kind(v), "true or false"))
+}
+
+/// An optional callback: `undefined`/`null` is `None`; anything but a function is refused.
+pub(crate) fn function_arg(v: JsValue, field: &str) -> Result<Option<js_sys::Function>, JsError> {
+    if v.is_undefined() || v.is_null() {
+        return Ok(None);
+    }
+    if !v.is_function() {
+        return Err(bad(field, kind(&v), "a function or undefined"));
+    }
+    Ok(Some(v.unchecked_into()))
+}
+
+/// A list of numbers: a typed array of numbers (not BigInt; copied from its internal slots) or
+/// an array whose every element is a JS number. Its length is checked against `[min, max]`
+/// before anything is copied into wasm memory; the values are not checked.
+pub(crate) fn f64_array_arg(
+    v: &JsValue,
+    field: &str,
+    min: usize,
+    max: usize,
+) -> Result<Vec<f64>, JsError> {
+    let allowed = || {
+        if min == max {
+            format!("a Float64Array or an array of exactly {min} numbers")
+        } else {
+            format!("a Float64Array or an array of {min} to {max} numbers")
+        }
+    };
+    let count = |n: f64| -> Result<usize, JsError> {
+        if !(n >= min as f64 && n <= max as f64) {
+            return Err(bad(field, format!("{} values", js_number(n)), allowed()));
+        }
+        Ok(n as usize)
+    };
+    if js_is_view(v) {
+        let f = js_f64_copy(v).map_err(|_| bad(field, kind(v), allowed()))?;
+        // `f` is ours: its length is its own (the source's `length` could be shadowed).
+        count(f64::from(f.length()))?;
+        return Ok(f.to_vec());
+    }
+    if js_is_array(v).unwrap_or(false) {
+        let n = count(length_of(v).unwrap_or(f64::NAN))?;
+        let mut out = Vec::with_capacity(n);
+        for i in 0..n {
+            let e = Reflect::get_u32(v, i as u32)
+                .map_err(|_| bad(&format!("{field}[{i}]"), "unreadable", "a number"))?;
+            match e.as_f64() {
+                Some(x) => out.push(x),
+                None => return Err(bad(&format!("{field}[{i}]"), kind(&e), "a number")),
+            }
+        }
+        return Ok(out);
+    }
+    Err(bad(field, kind(v), allowed()))
+}
+
+/// A list of indices: a typed array or array of integers in `[0, 2³² − 1]` (no wrapping or
+/// truncation: −1 and 1.5 are refused), length checked as [`f64_array_arg`].
+pub(crate) fn u32_array_arg(
+    v: &JsValue,
+    field: &str,
+    min: usize,
+    max: usize,
+) -> Result<Vec<u32>, JsError> {
+    let x = f64_array_arg(v, field, min, max)?;
+    x.iter()
+        .enumerate()
+        .map(|(i, &t)| {
+            if t.is_finite() && t.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&t) {
+                Ok(t as u32)
+            } else {
+                Err(bad(
+                    &format!("{field}[{i}]"),
+                    js_number(t),
+                    "an integer index in [0, 4294967295]",
+                ))
+            }
+        })
+        .collect()
+}
+
+/// Reads a numeric series passed from JS (a typed array or an array of numbers), checking
 /// its length against `cap` *before* anything is allocated (an object such as
 /// `{ length: 2e9 }` is refused by name instead of aborting the instance), then that it is
 /// non-empty and finite ([`super::helpers::check_series`]).
 pub(crate) fn series_from_js(v: &JsValue, field: &str, cap: usize) -> Result<Vec<f64>, JsError> {
-    let too_long = |n: f64| {
-        err(WingbeatError::invalid(
-            field,
-            format!("{n} samples"),
-            format!("1 to {cap} samples"),
-        ))
-    };
-    let f = if v.is_instance_of::<Float64Array>() {
-        v.clone().unchecked_into::<Float64Array>()
-    } else if Array::is_array(v) {
-        let n = Array::from(v).length();
-        if n as usize > cap {
-            return Err(too_long(f64::from(n)));
-        }
-        Float64Array::new(v)
-    } else {
-        return Err(JsError::new(&format!(
-            "invalid value for `{field}`: not a Float64Array or an array of numbers"
-        )));
-    };
-    if f.length() as usize > cap {
-        return Err(too_long(f64::from(f.length())));
-    }
-    let x = f.to_vec();
+    let x = f64_array_arg(v, field, 0, cap)?;
     super::helpers::check_series(field, &x).map_err(err)?;
     Ok(x)
 }

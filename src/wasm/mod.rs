@@ -22,10 +22,15 @@
 //!
 //! Every entry point returns `Result<_, JsError>`; the error message is the core's
 //! [`WingbeatError`](crate::WingbeatError) text, which names the field and the allowed range.
-//! Inputs are deserialised with their path tracked (a type error says where), validated by the
-//! core, then checked against the web caps in [`helpers`], so nothing reaches code that could
-//! panic. `console_error_panic_hook` is installed anyway, so a bug would at least say where it
-//! was.
+//! Every argument is taken as a `JsValue` and read through the checks in [`marshal`] (type
+//! without coercion, length before any copy into wasm memory, finiteness, size and depth of
+//! objects), objects are deserialised with their path tracked (a type error says where),
+//! validated by the core, then checked against the web caps in [`helpers`], so nothing reaches
+//! code that could panic. tests/js/wasm_hostile_inputs.test.mjs calls every export with random
+//! values of every JS type and checks this. Should a bug panic anyway, the panic hook logs it
+//! (`console_error_panic_hook`) and schedules a fresh instance: the call that panicked throws a
+//! `RuntimeError` (wasm32 aborts on panic), the next call runs on a new instance, so one bug
+//! cannot leave the page's module dead.
 
 pub mod analysis;
 pub mod fe;
@@ -53,10 +58,15 @@ pub use wing::{
 
 use wasm_bindgen::prelude::*;
 
-/// Installs the panic hook (runs when the module is instantiated). Designed never to fire.
+/// Installs the panic hook (runs when the module is instantiated). Designed never to fire: it
+/// logs the panic and has wasm-bindgen replace the instance before the next call (objects made
+/// by the old one, such as a `WingView`, then throw "stale object" instead of trapping).
 #[wasm_bindgen(start)]
 pub fn start() {
-    console_error_panic_hook::set_once();
+    std::panic::set_hook(Box::new(|info| {
+        console_error_panic_hook::hook(info);
+        wasm_bindgen::handler::schedule_reinit();
+    }));
 }
 
 /// The crate version.

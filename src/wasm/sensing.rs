@@ -4,7 +4,10 @@
 //! long results as typed arrays.
 
 use super::helpers::{check_strain_nodes, mesh_from_flat};
-use super::marshal::{config_from, err, f64a, from_js, progress_fn, set, spectrum_js, to_js};
+use super::marshal::{
+    config_from, err, f64_array_arg, f64a, from_js, function_arg, progress_fn, set, spectrum_js,
+    to_js,
+};
 use crate::analysis::psd::{welch, WelchOptions};
 use crate::analysis::sensing::{
     check_body_rate, check_sensing_cost, delta_strain_series, detectability_map,
@@ -87,20 +90,29 @@ pub fn body_rate_ranges() -> Result<JsValue, JsError> {
 #[wasm_bindgen(js_name = senseRotation, unchecked_return_type = "SensingResult")]
 pub fn sense_rotation(
     #[wasm_bindgen(unchecked_param_type = "SimConfig")] config: JsValue,
-    nodes: &[f64],
-    triangles: &[u32],
-    strain_nodes: &[f64],
-    body_rate: &[f64],
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] nodes: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Uint32Array | number[]")] triangles: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] strain_nodes: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "[number, number, number] | Float64Array")]
+    body_rate: JsValue,
     #[wasm_bindgen(unchecked_param_type = "SenseOptions | undefined")] opts: JsValue,
-    progress: Option<js_sys::Function>,
+    #[wasm_bindgen(
+        unchecked_param_type = "((done: number, total: number) => void) | null | undefined"
+    )]
+    progress: JsValue,
 ) -> Result<JsValue, JsError> {
+    let progress = function_arg(progress, "progress")?;
     let cfg = config_from(config)?;
     let o: SenseOptions = from_js(opts, "opts")?;
     let sopts = sensing_options(&o)?;
-    let w = body_rate_of(body_rate).map_err(err)?;
+    let body_rate = f64_array_arg(&body_rate, "body_rate", 0, 3)?;
+    let w = body_rate_of(&body_rate).map_err(err)?;
     let n_modes = cfg.modes.len();
+    let (nodes, triangles, strain_nodes) =
+        super::wing::flat_mesh_args(&nodes, &triangles, &strain_nodes, n_modes)?;
+    let strain_nodes = &strain_nodes[..];
     let nn = check_strain_nodes(strain_nodes, n_modes).map_err(err)?;
-    let (mesh_nodes, tris) = mesh_from_flat(nodes, triangles, nn).map_err(err)?;
+    let (mesh_nodes, tris) = mesh_from_flat(&nodes, &triangles, nn).map_err(err)?;
     let strain = |k: usize, i: usize| {
         let j = (k * nn + i) * 3;
         [strain_nodes[j], strain_nodes[j + 1], strain_nodes[j + 2]]

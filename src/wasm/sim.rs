@@ -176,7 +176,7 @@ pub fn apply_overrides(
 /// column, line or option.
 #[wasm_bindgen(js_name = kinematicsFromCsv, unchecked_return_type = "KinematicsTable")]
 pub fn kinematics_from_csv(
-    text: &str,
+    #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
     #[wasm_bindgen(unchecked_param_type = "CsvKinematicsOptions")] opts: JsValue,
 ) -> Result<JsValue, JsError> {
     use crate::kinematics_table::{kinematics_from_csv as core_from_csv, CsvKinematicsOptions};
@@ -185,7 +185,13 @@ pub fn kinematics_from_csv(
         "kinematicsFromCsv",
         "{ units: \"deg\" | \"rad\", flap_hz, max_harmonic? }",
     )?;
-    let r = core_from_csv(text, &opts).map_err(err)?;
+    let text = super::marshal::text_arg(
+        &text,
+        "kinematicsFromCsv.text",
+        super::marshal::MAX_TEXT_CHARS,
+        "a string: the CSV file's text",
+    )?;
+    let r = core_from_csv(&text, &opts).map_err(err)?;
     #[derive(Serialize)]
     struct Meta<'a> {
         kinematics: &'a crate::kinematics::Kinematics,

@@ -17,6 +17,7 @@
 //! ```
 //! Every failure reaches JS as a `JsError` with a readable message.
 
+use super::marshal::{bool_arg, f64_array_arg, finite_arg, int_arg, kind, number_arg, text_arg};
 use crate::render::gpu::{open_device, Renderer};
 use crate::render::mesh::WingMesh;
 use crate::render::scene::{ColourMode, FrameParams, Legend, OrbitKey};
@@ -41,6 +42,43 @@ pub struct WingView {
     warnings: Vec<String>,
 }
 
+/// Most values `fitPoints` takes (x, y, z triples: a million points).
+const MAX_FIT_VALUES: usize = 3_000_000;
+/// Largest |coordinate| (m) and |angle| (rad) `setCamera` takes (the camera's own limits are far
+/// inside: distance 1e-3 to 1e3 m).
+const MAX_CAMERA: f64 = 1e6;
+/// Largest canvas side `resize` takes, device pixels (browsers cap canvases near 32 767).
+const MAX_CANVAS_PX: usize = 32_768;
+
+/// The canvas argument of the constructors: an `HTMLCanvasElement`, else an error naming it.
+fn canvas_arg(canvas: JsValue) -> Result<web_sys::HtmlCanvasElement, JsError> {
+    let what = kind(&canvas);
+    canvas
+        .dyn_into::<web_sys::HtmlCanvasElement>()
+        .map_err(|_| {
+            super::marshal::err(crate::WingbeatError::invalid(
+                "canvas",
+                what,
+                "an HTMLCanvasElement",
+            ))
+        })
+}
+
+/// The pose arguments of `set_frame` and `setPose`: three numbers (non-finite ones are drawn as
+/// 0 and reported by the renderer) and the modal coordinates (at most one per mode).
+fn pose_args(
+    alpha: &JsValue,
+    beta: &JsValue,
+    gamma: &JsValue,
+    q: &JsValue,
+) -> Result<(f64, f64, f64, Vec<f64>), JsError> {
+    let a = number_arg(alpha, "alpha", "a number, rad")?;
+    let b = number_arg(beta, "beta", "a number, rad")?;
+    let g = number_arg(gamma, "gamma", "a number, rad")?;
+    let q = f64_array_arg(q, "q", 0, crate::model::MAX_MODES)?;
+    Ok((a, b, g, q))
+}
+
 fn set(obj: &js_sys::Object, key: &str, v: JsValue) {
     let _ = js_sys::Reflect::set(obj, &JsValue::from_str(key), &v);
 }
@@ -49,16 +87,28 @@ fn parse_mesh(mesh_json: &JsValue) -> Result<WingMesh, JsError> {
     if mesh_json.is_null() || mesh_json.is_undefined() {
         return Ok(WingMesh::synthetic(40, 16));
     }
-    let text = match mesh_json.as_string() {
-        Some(s) => s,
-        None => js_sys::JSON::stringify(mesh_json)
+    let text = if mesh_json.is_string() {
+        text_arg(
+            mesh_json,
+            "mesh_json",
+            super::marshal::MAX_TEXT_CHARS,
+            "the FE mesh as JSON text or an object",
+        )?
+    } else {
+        super::marshal::check_js_value(mesh_json, "mesh_json").map_err(|m| JsError::new(&m))?;
+        js_sys::JSON::stringify(mesh_json)
             .map_err(|_| JsError::new("mesh: could not serialise the object to JSON"))?
             .as_string()
-            .unwrap_or_default(),
+            .unwrap_or_default()
     };
-    let v: serde_json::Value = serde_json::from_str(&text)
-        .map_err(|e| JsError::new(&format!("mesh: invalid JSON: {e}")))?;
-    WingMesh::from_fe_json(&v).map_err(|e| JsError::new(&format!("mesh: {e}")))
+    let v: serde_json::Value = serde_json::from_str(&text).map_err(|e| {
+        super::marshal::err(crate::WingbeatError::invalid(
+            "mesh_json",
+            format!("not JSON ({e})"),
+            "the FE mesh as JSON text or an object, or null for the synthetic wing",
+        ))
+    })?;
+    WingMesh::from_fe_json(&v).map_err(|e| JsError::new(&format!("mesh_json: {e}")))
 }
 
 #[wasm_bindgen]
@@ -67,10 +117,11 @@ impl WingView {
     /// synthetic wing. Rejects with a clear reason when neither WebGPU nor WebGL2 works, the
     /// canvas is zero-sized, or the mesh is invalid.
     pub async fn create(
-        canvas: web_sys::HtmlCanvasElement,
+        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement")] canvas: JsValue,
         mesh_json: JsValue,
     ) -> Result<WingView, JsError> {
         let mesh = parse_mesh(&mesh_json)?;
+        let canvas = canvas_arg(canvas)?;
         Self::with_mesh(canvas, mesh).await
     }
 
@@ -79,12 +130,20 @@ impl WingView {
     /// not JSON. An empty `strain_nodes` draws without strain colours.
     #[wasm_bindgen(js_name = createFromArrays)]
     pub async fn create_from_arrays(
-        canvas: web_sys::HtmlCanvasElement,
-        nodes: Vec<f64>,
-        triangles: Vec<u32>,
-        shapes: Vec<f64>,
-        strain_nodes: Vec<f64>,
+        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement")] canvas: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] nodes: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Uint32Array | number[]")] triangles: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] shapes: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] strain_nodes: JsValue,
     ) -> Result<WingView, JsError> {
+        let (max_nodes, max_tris) = super::wing::flat_mesh_caps();
+        let max_modes = crate::model::MAX_MODES;
+        let nodes = f64_array_arg(&nodes, "nodes", 3, 3 * max_nodes)?;
+        let triangles = super::marshal::u32_array_arg(&triangles, "triangles", 3, 3 * max_tris)?;
+        let shapes = f64_array_arg(&shapes, "shapes", 0, max_nodes * max_modes)?;
+        let strain_nodes =
+            f64_array_arg(&strain_nodes, "strain_nodes", 0, 3 * max_nodes * max_modes)?;
+        let canvas = canvas_arg(canvas)?;
         let mesh = WingMesh::from_flat(&nodes, &triangles, &shapes, &strain_nodes)
             .map_err(|e| JsError::new(&format!("mesh: {e}")))?;
         Self::with_mesh(canvas, mesh).await
@@ -94,11 +153,14 @@ impl WingView {
     /// to 1..=1000; `2·n_span·n_chord − n_chord` triangles), e.g. for frame-time benchmarks.
     #[wasm_bindgen(js_name = createSynthetic)]
     pub async fn create_synthetic(
-        canvas: web_sys::HtmlCanvasElement,
-        n_span: u32,
-        n_chord: u32,
+        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement")] canvas: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] n_span: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] n_chord: JsValue,
     ) -> Result<WingView, JsError> {
-        let mesh = WingMesh::synthetic(n_span as usize, n_chord as usize);
+        let n_span = int_arg(&n_span, "n_span", 1, 1000)?;
+        let n_chord = int_arg(&n_chord, "n_chord", 1, 1000)?;
+        let canvas = canvas_arg(canvas)?;
+        let mesh = WingMesh::synthetic(n_span, n_chord);
         Self::with_mesh(canvas, mesh).await
     }
 
@@ -207,13 +269,16 @@ impl WingView {
     /// warnings}` (`component` is `"none"` for plain colouring).
     pub fn set_frame(
         &mut self,
-        alpha: f64,
-        beta: f64,
-        gamma: f64,
-        q: &[f64],
-        exaggeration: f64,
-        colour_mode: u32,
+        #[wasm_bindgen(unchecked_param_type = "number")] alpha: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] beta: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] gamma: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] q: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] exaggeration: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] colour_mode: JsValue,
     ) -> Result<JsValue, JsError> {
+        let (alpha, beta, gamma, q) = pose_args(&alpha, &beta, &gamma, &q)?;
+        let exaggeration = number_arg(&exaggeration, "exaggeration", "a number")?;
+        let colour_mode = int_arg(&colour_mode, "colour_mode", 0, 5)? as u32;
         let colour = ColourMode::from_index(colour_mode).ok_or_else(|| {
             JsError::new(&format!(
                 "invalid value for `colour_mode`: {colour_mode} (allowed: 0 plain, 1 ε_x, 2 ε_y, 3 γ_xy, 4 magnitude, 5 node field)"
@@ -223,7 +288,7 @@ impl WingView {
         self.frame.beta = beta;
         self.frame.gamma = gamma;
         self.frame.q.clear();
-        self.frame.q.extend_from_slice(q);
+        self.frame.q.extend_from_slice(&q);
         self.frame.exaggeration = exaggeration;
         self.frame.colour = colour;
         Ok(self.update())
@@ -235,19 +300,30 @@ impl WingView {
     /// Non-finite values are drawn as 0 and |values| > 10⁶ clamped; returns how many were
     /// changed (call `set_frame` for their names). Call `render()` after it.
     #[wasm_bindgen(js_name = setPose)]
-    pub fn set_pose(&mut self, alpha: f64, beta: f64, gamma: f64, q: &[f64]) -> u32 {
+    pub fn set_pose(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "number")] alpha: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] beta: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] gamma: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] q: JsValue,
+    ) -> Result<u32, JsError> {
+        let (alpha, beta, gamma, q) = pose_args(&alpha, &beta, &gamma, &q)?;
         self.frame.alpha = alpha;
         self.frame.beta = beta;
         self.frame.gamma = gamma;
         self.frame.q.clear();
-        self.frame.q.extend_from_slice(q);
-        self.renderer.update_pose(alpha, beta, gamma, q) as u32
+        self.frame.q.extend_from_slice(&q);
+        Ok(self.renderer.update_pose(alpha, beta, gamma, &q) as u32)
     }
 
     /// Fixes the legend limit (colours span ±limit), or `null`/non-positive for automatic.
-    pub fn set_strain_range(&mut self, limit: Option<f64>) -> JsValue {
+    pub fn set_strain_range(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "number | null | undefined")] limit: JsValue,
+    ) -> Result<JsValue, JsError> {
+        let limit = super::marshal::opt_number_arg(&limit, "limit", "a number, null or undefined")?;
         self.frame.strain_range = limit.filter(|l| l.is_finite() && *l > 0.0);
-        self.update()
+        Ok(self.update())
     }
 
     /// Sets the node field drawn with colour mode 5: one value per node of the mesh (e.g. the
@@ -258,10 +334,13 @@ impl WingView {
     #[wasm_bindgen(js_name = setNodeField)]
     pub fn set_node_field(
         &mut self,
-        values: &[f64],
-        limit: Option<f64>,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] values: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number | null | undefined")] limit: JsValue,
     ) -> Result<JsValue, JsError> {
-        let note = self.renderer.set_node_field(values).map_err(js_err)?;
+        let n = self.renderer.mesh().nodes.len();
+        let values = f64_array_arg(&values, "values", n, n)?;
+        let limit = super::marshal::opt_number_arg(&limit, "limit", "a number, null or undefined")?;
+        let note = self.renderer.set_node_field(&values).map_err(js_err)?;
         self.warnings
             .retain(|w| !w.contains("non-finite field value"));
         self.warnings.extend(note);
@@ -284,14 +363,22 @@ impl WingView {
     /// (fill and outline) and the body axis (`show_body_axis`; omitted: as `show_axes`).
     pub fn set_scene(
         &mut self,
-        show_axes: bool,
-        show_stroke_plane: bool,
-        show_body_axis: Option<bool>,
-    ) {
+        #[wasm_bindgen(unchecked_param_type = "boolean")] show_axes: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "boolean")] show_stroke_plane: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "boolean | undefined")] show_body_axis: JsValue,
+    ) -> Result<(), JsError> {
+        let show_axes = bool_arg(&show_axes, "show_axes")?;
+        let show_stroke_plane = bool_arg(&show_stroke_plane, "show_stroke_plane")?;
+        let show_body_axis = if show_body_axis.is_undefined() || show_body_axis.is_null() {
+            show_axes
+        } else {
+            bool_arg(&show_body_axis, "show_body_axis")?
+        };
         self.frame.show_axes = show_axes;
         self.frame.show_stroke_plane = show_stroke_plane;
-        self.frame.show_body_axis = show_body_axis.unwrap_or(show_axes);
+        self.frame.show_body_axis = show_body_axis;
         self.update();
+        Ok(())
     }
 
     /// Sets the orbit camera: the target it looks at (m, fixed frame), yaw and pitch (rad; the
@@ -300,13 +387,24 @@ impl WingView {
     #[wasm_bindgen(js_name = setCamera)]
     pub fn set_camera(
         &mut self,
-        tx: f64,
-        ty: f64,
-        tz: f64,
-        yaw: f64,
-        pitch: f64,
-        distance: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] tx: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] ty: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] tz: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] yaw: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] pitch: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] distance: JsValue,
     ) -> Result<(), JsError> {
+        let n = |v: &JsValue, f: &str| finite_arg(v, f, -MAX_CAMERA, MAX_CAMERA);
+        let (tx, ty, tz) = (n(&tx, "tx")?, n(&ty, "ty")?, n(&tz, "tz")?);
+        let (yaw, pitch) = (n(&yaw, "yaw")?, n(&pitch, "pitch")?);
+        let distance = finite_arg(&distance, "distance", 0.0, MAX_CAMERA)?;
+        if distance == 0.0 {
+            return Err(super::marshal::err(crate::WingbeatError::invalid(
+                "distance",
+                0,
+                format!("a finite number in (0, {MAX_CAMERA}] m"),
+            )));
+        }
         let target = [tx as f32, ty as f32, tz as f32];
         if !self
             .renderer
@@ -341,7 +439,17 @@ impl WingView {
     /// (`OrbitCamera::fit_points`). Returns the new camera as `camera()` does. Rejects a
     /// length that is not a multiple of 3 or points that are all non-finite.
     #[wasm_bindgen(js_name = fitPoints)]
-    pub fn fit_points(&mut self, xyz: &[f32], margin: f32) -> Result<Vec<f64>, JsError> {
+    pub fn fit_points(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Float32Array | Float64Array | number[]")]
+        xyz: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] margin: JsValue,
+    ) -> Result<Vec<f64>, JsError> {
+        let margin = finite_arg(&margin, "margin", 0.0, 0.45)? as f32;
+        let xyz: Vec<f32> = f64_array_arg(&xyz, "xyz", 0, MAX_FIT_VALUES)?
+            .into_iter()
+            .map(|v| v as f32)
+            .collect();
         if xyz.len() % 3 != 0 {
             return Err(JsError::new(&format!(
                 "fitPoints: {} values is not a list of x, y, z triples",
@@ -410,9 +518,15 @@ impl WingView {
         result.map_err(js_err)
     }
 
-    /// Resizes the drawing buffer (device pixels). Zero sizes reject with a clear message and
-    /// leave the view as it was.
-    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), JsError> {
+    /// Resizes the drawing buffer (device pixels): integers in [1, 32768]; anything else is
+    /// refused by name, leaving the view as it was.
+    pub fn resize(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "number")] width: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] height: JsValue,
+    ) -> Result<(), JsError> {
+        let width = int_arg(&width, "width", 1, MAX_CANVAS_PX)? as u32;
+        let height = int_arg(&height, "height", 1, MAX_CANVAS_PX)? as u32;
         self.renderer.resize(width, height).map_err(js_err)?;
         self.config.width = width;
         self.config.height = height;
@@ -422,32 +536,48 @@ impl WingView {
     }
 
     /// Orbits the camera by a drag of (dx, dy) CSS pixels.
-    pub fn orbit(&mut self, dx: f64, dy: f64) {
+    pub fn orbit(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "number")] dx: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] dy: JsValue,
+    ) -> Result<(), JsError> {
+        let dx = finite_arg(&dx, "dx", -1e6, 1e6)?;
+        let dy = finite_arg(&dy, "dy", -1e6, 1e6)?;
         self.renderer.camera.drag(dx as f32, dy as f32);
         self.update();
+        Ok(())
     }
 
     /// Multiplies the camera distance by `factor` (> 1 zooms out).
-    pub fn zoom(&mut self, factor: f64) {
+    pub fn zoom(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "number")] factor: JsValue,
+    ) -> Result<(), JsError> {
+        let factor = finite_arg(&factor, "factor", 1e-6, 1e6)?;
         self.renderer.camera.zoom(factor as f32);
         self.update();
+        Ok(())
     }
 
     /// One keyboard step: `ArrowLeft`, `ArrowRight`, `ArrowUp`, `ArrowDown`, `+`, `-`
     /// (returns false for other keys).
-    pub fn key(&mut self, key: &str) -> bool {
-        let k = match key {
+    pub fn key(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "string")] key: JsValue,
+    ) -> Result<bool, JsError> {
+        let key = text_arg(&key, "key", 64, "a KeyboardEvent key name (a string)")?;
+        let k = match key.as_str() {
             "ArrowLeft" => OrbitKey::Left,
             "ArrowRight" => OrbitKey::Right,
             "ArrowUp" => OrbitKey::Up,
             "ArrowDown" => OrbitKey::Down,
             "+" | "=" => OrbitKey::ZoomIn,
             "-" | "_" => OrbitKey::ZoomOut,
-            _ => return false,
+            _ => return Ok(false),
         };
         self.renderer.camera.key(k);
         self.update();
-        true
+        Ok(true)
     }
 
     /// Legend colour stops as a flat array `[value, r, g, b, value, r, g, b, ...]` (sRGB 0–1)

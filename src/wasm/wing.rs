@@ -4,9 +4,12 @@
 //! ([`crate::fem::geometry`], [`crate::params`]), so the CLI and the lab parse and check the
 //! same way.
 
-use super::marshal::{err, from_js, parse_js_text, set, to_js};
+use super::marshal::{
+    err, f64_array_arg, from_js, int_arg, kind, parse_js_text, set, text_arg, to_js, u32_array_arg,
+    MAX_TEXT_CHARS,
+};
 use crate::fem::geometry::{self, MAX_OUTLINE_POINTS};
-use js_sys::{Array, Object};
+use js_sys::Object;
 use std::collections::BTreeMap;
 use wasm_bindgen::prelude::*;
 
@@ -24,15 +27,22 @@ pub fn planforms() -> Result<JsValue, JsError> {
 /// `checkPlanform`); throws naming the line or the JSON position.
 #[wasm_bindgen(js_name = parsePlanform, unchecked_return_type = "[number, number][]")]
 pub fn parse_planform(
-    text: &str,
-    #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: &str,
+    #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue,
 ) -> Result<JsValue, JsError> {
-    let pts = match format {
-        "csv" => geometry::parse_planform_csv(text),
-        "json" => geometry::parse_planform_json(text),
+    let format = text_arg(&format, "parsePlanform.format", 8, "\"csv\" or \"json\"")?;
+    let text = text_arg(
+        &text,
+        "parsePlanform.text",
+        MAX_TEXT_CHARS,
+        "a string: the outline file's text",
+    )?;
+    let pts = match format.as_str() {
+        "csv" => geometry::parse_planform_csv(&text),
+        "json" => geometry::parse_planform_json(&text),
         other => Err(crate::WingbeatError::invalid(
             "parsePlanform.format",
-            other,
+            format!("{other:?}"),
             "\"csv\" or \"json\"",
         )),
     }
@@ -40,15 +50,15 @@ pub fn parse_planform(
     to_js(&pts)
 }
 
-/// Whether `value` is a JS array (the only argument the outline functions accept).
-fn is_array(v: &JsValue) -> bool {
-    Array::is_array(v)
-}
+use super::marshal::is_array;
 
 /// Reads an outline `[[x, y], …]` (mm) from JS, its length checked before it is copied.
 fn points_from(v: JsValue, what: &str) -> Result<Vec<[f64; 2]>, String> {
-    let n = Array::from(&v).length() as usize;
-    if n > MAX_OUTLINE_POINTS {
+    let n = js_sys::Reflect::get(&v, &JsValue::from_str("length"))
+        .ok()
+        .and_then(|l| l.as_f64())
+        .unwrap_or(f64::INFINITY);
+    if !(n <= MAX_OUTLINE_POINTS as f64) {
         return Err(crate::WingbeatError::ResourceCap {
             field: what.into(),
             requested: format!("{n} points"),
@@ -148,6 +158,34 @@ pub fn wing_input(
     to_js(&w)
 }
 
+/// `feModes`' flat mesh arrays as given back by a caller: `nodes` (x, y, z per node),
+/// `triangles` (three node indices each) and `strain_nodes` (3 values per node per mode), each
+/// length checked against the browser's node cap before it is copied.
+pub(crate) fn flat_mesh_args(
+    nodes: &JsValue,
+    triangles: &JsValue,
+    strain_nodes: &JsValue,
+    n_modes: usize,
+) -> Result<(Vec<f64>, Vec<u32>, Vec<f64>), JsError> {
+    let (max_nodes, max_tris) = flat_mesh_caps();
+    let nodes = f64_array_arg(nodes, "nodes", 3, 3 * max_nodes)?;
+    let triangles = u32_array_arg(triangles, "triangles", 3, 3 * max_tris)?;
+    let strain_nodes = strain_nodes_arg(strain_nodes, n_modes)?;
+    Ok((nodes, triangles, strain_nodes))
+}
+
+/// The most nodes and triangles a flat mesh from JS may have: the FE node cap
+/// ([`crate::fem::MAX_NODES`]) and twice as many triangles.
+pub(crate) fn flat_mesh_caps() -> (usize, usize) {
+    (crate::fem::MAX_NODES, 2 * crate::fem::MAX_NODES)
+}
+
+/// `strain_nodes` (3 values per node per mode) with its length checked against the node cap.
+pub(crate) fn strain_nodes_arg(v: &JsValue, n_modes: usize) -> Result<Vec<f64>, JsError> {
+    let (max_nodes, _) = flat_mesh_caps();
+    f64_array_arg(v, "strain_nodes", 3, 3 * max_nodes * n_modes)
+}
+
 /// The nodal strain accessor over the flat `strain_nodes[(k·n_nodes + i)·3 + c]`.
 fn flat_strain(s: &[f64], n_nodes: usize) -> impl Fn(usize, usize) -> [f64; 3] + '_ {
     move |k, i| {
@@ -164,28 +202,26 @@ fn flat_strain(s: &[f64], n_nodes: usize) -> impl Fn(usize, usize) -> [f64; 3] +
 /// a point outside the meshed planform, and naming the array for inconsistent arrays.
 #[wasm_bindgen(js_name = modalStrainAt, unchecked_return_type = "ModalStrainValues[]")]
 pub fn modal_strain_at(
-    nodes: &[f64],
-    triangles: &[u32],
-    strain_nodes: &[f64],
-    n_modes: f64,
-    point: &[f64],
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] nodes: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Uint32Array | number[]")] triangles: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] strain_nodes: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] n_modes: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "[number, number]")] point: JsValue,
 ) -> Result<JsValue, JsError> {
     use super::helpers::{check_mode_count, check_strain_nodes, mesh_from_flat};
-    let n_modes = check_mode_count("n_modes", n_modes).map_err(err)?;
-    let nn = check_strain_nodes(strain_nodes, n_modes).map_err(err)?;
-    let (p, t) = mesh_from_flat(nodes, triangles, nn).map_err(err)?;
-    if point.len() != 2 {
-        return Err(err(crate::WingbeatError::invalid(
-            "point",
-            format!("{} numbers", point.len()),
-            "[x_mm, y_mm]",
-        )));
-    }
+    let max = crate::model::MAX_MODES;
+    let n_modes = int_arg(&n_modes, "n_modes", 1, max)?;
+    check_mode_count("n_modes", n_modes as f64).map_err(err)?;
+    let (nodes, triangles, strain_nodes) =
+        flat_mesh_args(&nodes, &triangles, &strain_nodes, n_modes)?;
+    let point = f64_array_arg(&point, "point", 2, 2)?;
+    let nn = check_strain_nodes(&strain_nodes, n_modes).map_err(err)?;
+    let (p, t) = mesh_from_flat(&nodes, &triangles, nn).map_err(err)?;
     let e = crate::analysis::strain::modal_strains_at(
         &p,
         &t,
         n_modes,
-        flat_strain(strain_nodes, nn),
+        flat_strain(&strain_nodes, nn),
         point[0],
         point[1],
     )
@@ -211,47 +247,37 @@ pub fn modal_strain_at(
 /// the core's sample cap before it is copied.
 fn series_list(qs: &JsValue, n_modes: usize) -> Result<Vec<Vec<f64>>, JsError> {
     if !is_array(qs) {
-        return Err(JsError::new(
-            "invalid value for `qs`: not an array (allowed: one Float64Array per mode)",
-        ));
-    }
-    let arr = Array::from(qs);
-    if arr.length() as usize != n_modes {
         return Err(err(crate::WingbeatError::invalid(
             "qs",
-            format!("{} series", arr.length()),
+            kind(qs),
+            "an array with one Float64Array (or array of numbers) per mode",
+        )));
+    }
+    let n = js_sys::Reflect::get(qs, &JsValue::from_str("length"))
+        .ok()
+        .and_then(|l| l.as_f64())
+        .unwrap_or(f64::NAN);
+    if n != n_modes as f64 {
+        return Err(err(crate::WingbeatError::invalid(
+            "qs",
+            format!("{n} series"),
             format!("one series per mode ({n_modes})"),
         )));
     }
     let cap = crate::config::MAX_SAMPLES;
-    let mut out = Vec::with_capacity(n_modes);
-    for (k, v) in arr.iter().enumerate() {
-        let f = if v.is_instance_of::<js_sys::Float64Array>() {
-            v.unchecked_into::<js_sys::Float64Array>()
-        } else if is_array(&v) {
-            if Array::from(&v).length() as usize > cap {
-                return Err(err(crate::WingbeatError::invalid(
-                    format!("qs[{k}]"),
-                    format!("{} samples", Array::from(&v).length()),
-                    format!("1 to {cap} samples"),
-                )));
-            }
-            js_sys::Float64Array::new(&v)
-        } else {
-            return Err(JsError::new(&format!(
-                "invalid value for `qs[{k}]`: not a Float64Array or an array of numbers"
-            )));
-        };
-        if f.length() as usize > cap {
-            return Err(err(crate::WingbeatError::invalid(
-                format!("qs[{k}]"),
-                format!("{} samples", f.length()),
-                format!("1 to {cap} samples"),
-            )));
-        }
-        out.push(f.to_vec());
-    }
-    Ok(out)
+    (0..n_modes)
+        .map(|k| {
+            let field = format!("qs[{k}]");
+            let v = js_sys::Reflect::get_u32(qs, k as u32).map_err(|_| {
+                err(crate::WingbeatError::invalid(
+                    &field,
+                    "unreadable",
+                    "a Float64Array",
+                ))
+            })?;
+            f64_array_arg(&v, &field, 1, cap)
+        })
+        .collect()
 }
 
 /// A whole-wing strain map: per node, the RMS or peak over a run of a strain component of
@@ -263,15 +289,17 @@ fn series_list(qs: &JsValue, n_modes: usize) -> Result<Vec<Vec<f64>>, JsError> {
 /// every m-th sample). Returns a `Float64Array` of one value per node (strain, dimensionless).
 #[wasm_bindgen(js_name = strainField)]
 pub fn strain_field(
-    strain_nodes: &[f64],
-    n_modes: f64,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] strain_nodes: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] n_modes: JsValue,
     #[wasm_bindgen(unchecked_param_type = "(Float64Array | number[])[]")] qs: JsValue,
     #[wasm_bindgen(unchecked_param_type = "StrainFieldOptions")] opts: JsValue,
 ) -> Result<js_sys::Float64Array, JsError> {
     use super::helpers::{check_mode_count, check_strain_nodes};
     use super::marshal::required_js;
-    let n_modes = check_mode_count("n_modes", n_modes).map_err(err)?;
-    let nn = check_strain_nodes(strain_nodes, n_modes).map_err(err)?;
+    let n_modes = int_arg(&n_modes, "n_modes", 1, crate::model::MAX_MODES)?;
+    check_mode_count("n_modes", n_modes as f64).map_err(err)?;
+    let strain_nodes = strain_nodes_arg(&strain_nodes, n_modes)?;
+    let nn = check_strain_nodes(&strain_nodes, n_modes).map_err(err)?;
     let opts: crate::analysis::strain::StrainFieldOptions = required_js(
         opts,
         "strainField",
@@ -282,7 +310,7 @@ pub fn strain_field(
     let v = crate::analysis::strain::strain_field(
         nn,
         n_modes,
-        flat_strain(strain_nodes, nn),
+        flat_strain(&strain_nodes, nn),
         &refs,
         &opts,
     )
@@ -298,8 +326,16 @@ pub fn strain_field(
 /// `triangles`, `shapes`, `strain_nodes` as flat typed arrays, …) but no `modes`. Throws
 /// naming the document's part for malformed or inconsistent content.
 #[wasm_bindgen(js_name = modesFromJson, unchecked_return_type = "ModesDocument")]
-pub fn modes_from_json(text: &str) -> Result<JsValue, JsError> {
-    let doc = crate::modes_doc::read_modes_document(text, "modes JSON").map_err(err)?;
+pub fn modes_from_json(
+    #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
+) -> Result<JsValue, JsError> {
+    let text = text_arg(
+        &text,
+        "modesFromJson.text",
+        MAX_TEXT_CHARS,
+        "a string: the modes file's JSON text",
+    )?;
+    let doc = crate::modes_doc::read_modes_document(&text, "modes JSON").map_err(err)?;
     let o = Object::new();
     set(&o, "modes", &to_js(&doc.modes)?)?;
     if let Some(fe) = &doc.fe {

@@ -204,7 +204,7 @@ pub fn analyze_matches_core() {
         segment_len: 1024,
         ..WelchOptions::default()
     };
-    let js = wasm::analyze(to_js(&cfg), to_js(&opts), Some(1.0)).unwrap();
+    let js = wasm::analyze(to_js(&cfg), to_js(&opts), JsValue::from(1.0)).unwrap();
     assert!(get(&js, "spectra.0").is_null(), "mode 1 not asked for");
     assert!(get(&js, "forces.0").is_null());
     assert!(get(&js, "envelope.0").is_null());
@@ -275,7 +275,7 @@ pub fn analyze_matches_core() {
         &fs[0].stiffness_coefficient,
         TOL,
     );
-    let js_s = wasm::spectra(to_js(&cfg), to_js(&opts), None).unwrap();
+    let js_s = wasm::spectra(to_js(&cfg), to_js(&opts), JsValue::UNDEFINED).unwrap();
     let want = welch(&fs[0].coriolis, fsr, &opts, Some(25.0)).unwrap();
     close_all(
         "spectra.0.coriolis",
@@ -293,7 +293,7 @@ pub fn coriolis_force_peaks_at_twice_the_flap_frequency() {
         segment_len: 4000,
         ..WelchOptions::default()
     };
-    let js = wasm::spectra(to_js(&cfg), to_js(&opts), Some(0.0)).unwrap();
+    let js = wasm::spectra(to_js(&cfg), to_js(&opts), JsValue::from(0.0)).unwrap();
     let f = f64s(&js, "0.coriolis.freq_hz");
     let p = f64s(&js, "0.coriolis.psd");
     // Largest non-DC bin (the Coriolis force also has a large mean: bin 0).
@@ -302,7 +302,7 @@ pub fn coriolis_force_peaks_at_twice_the_flap_frequency() {
     assert!(p[0] > 0.1 * p[i], "DC part visible with detrend none");
     // γ0 = 0: no Coriolis force at all.
     let c0 = wingbeat::analysis::sweep::apply(&cfg, SweepParam::Gamma0, 0.0).unwrap();
-    let js0 = wasm::spectra(to_js(&c0), to_js(&opts), Some(0.0)).unwrap();
+    let js0 = wasm::spectra(to_js(&c0), to_js(&opts), JsValue::from(0.0)).unwrap();
     assert!(f64s(&js0, "0.coriolis.psd").iter().all(|v| *v == 0.0));
 }
 
@@ -312,7 +312,13 @@ pub fn psd_matches_core() {
         segment_len: 512,
         ..WelchOptions::default()
     };
-    let js = wasm::psd(fa(&x), 1000.0, to_js(&opts), Some(8.0)).unwrap();
+    let js = wasm::psd(
+        fa(&x),
+        JsValue::from(1000.0),
+        to_js(&opts),
+        JsValue::from(8.0),
+    )
+    .unwrap();
     let want = welch(&x, 1000.0, &opts, Some(8.0)).unwrap();
     close_all("psd", &f64s(&js, "psd"), &want.psd, TOL);
     close(
@@ -337,7 +343,7 @@ pub fn sweep_matches_core_and_reports_progress() {
         Closure::wrap(Box::new(move |i: f64, n: f64| c2.borrow_mut().push((i, n)))
             as Box<dyn FnMut(f64, f64)>);
     let f: js_sys::Function = cb.as_ref().clone().unchecked_into();
-    let js = wasm::sweep(to_js(&cfg), to_js(&opts), Some(f)).unwrap();
+    let js = wasm::sweep(to_js(&cfg), to_js(&opts), f.into()).unwrap();
     assert_eq!(
         *calls.borrow(),
         vec![(1.0, 4.0), (2.0, 4.0), (3.0, 4.0), (4.0, 4.0)]
@@ -374,7 +380,7 @@ pub fn sweep_matches_core_and_reports_progress() {
     assert_eq!(f64s(&js, "modes.0.coriolis")[0], 0.0);
     // A throwing progress callback is ignored.
     let thrower = js_sys::Function::new_with_args("i, n", "throw new Error('boom')");
-    assert!(wasm::sweep(to_js(&cfg), to_js(&opts), Some(thrower)).is_ok());
+    assert!(wasm::sweep(to_js(&cfg), to_js(&opts), thrower.into()).is_ok());
 }
 
 pub fn ic_map_matches_core() {
@@ -407,9 +413,9 @@ pub fn defaults_limits_reproduce() {
     assert_eq!(num(&l, "web_max_sample_values"), 2_000_000.0);
     assert!(wasm::validate_config(JsValue::UNDEFINED).is_ok());
     let x = [1.0, 5.0, 2.0, 0.0, 3.0, 3.0];
-    let d = wasm::decimate_min_max(fa(&x), 3.0).unwrap();
+    let d = wasm::decimate_min_max(fa(&x), JsValue::from(3.0)).unwrap();
     assert_eq!(f64s(&d, "value"), x.to_vec());
-    let d = wasm::decimate_min_max(fa(&x), 1.0).unwrap();
+    let d = wasm::decimate_min_max(fa(&x), JsValue::from(1.0)).unwrap();
     assert_eq!(f64s(&d, "value"), vec![5.0, 0.0]);
     assert_eq!(f64s(&d, "index"), vec![1.0, 3.0]);
 }
@@ -477,43 +483,55 @@ pub fn bad_input_names_the_field() {
     let m = message(wasm::sweep(
         cfg.clone(),
         bad(r#"{"param": "gamma1", "from": 0, "to": 1, "points": 3}"#),
-        None,
+        JsValue::UNDEFINED,
     ));
     assert!(m.contains("sweep.param"), "{m}");
     let m = message(wasm::sweep(
         cfg.clone(),
         bad(r#"{"param": "gamma0", "from": 0, "to": 1, "points": 1}"#),
-        None,
+        JsValue::UNDEFINED,
     ));
     assert!(m.contains("sweep.points"), "{m}");
-    let m = message(wasm::sweep(cfg.clone(), JsValue::UNDEFINED, None));
+    let m = message(wasm::sweep(
+        cfg.clone(),
+        JsValue::UNDEFINED,
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("sweep"), "{m}");
     let m = message(wasm::ic_map(cfg.clone(), bad(r#"{"mode": 7}"#)));
     assert!(m.contains("ic_map.mode"), "{m}");
     let m = message(wasm::ic_map(cfg.clone(), bad(r#"{"n_q": 1.5}"#)));
     assert!(m.contains("ic_map.n_q"), "{m}");
-    let m = message(wasm::analyze(cfg.clone(), JsValue::UNDEFINED, Some(9.0)));
+    let m = message(wasm::analyze(
+        cfg.clone(),
+        JsValue::UNDEFINED,
+        JsValue::from(9.0),
+    ));
     assert!(m.contains("mode"), "{m}");
     let m = message(wasm::analyze(
         cfg.clone(),
         bad(r#"{"segment_len": 3}"#),
-        None,
+        JsValue::UNDEFINED,
     ));
     assert!(m.contains("psd.segment_len"), "{m}");
-    let m = message(wasm::analyze(cfg, bad(r#"{"detrend": "cubic"}"#), None));
+    let m = message(wasm::analyze(
+        cfg,
+        bad(r#"{"detrend": "cubic"}"#),
+        JsValue::UNDEFINED,
+    ));
     assert!(m.contains("psd.detrend"), "{m}");
     let m = message(wasm::psd(
         fa(&[1.0, 2.0, f64::NAN, 3.0]),
-        100.0,
+        JsValue::from(100.0),
         JsValue::UNDEFINED,
-        None,
+        JsValue::UNDEFINED,
     ));
     assert!(m.contains("psd.series[2]"), "{m}");
     let m = message(wasm::psd(
         fa(&[1.0; 64]),
-        f64::NAN,
+        JsValue::from(f64::NAN),
         JsValue::UNDEFINED,
-        None,
+        JsValue::UNDEFINED,
     ));
     assert!(m.contains("psd.sample_rate_hz"), "{m}");
     let m = message(wasm::envelope(fa(&[])));
@@ -532,7 +550,7 @@ pub fn fe_modes_match_core() {
     let core = compute_modes(&input).unwrap();
     let js = wasm::fe_modes(
         js_sys::JSON::parse(r#"{"n_modes": 3, "mesh_size_mm": 2.5}"#).unwrap(),
-        Some(0.01),
+        JsValue::from(0.01),
         JsValue::UNDEFINED,
     )
     .unwrap();
@@ -611,12 +629,16 @@ pub fn fe_modes_match_core() {
         ),
         (r#"{"bogus": 1}"#, "bogus"),
     ] {
-        let m = message(wasm::fe_modes(bad(json), None, JsValue::UNDEFINED));
+        let m = message(wasm::fe_modes(
+            bad(json),
+            JsValue::UNDEFINED,
+            JsValue::UNDEFINED,
+        ));
         assert!(m.contains(field), "{json}: message `{m}` lacks {field}");
     }
     let m = message(wasm::fe_modes(
         JsValue::UNDEFINED,
-        Some(f64::NAN),
+        JsValue::from(f64::NAN),
         JsValue::UNDEFINED,
     ));
     assert!(m.contains("zeta"), "{m}");
@@ -660,7 +682,7 @@ pub fn stiffness_spectra_match_reference() {
         segment_len: 1024,
         ..WelchOptions::default()
     };
-    let js = wasm::spectra(to_js(&cfg), to_js(&opts), None).unwrap();
+    let js = wasm::spectra(to_js(&cfg), to_js(&opts), JsValue::UNDEFINED).unwrap();
     for (mode, bin, want) in STIFFNESS_FORCE_REFERENCE {
         let got = f64s(&js, &format!("{mode}.stiffness_force.psd"))[bin];
         close(
@@ -698,7 +720,7 @@ pub fn ts_declarations_match_results() {
         segment_len: 512,
         ..WelchOptions::default()
     };
-    let a = wasm::analyze(to_js(&cfg), to_js(&opts), None).unwrap();
+    let a = wasm::analyze(to_js(&cfg), to_js(&opts), JsValue::UNDEFINED).unwrap();
     check("Analysis", &a);
     check("AngleSeries", &get(&a, "angles"));
     check("ModeForces", &get(&a, "forces.0"));
@@ -715,7 +737,7 @@ pub fn ts_declarations_match_results() {
             to: 0.3,
             points: 2,
         }),
-        None,
+        JsValue::UNDEFINED,
     )
     .unwrap();
     check("SweepResult", &sweep);
@@ -733,7 +755,7 @@ pub fn ts_declarations_match_results() {
     check("Limits", &wasm::limits().unwrap());
     let fe = wasm::fe_modes(
         js_sys::JSON::parse(r#"{"n_modes": 2, "mesh_size_mm": 3}"#).unwrap(),
-        None,
+        JsValue::UNDEFINED,
         JsValue::UNDEFINED,
     )
     .unwrap();
@@ -746,7 +768,7 @@ pub fn ts_declarations_match_results() {
             r#"{"from_hz": 20, "to_hz": 30, "points": 3, "alpha0_values": [0.5, 0.8]}"#,
         )
         .unwrap(),
-        None,
+        JsValue::UNDEFINED,
     )
     .unwrap();
     check("ResonanceMapResult", &rm);
