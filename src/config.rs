@@ -78,6 +78,7 @@ impl SimConfig {
     /// Validates every field and the resource caps.
     pub fn validate(&self) -> Result<()> {
         self.model().validate()?;
+        crate::modes_doc::check_strain_names(&self.modes, "modes")?;
         check_positive("duration_s", self.duration_s, MAX_DURATION_S, "s")?;
         check_positive(
             "sample_rate_hz",

@@ -27,9 +27,11 @@ pub struct Harmonic {
     pub phase: f64,
 }
 
-/// How one angle is specified.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+/// How one angle is specified. Read from `{"kind": "fourier" | "sampled", …}` by a
+/// hand-written `Deserialize` (see there) so that an error inside an angle names the full
+/// path (`kinematics.alpha.max_harmonic`), not only the angle.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
 pub enum Angle {
     /// Mean plus harmonics (the paper's case is one sine: mean 0, n = 1, phase 0).
     Fourier {
@@ -52,6 +54,93 @@ pub enum Angle {
         #[serde(default)]
         max_harmonic: Option<u32>,
     },
+}
+
+/// The fields of [`Angle::Fourier`] as read (the `kind` key removed).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FourierFields {
+    #[serde(default)]
+    mean: f64,
+    #[serde(default)]
+    harmonics: Vec<Harmonic>,
+}
+
+/// The fields of [`Angle::Sampled`] as read (the `kind` key removed).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SampledFields {
+    values: Vec<f64>,
+    #[serde(default)]
+    max_harmonic: Option<u32>,
+}
+
+/// An angle is an internally tagged object. serde's derive for that buffers the object and
+/// loses the path inside it (a type error in `max_harmonic` said ``at `kinematics.alpha`:
+/// … expected u32``); here the fields are read with their own path, and the error message
+/// starts with ``at `max_harmonic`: ``, which [`crate::error::parse_json`] joins to the outer
+/// path. An array is refused (serde would read the fields by position).
+impl<'de> Deserialize<'de> for Angle {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        use serde::de::Error;
+        let v = serde_json::Value::deserialize(d)?;
+        let serde_json::Value::Object(mut obj) = v else {
+            return Err(D::Error::custom(format!(
+                "expected an angle object {{\"kind\": \"fourier\" | \"sampled\", …}}, found {}",
+                json_kind(&v)
+            )));
+        };
+        let kind = match obj.remove("kind") {
+            None => return Err(D::Error::missing_field("kind")),
+            Some(serde_json::Value::String(k)) => k,
+            Some(other) => {
+                return Err(D::Error::custom(format!(
+                    "at `kind`: expected \"fourier\" or \"sampled\", found {}",
+                    json_kind(&other)
+                )))
+            }
+        };
+        let fields = serde_json::Value::Object(obj);
+        let inner = |e: serde_path_to_error::Error<serde_json::Error>| {
+            let path = e.path().to_string();
+            if path == "." || path.is_empty() {
+                D::Error::custom(e.into_inner())
+            } else {
+                D::Error::custom(format!("at `{path}`: {}", e.into_inner()))
+            }
+        };
+        match kind.as_str() {
+            "fourier" => {
+                let f: FourierFields = serde_path_to_error::deserialize(fields).map_err(inner)?;
+                Ok(Angle::Fourier {
+                    mean: f.mean,
+                    harmonics: f.harmonics,
+                })
+            }
+            "sampled" => {
+                let f: SampledFields = serde_path_to_error::deserialize(fields).map_err(inner)?;
+                Ok(Angle::Sampled {
+                    values: f.values,
+                    max_harmonic: f.max_harmonic,
+                })
+            }
+            other => Err(D::Error::custom(format!(
+                "at `kind`: unknown variant `{other}`, expected `fourier` or `sampled`"
+            ))),
+        }
+    }
+}
+
+/// "an array", "a string", … for messages.
+fn json_kind(v: &serde_json::Value) -> &'static str {
+    match v {
+        serde_json::Value::Null => "null",
+        serde_json::Value::Bool(_) => "a boolean",
+        serde_json::Value::Number(_) => "a number",
+        serde_json::Value::String(_) => "a string",
+        serde_json::Value::Array(_) => "an array (arrays are not read by position)",
+        serde_json::Value::Object(_) => "an object",
+    }
 }
 
 /// Largest harmonic number accepted.
@@ -86,6 +175,47 @@ impl Angle {
                 phase: 0.0,
             }],
         }
+    }
+
+    /// The warning for a sampled table low-passed by the default cap: without `max_harmonic`
+    /// a table of N samples keeps min(N/2, [`DEFAULT_SAMPLED_MAX_HARMONIC`]) harmonics, so a
+    /// table of more than 2 × 24 samples does not pass through its samples. Says by how much
+    /// (the largest deviation at the sample times) and how to keep them all. `None` when the
+    /// cap changes nothing.
+    pub fn default_cap_warning(&self, field: &str, unit: &str) -> Option<String> {
+        let Angle::Sampled {
+            values,
+            max_harmonic: None,
+        } = self
+        else {
+            return None;
+        };
+        let n = values.len();
+        let all = n / 2;
+        if all <= DEFAULT_SAMPLED_MAX_HARMONIC as usize {
+            return None;
+        }
+        let s = self.series();
+        let mut dev: f64 = 0.0;
+        for (j, v) in values.iter().enumerate() {
+            let th = 2.0 * PI * j as f64 / n as f64;
+            let y = s.mean
+                + s.terms
+                    .iter()
+                    .map(|t| {
+                        let (sn, cs) = (t.n * th).sin_cos();
+                        t.s * sn + t.c * cs
+                    })
+                    .sum::<f64>();
+            dev = dev.max((y - v).abs());
+        }
+        Some(format!(
+            "{field}: the {n}-sample table resolves {all} harmonics, but without `max_harmonic` only \
+             the first {DEFAULT_SAMPLED_MAX_HARMONIC} are kept (kinematics::DEFAULT_SAMPLED_MAX_HARMONIC, \
+             which bounds the run's cost), so the angle does not pass through every sample \
+             (largest deviation {} {unit}); set `{field}.max_harmonic` to {all} to keep them all",
+            crate::error::num(dev)
+        ))
     }
 
     /// A constant angle.
@@ -292,7 +422,11 @@ pub struct Kinematics {
     pub gamma: Angle,
     /// Body angular velocity ω_b(t) in body axes (the fixed I, J, K frame of §2.1), rad/s.
     /// Omitted (and not written) when zero, which is the paper's case.
-    #[serde(default, skip_serializing_if = "BodyRate::is_zero")]
+    #[serde(
+        default,
+        skip_serializing_if = "BodyRate::is_zero",
+        deserialize_with = "crate::error::object_only"
+    )]
     pub body_rate: BodyRate,
 }
 
@@ -520,6 +654,19 @@ impl Kinematics {
             w.push(format!(
                 "yaw γ reaches up to {peak:.3} rad, beyond the small-angle range (≤ {SMALL_ANGLE_LIMIT} rad) assumed by Eq. 13; results are extrapolations"
             ));
+        }
+        let angles = [
+            ("kinematics.alpha", &self.alpha, "rad"),
+            ("kinematics.beta", &self.beta, "rad"),
+            ("kinematics.gamma", &self.gamma, "rad"),
+            ("kinematics.body_rate.x", &self.body_rate.x, "rad/s"),
+            ("kinematics.body_rate.y", &self.body_rate.y, "rad/s"),
+            ("kinematics.body_rate.z", &self.body_rate.z, "rad/s"),
+        ];
+        for (field, a, unit) in angles {
+            if let Some(msg) = a.default_cap_warning(field, unit) {
+                w.push(msg);
+            }
         }
         w
     }

@@ -530,11 +530,18 @@ pub fn kinematics_from_csv(text: &str, opts: &CsvKinematicsOptions) -> Result<Ki
             (TableMethod::LeastSquares, gn, h, values)
         }
     };
+    // On the grid without a requested cap the angle keeps `max_harmonic: None`, so the
+    // default cap applies as for a config's table and the run's output warns about it
+    // (`Kinematics::warnings`).
+    let stored_h = match (method, opts.max_harmonic) {
+        (TableMethod::Grid, None) => None,
+        _ => Some(max_h),
+    };
     let angle = |a: usize, values: &[f64]| -> Angle {
         if ang[a].is_some() {
             Angle::Sampled {
                 values: values.to_vec(),
-                max_harmonic: Some(max_h),
+                max_harmonic: stored_h,
             }
         } else {
             Angle::constant(0.0)

@@ -88,8 +88,11 @@ fn modes_of(v: &Value, what: &str) -> Result<Vec<Mode>> {
             ),
         ));
     }
+    check_companions(obj, what)?;
     if let Some(m) = v.get("modes") {
-        return crate::error::from_json_value(m.clone(), &format!("{what}: modes"));
+        let modes: Vec<Mode> = crate::error::from_json_value_at(m.clone(), what, "modes")?;
+        check_strain_names(&modes, "modes")?;
+        return Ok(modes);
     }
     let freqs: Vec<f64> = v
         .get("freq_hz")
@@ -127,10 +130,113 @@ fn modes_of(v: &Value, what: &str) -> Result<Vec<Mode>> {
         .collect())
 }
 
+/// The keys of a `wingbeat modes` document's `units` object.
+pub const UNIT_KEYS: &[&str] = &[
+    "freq_hz",
+    "a",
+    "b",
+    "mass_kg",
+    "nodes",
+    "mesh_size_mm",
+    "shapes",
+    "strain_nodes",
+];
+
+/// Checks the companions of the modes in a document without `nodes` (a `wingbeat modes`
+/// document trimmed of its mesh): each of its other known keys must be what a `wingbeat modes`
+/// document has there (the type of that field of [`FemModes`]; `material` with exactly the
+/// material's keys), and `units` only the unit strings of [`UNIT_KEYS`]. Unknown keys inside
+/// them used to be dropped silently. Errors name the path (`units.speed`, `material.e_pa`).
+/// With `nodes` the whole FE result is read and checked instead ([`read_modes_document`]).
+fn check_companions(obj: &serde_json::Map<String, Value>, what: &str) -> Result<()> {
+    use crate::error::from_json_value_at as typed;
+    let has_nodes = obj.contains_key("nodes");
+    for (k, v) in obj {
+        let v = v.clone();
+        match k.as_str() {
+            "modes" | "nodes" => {}
+            "units" => {
+                let Some(u) = v.as_object() else {
+                    return Err(parse_err(
+                        what,
+                        "at `units`: expected an object of unit strings",
+                    ));
+                };
+                for (uk, uv) in u {
+                    if !UNIT_KEYS.contains(&uk.as_str()) {
+                        return Err(parse_err(
+                            what,
+                            format!(
+                                "at `units.{uk}`: unknown unit key (allowed: {})",
+                                UNIT_KEYS.join(", ")
+                            ),
+                        ));
+                    }
+                    if !uv.is_string() {
+                        return Err(parse_err(
+                            what,
+                            format!("at `units.{uk}`: expected a unit string"),
+                        ));
+                    }
+                }
+            }
+            _ if has_nodes => {}
+            "planform_note" => typed::<String>(v, what, k).map(drop)?,
+            "freq_hz" | "residuals" => typed::<Vec<f64>>(v, what, k).map(drop)?,
+            "a" | "b" => typed::<Vec<[f64; 2]>>(v, what, k).map(drop)?,
+            "mass_kg" | "mass_orthonormality_error" | "mesh_size_mm" => {
+                typed::<f64>(v, what, k).map(drop)?;
+            }
+            "centre_of_mass_m" => typed::<[f64; 3]>(v, what, k).map(drop)?,
+            "triangles" => typed::<Vec<[usize; 3]>>(v, what, k).map(drop)?,
+            "clamped_nodes" => typed::<Vec<usize>>(v, what, k).map(drop)?,
+            "shapes" => typed::<Vec<Vec<f64>>>(v, what, k).map(drop)?,
+            "strain_nodes" => typed::<Vec<Vec<[f64; 3]>>>(v, what, k).map(drop)?,
+            "kinds" => typed::<Vec<String>>(v, what, k).map(drop)?,
+            "n_dofs" => typed::<usize>(v, what, k).map(drop)?,
+            "material" => typed::<crate::fem::ShellMaterial>(v, what, k).map(drop)?,
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Refuses two strain points with the same name in one mode (the second was silently
+/// dropped), naming both; `what` is the path of the modes list.
+pub fn check_strain_names(modes: &[Mode], what: &str) -> Result<()> {
+    for (i, m) in modes.iter().enumerate() {
+        let mut seen: std::collections::HashMap<&str, usize> = std::collections::HashMap::new();
+        for (j, s) in m.strains.iter().enumerate() {
+            if let Some(k) = seen.insert(s.point.as_str(), j) {
+                return Err(WingbeatError::invalid(
+                    format!("{what}[{i}].strains[{j}].point"),
+                    format!("\"{}\", the name of {what}[{i}].strains[{k}] too", s.point),
+                    "a strain point name used once per mode",
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The modes of a modes document (what `wingbeat simulate --modes FILE` uses); `what` names
-/// the document in errors. The modes are checked later, with the config they go into.
+/// the document in errors. The modes are checked later, with the config they go into; the
+/// FE result of a complete `wingbeat modes` document is read and checked as the lab reads it
+/// ([`read_modes_document`]), so nothing in the file is ignored.
 pub fn modes_from_json(text: &str, what: &str) -> Result<Vec<Mode>> {
-    modes_of(&parse_value(text, what)?, what)
+    let v = parse_value(text, what)?;
+    let modes = modes_of(&v, what)?;
+    if v.get("nodes").is_some() {
+        fe_of(v, what)?;
+    }
+    Ok(modes)
+}
+
+/// The FE result of a complete `wingbeat modes` document, checked.
+fn fe_of(v: Value, what: &str) -> Result<FemModes> {
+    let fe: FemModes = crate::error::from_json_value(v, &format!("{what}: fe"))?;
+    check_fem_modes(&fe, what)?;
+    Ok(fe)
 }
 
 /// Checks that an FE result's arrays fit together (every per-mode array has one entry per
@@ -216,10 +322,7 @@ pub fn read_modes_document(text: &str, what: &str) -> Result<ModesDocument> {
         m.validate(i)?;
     }
     let fe = if v.get("nodes").is_some() {
-        let fe: FemModes = serde_json::from_value(v)
-            .map_err(|e| parse_err(&format!("{what}: fe"), e.to_string()))?;
-        check_fem_modes(&fe, what)?;
-        Some(fe)
+        Some(fe_of(v, what)?)
     } else {
         None
     };

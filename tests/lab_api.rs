@@ -941,7 +941,7 @@ fn modes_document_errors_name_the_part() {
             "1 frequencies but 0 a-vectors",
         ),
         (r#"{"modes": []}"#, "1 to 64 modes"),
-        (r#"{"modes": [{"freq_hz": 5}]}"#, "wing.json: modes"),
+        (r#"{"modes": [{"freq_hz": 5}]}"#, "wing.json: at `modes[0]`"),
     ] {
         let m = message(read_modes_document(text, "wing.json"));
         assert!(m.contains(want), "{text}: `{m}` lacks {want}");

@@ -56,20 +56,33 @@ pub const MIN_SAMPLE_RATE_HZ: f64 = 1e-6;
 /// Largest segment accepted.
 pub const MAX_SEGMENT: usize = 1 << 22;
 
+/// Most spectrum bins one `wingbeat psd` run writes (six spectra per mode, each
+/// min(segment, samples)/2 + 1 bins, every bin a frequency and a density): 6e6 bins keep the
+/// JSON text near 250 MB, so that the run, its series and the text stay under the documented
+/// 1.5 GB (docs/limits.md, "Memory"). One mode may still use a segment of 2 000 000 samples
+/// (the whole run at the sample cap); four modes up to 500 000.
+pub const MAX_RUN_SPECTRUM_BINS: f64 = 6.0e6;
+
 impl WelchOptions {
     /// Validates the options.
     pub fn validate(&self) -> Result<()> {
+        self.validate_named("psd.segment_len", "psd.overlap", "psd.max_peaks")
+    }
+
+    /// [`WelchOptions::validate`] with the names the caller uses for the segment length, the
+    /// overlap and the peak count (the CLI's flags).
+    pub fn validate_named(&self, segment: &str, overlap: &str, peaks: &str) -> Result<()> {
         if self.segment_len < 8 || self.segment_len > MAX_SEGMENT {
             return Err(WingbeatError::invalid(
-                "psd.segment_len",
+                segment,
                 self.segment_len,
                 format!("an integer in [8, {MAX_SEGMENT}] samples"),
             ));
         }
-        crate::error::check_range("psd.overlap", self.overlap, 0.0, 0.95, "(fraction)")?;
+        crate::error::check_range(overlap, self.overlap, 0.0, 0.95, "(fraction)")?;
         if self.max_peaks > 1000 {
             return Err(WingbeatError::invalid(
-                "psd.max_peaks",
+                peaks,
                 self.max_peaks,
                 "an integer in [0, 1000]",
             ));

@@ -45,6 +45,11 @@ pub const DEFAULT_RHO: f64 = 0.01;
 /// strain is a true (dimensionless) strain; for the paper table's modes it is in the table's
 /// units, which are not SI (docs/model.md), so σ has no absolute meaning there.
 pub const DEFAULT_NOISE: f64 = 1e-7;
+/// Smallest sensor noise σ accepted: 1e-12 strain, three orders of magnitude below the best
+/// strain gauges. The detectability scales as 1/σ², and σ² must stay a normal f64: the former
+/// floor, any σ > 0, let σ = 1e-300 through, whose square is 0, and the run then failed as
+/// "too large to combine in f64".
+pub const MIN_NOISE: f64 = 1e-12;
 /// Default samples per sensor in the stacked detection vector.
 pub const DEFAULT_SAMPLES_PER_SENSOR: usize = 256;
 /// Most samples per sensor.
@@ -74,7 +79,7 @@ pub struct SensingOptions {
     pub k_max: usize,
     /// Relative stroke variability ρ, [0, 1].
     pub rho: f64,
-    /// Sensor noise σ, rms strain per decimated sample, (0, 1].
+    /// Sensor noise σ, rms strain per decimated sample, [[`MIN_NOISE`], 1].
     pub noise: f64,
     /// Samples per sensor M in the detection vector, 8 ..= [`MAX_SAMPLES_PER_SENSOR`] (the
     /// run is decimated to every m-th sample, m = ⌈N / M⌉).
@@ -114,13 +119,7 @@ impl SensingOptions {
             ));
         }
         crate::error::check_range(names[1], self.rho, 0.0, 1.0, "(relative)")?;
-        if !(self.noise.is_finite() && self.noise > 0.0 && self.noise <= 1.0) {
-            return Err(WingbeatError::invalid(
-                names[2],
-                self.noise,
-                "a number in (0, 1] (rms strain)",
-            ));
-        }
+        crate::error::check_range(names[2], self.noise, MIN_NOISE, 1.0, "(rms strain)")?;
         if self.samples_per_sensor < 8 || self.samples_per_sensor > MAX_SAMPLES_PER_SENSOR {
             return Err(WingbeatError::invalid(
                 names[3],

@@ -155,10 +155,13 @@ struct SimInput {
     /// samples over exactly one flap period, v_j at t_j = j T / N (do not repeat the first
     /// sample at the end). The sampled angle is the trigonometric polynomial
     /// mean(v) + Σ_(h=1..K) [a_h cos(h ω_d t) + b_h sin(h ω_d t)] with a_h, b_h = (2/N) Σ_j v_j
-    /// cos(2π h j/N), sin(2π h j/N), and K = ⌊N/2⌋ (or H when smaller). For even N the
-    /// Nyquist term h = N/2 gets weight 1/N instead of 2/N (it is shared by ±N/2), so with
-    /// K = ⌊N/2⌋ the polynomial passes through every sample; a smaller H low-passes noisy
-    /// data.
+    /// cos(2π h j/N), sin(2π h j/N), and K = min(⌊N/2⌋, H). For even N the Nyquist term
+    /// h = N/2 gets weight 1/N instead of 2/N (it is shared by ±N/2), so with K = ⌊N/2⌋ the
+    /// polynomial passes through every sample; a smaller H low-passes noisy data. Without
+    /// `max_harmonic`, H = 24 (kinematics::DEFAULT_SAMPLED_MAX_HARMONIC, which bounds the
+    /// run's cost): a table of more than 49 samples is then low-passed and does NOT pass
+    /// through every sample; the output says so in `warnings` (and on stderr) with the
+    /// largest deviation. Give `"max_harmonic": ⌊N/2⌋` to keep every harmonic.
     #[arg(long, value_name = "FILE")]
     config: Option<std::path::PathBuf>,
     /// Measured kinematics: a CSV table with a header naming `t` (s) and any of `alpha`,
@@ -169,7 +172,9 @@ struct SimInput {
     /// point by point over the periods into sampled angles (the same as a config with
     /// `{"kind": "sampled", "values": [...]}`); otherwise a least-squares Fourier series
     /// (--kinematics-max-harmonic harmonics, default up to 32) is fitted and sampled. Replaces
-    /// the config's kinematics; the lab's "load kinematics" does exactly the same.
+    /// the config's kinematics; the lab's "load kinematics" does exactly the same. On the grid
+    /// without --kinematics-max-harmonic, at most 24 harmonics are kept as for a config's
+    /// table (see --config), with a warning when that drops any.
     #[arg(long, value_name = "FILE")]
     kinematics_csv: Option<std::path::PathBuf>,
     /// Units of the angle columns of --kinematics-csv: deg or rad (required with it).
@@ -308,22 +313,26 @@ struct ReproduceArgs {
     format: ReportFormat,
 }
 
-/// Parses the command line and runs; returns what to print.
-/// The command line: every option that takes a value accepts a negative number
-/// (`--camber -0.1`), so that the range check, not the parser, answers.
+/// The command line: every option that takes a value takes the next word as its value even
+/// when it starts with `-`, so that negative numbers in any float syntax (`-1e-3`, `-.5`,
+/// `-1E+2`, lists `-1,2`) reach the value parser and the range check, not clap's "unexpected
+/// argument" (clap's own negative-number test only knows `-1`, `-1.5`, `-1e5`). A flag given
+/// where a value belongs (`--duration --format csv`) is then an invalid value of that option.
 fn command() -> clap::Command {
-    fn allow_negative(c: clap::Command) -> clap::Command {
+    fn allow_hyphen_values(c: clap::Command) -> clap::Command {
         c.mut_args(|a| {
             if a.get_action().takes_values() && !a.is_positional() {
-                a.allow_negative_numbers(true)
+                a.allow_hyphen_values(true)
             } else {
                 a
             }
         })
-        .mut_subcommands(allow_negative)
+        .mut_subcommands(allow_hyphen_values)
     }
-    allow_negative(<Cli as clap::CommandFactory>::command())
+    allow_hyphen_values(<Cli as clap::CommandFactory>::command())
 }
+
+/// Parses the command line and runs; returns what to print.
 
 pub fn run() -> Result<String> {
     let parsed = command()
@@ -623,37 +632,112 @@ fn cmd_psd(a: PsdArgs) -> Result<String> {
         },
         max_peaks: a.peaks,
     };
-    opts.validate()?;
+    opts.validate_named("--segment-len", "--overlap", "--peaks")?;
+    // the output's size, before anything is computed
+    check_run_spectra(
+        cfg.modes.len(),
+        cfg.n_samples(),
+        a.segment_len,
+        "--segment-len",
+    )?;
     let fs = cfg.sample_rate_hz;
     let fd = Some(cfg.kinematics.flap_freq_hz);
-    let forces = force_series(&cfg)?;
+    // The run first, keeping only each mode's total response (the other series of the run
+    // are not needed here), then the forces: the peak memory is the larger of the two, not
+    // their sum (issue 20: 4.3 GB with four modes at the sample cap).
     let sim = simulate(&cfg)?;
-    let mut modes = Vec::new();
-    for (m, f) in sim.modes.iter().zip(&forces) {
-        let s = mode_spectra(f, &m.q.total, fs, &opts, fd)?;
-        modes.push(json!({
-            "name": m.name,
-            "freq_hz_natural": m.freq_hz,
-            "effective_freq_hz": m.floquet.effective_freq_hz,
-            "euler": s.euler,
-            "centrifugal": s.centrifugal,
-            "coriolis": s.coriolis,
-            "stiffness_coefficient": welch(&f.stiffness_coefficient, fs, &opts, fd)?,
-            "stiffness_force": s.stiffness_force,
-            "response_total": s.total,
-        }));
+    for w in &sim.warnings {
+        eprintln!("warning: {w}");
     }
-    to_json(&json!({
-        "units": {"freq_hz": "Hz", "psd": "(unit of the series)^2 / Hz, one-sided, Hann window, Welch average"},
-        "sample_rate_hz": fs,
-        "flap_freq_hz": cfg.kinematics.flap_freq_hz,
-        "options": opts,
-        "modes": modes,
-    }))
+    let warnings = sim.warnings;
+    let runs: Vec<(String, f64, f64, Vec<f64>)> = sim
+        .modes
+        .into_iter()
+        .map(|m| (m.name, m.freq_hz, m.floquet.effective_freq_hz, m.q.total))
+        .collect();
+    let forces = force_series(&cfg)?;
+    let mut modes = Vec::with_capacity(runs.len());
+    for ((name, freq_hz_natural, effective_freq_hz, total), f) in runs.into_iter().zip(forces) {
+        let s = mode_spectra(&f, &total, fs, &opts, fd)?;
+        let stiffness_coefficient = welch(&f.stiffness_coefficient, fs, &opts, fd)?;
+        drop((f, total));
+        modes.push(PsdMode {
+            centrifugal: s.centrifugal,
+            coriolis: s.coriolis,
+            effective_freq_hz,
+            euler: s.euler,
+            freq_hz_natural,
+            name,
+            response_total: s.total,
+            stiffness_coefficient,
+            stiffness_force: s.stiffness_force,
+        });
+    }
+    // Written straight from the spectra (a `serde_json::Value` of them took several times
+    // the memory of the text). Keys in alphabetical order, as before.
+    #[derive(serde::Serialize)]
+    struct Out<'a> {
+        flap_freq_hz: f64,
+        modes: Vec<PsdMode>,
+        options: &'a WelchOptions,
+        sample_rate_hz: f64,
+        units: serde_json::Value,
+        warnings: Vec<String>,
+    }
+    to_json(&Out {
+        flap_freq_hz: cfg.kinematics.flap_freq_hz,
+        modes,
+        options: &opts,
+        sample_rate_hz: fs,
+        units: json!({"freq_hz": "Hz", "psd": "(unit of the series)^2 / Hz, one-sided, Hann window, Welch average"}),
+        warnings,
+    })
+}
+
+/// One mode of `wingbeat psd`'s output.
+#[derive(serde::Serialize)]
+struct PsdMode {
+    centrifugal: wingbeat::analysis::psd::Spectrum,
+    coriolis: wingbeat::analysis::psd::Spectrum,
+    effective_freq_hz: f64,
+    euler: wingbeat::analysis::psd::Spectrum,
+    freq_hz_natural: f64,
+    name: String,
+    response_total: wingbeat::analysis::psd::Spectrum,
+    stiffness_coefficient: wingbeat::analysis::psd::Spectrum,
+    stiffness_force: wingbeat::analysis::psd::Spectrum,
+}
+
+/// Refuses a `wingbeat psd` whose output would exceed
+/// [`wingbeat::analysis::psd::MAX_RUN_SPECTRUM_BINS`] (six spectra per mode, each
+/// min(segment, samples)/2 + 1 bins), naming the segment flag.
+fn check_run_spectra(modes: usize, samples: usize, segment_len: usize, flag: &str) -> Result<()> {
+    use wingbeat::analysis::psd::MAX_RUN_SPECTRUM_BINS;
+    let seg = segment_len.min(samples);
+    let bins = modes as f64 * 6.0 * (seg / 2 + 1) as f64;
+    if bins > MAX_RUN_SPECTRUM_BINS {
+        let fit = 2.0 * (MAX_RUN_SPECTRUM_BINS / (6.0 * modes.max(1) as f64) - 1.0);
+        return Err(WingbeatError::ResourceCap {
+            field: flag.into(),
+            requested: format!(
+                "{seg} samples per segment: {bins:.0} spectrum bins ({modes} modes × 6 spectra × {} bins)",
+                seg / 2 + 1
+            ),
+            cap: format!("{MAX_RUN_SPECTRUM_BINS:.0} bins"),
+            why: format!(
+                "memory for the output; with {modes} modes a segment of at most {} samples fits",
+                fit.floor()
+            ),
+        });
+    }
+    Ok(())
 }
 
 fn cmd_sweep(a: SweepArgs) -> Result<String> {
     let cfg = build_config(&a.input)?;
+    for w in cfg.warnings() {
+        eprintln!("warning: {w}");
+    }
     if a.what == "ic" {
         let attribution = match a.attribution.as_str() {
             "forced" => IcAttribution::Forced,
@@ -686,7 +770,10 @@ fn cmd_sweep(a: SweepArgs) -> Result<String> {
             }
             return Ok(out);
         }
-        return to_json(&m);
+        return to_json(&WithWarnings {
+            body: &m,
+            warnings: cfg.warnings(),
+        });
     }
     let param = SweepParam::parse(&a.what)?;
     let (from, to) = match param {
@@ -731,7 +818,19 @@ fn cmd_sweep(a: SweepArgs) -> Result<String> {
         }
         return Ok(out);
     }
-    to_json(&s)
+    to_json(&WithWarnings {
+        body: &s,
+        warnings: cfg.warnings(),
+    })
+}
+
+/// A JSON result with the run's warnings beside its own keys (`warnings`: always present,
+/// an empty list when there is nothing to say).
+#[derive(serde::Serialize)]
+struct WithWarnings<'a, T: serde::Serialize> {
+    #[serde(flatten)]
+    body: &'a T,
+    warnings: Vec<String>,
 }
 
 fn cmd_reproduce(a: ReproduceArgs) -> Result<String> {

@@ -48,13 +48,14 @@ pub fn run_render(
     let mut fe_modes = None;
     let mesh = match mesh {
         Some(p) => {
-            let text = std::fs::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
+            // the CLI's capped reader (64 MiB, also for devices and pipes) and the modes
+            // document's reader (objects only, duplicate names refused)
+            let text = super::read_file(std::path::Path::new(p)).map_err(|e| e.to_string())?;
             let v: serde_json::Value =
                 serde_json::from_str(&text).map_err(|e| format!("{p}: invalid JSON: {e}"))?;
-            if let Some(m) = v.get("modes") {
+            if v.get("modes").is_some() {
                 fe_modes = Some(
-                    serde_json::from_value::<Vec<wingbeat::model::Mode>>(m.clone())
-                        .map_err(|e| format!("{p}: modes: {e}"))?,
+                    wingbeat::modes_doc::modes_from_json(&text, p).map_err(|e| e.to_string())?,
                 );
             }
             WingMesh::from_fe_json(&v).map_err(|e| format!("{p}: {e}"))?
@@ -63,7 +64,7 @@ pub fn run_render(
     };
     let cfg = match (config, fe_modes) {
         (Some(p), _) => {
-            let text = std::fs::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
+            let text = super::read_file(std::path::Path::new(p)).map_err(|e| e.to_string())?;
             SimConfig::from_json(&text).map_err(|e| format!("{p}: {e}"))?
         }
         (None, Some(modes)) => SimConfig {

@@ -21,8 +21,8 @@ pub struct SenseArgs {
     /// Sensors in the performance curve, 1–30.
     #[arg(long, default_value_t = 30)]
     k_max: usize,
-    /// Sensor noise σ, rms strain per decimated sample, (0, 1] (FE modes: true strain; paper
-    /// modes: the table's non-SI units).
+    /// Sensor noise σ, rms strain per decimated sample, [1e-12, 1] (FE modes: true strain;
+    /// paper modes: the table's non-SI units).
     #[arg(long, default_value_t = wingbeat::analysis::sensing::DEFAULT_NOISE)]
     noise: f64,
     /// Relative stroke variability ρ (the flapping strain's nuisance), [0, 1].

@@ -31,6 +31,16 @@ pub const MIN_EXTENT_MM: f64 = 0.01;
 /// thinner than this is refused by [`validate_outline`] as degenerate.
 pub const MIN_AREA_FRACTION: f64 = 1e-4;
 
+/// Smallest distance between two outline points, and between a point and an edge it is not
+/// an end of, relative to the outline's size (the larger of span and chord): 1e-6 (49 nm on
+/// the default 49 mm wing). Nearer points are not distinct to the triangulation's floating
+/// point (an outline with two points 1e-300 mm apart made the mesher index out of bounds).
+pub const MIN_SEPARATION_FRACTION: f64 = 1e-6;
+
+/// Smallest angle between the two edges at an outline point, degrees: a sharper spike is a
+/// zero-area sliver to the quality mesher (it refines toward it without end).
+pub const MIN_VERTEX_ANGLE_DEG: f64 = 0.5;
+
 fn parse_err(what: &str, msg: impl Into<String>) -> WingbeatError {
     WingbeatError::Parse {
         what: what.to_string(),
@@ -208,14 +218,18 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
             }
         }
     }
+    // the points without exact repeats, with their index in `points` (for messages)
     let mut p: Vec<[f64; 2]> = Vec::with_capacity(points.len());
-    for q in points {
+    let mut orig: Vec<usize> = Vec::with_capacity(points.len());
+    for (i, q) in points.iter().enumerate() {
         if p.last() != Some(q) {
             p.push(*q);
+            orig.push(i);
         }
     }
     while p.len() > 1 && p.first() == p.last() {
         p.pop();
+        orig.pop();
     }
     if p.len() < 3 {
         return Err(WingbeatError::invalid(
@@ -224,40 +238,7 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
             "at least 3 distinct points forming a simple polygon",
         ));
     }
-    let n = p.len();
-    for i in 0..n {
-        let (a, b) = (p[i], p[(i + 1) % n]);
-        for j in (i + 1)..n {
-            // skip adjacent edges (they share a vertex)
-            if j == i + 1 || (i == 0 && j == n - 1) {
-                continue;
-            }
-            let (c, d) = (p[j], p[(j + 1) % n]);
-            if segments_intersect(a, b, c, d) {
-                return Err(WingbeatError::Geometry(format!(
-                    "planform outline is self-intersecting: edge {i} ({a:?}–{b:?}) crosses edge {j} ({c:?}–{d:?})"
-                )));
-            }
-        }
-        // adjacent edges folding back onto each other
-        let c = p[(i + 2) % n];
-        if orient(a, b, c) == 0.0
-            && (c[0] - b[0]) * (b[0] - a[0]) + (c[1] - b[1]) * (b[1] - a[1]) < 0.0
-        {
-            return Err(WingbeatError::Geometry(format!(
-                "planform outline folds back on itself at point {}",
-                (i + 1) % n
-            )));
-        }
-    }
-    let area = signed_area(&p);
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for q in &p {
-        for k in 0..2 {
-            lo[k] = lo[k].min(q[k]);
-            hi[k] = hi[k].max(q[k]);
-        }
-    }
+    let (lo, hi) = bounds(&p);
     let (span, chord) = (hi[0] - lo[0], hi[1] - lo[1]);
     for (what, v) in [("span (x extent)", span), ("chord (y extent)", chord)] {
         if v < MIN_EXTENT_MM {
@@ -270,6 +251,8 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
             ));
         }
     }
+    check_meshable(&p, &|i| format!("planform[{}]", orig[i]), "planform")?;
+    let area = signed_area(&p);
     if area.abs() < MIN_AREA_FRACTION * span * chord {
         return Err(WingbeatError::invalid(
             "planform",
@@ -288,6 +271,173 @@ pub fn validate_outline(points: &[[f64; 2]]) -> Result<Vec<[f64; 2]>> {
         p.reverse();
     }
     Ok(p)
+}
+
+fn bounds(p: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in p {
+        for k in 0..2 {
+            lo[k] = lo[k].min(q[k]);
+            hi[k] = hi[k].max(q[k]);
+        }
+    }
+    (lo, hi)
+}
+
+/// Distance from `p` to the segment a–b.
+fn point_segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let l2 = dx * dx + dy * dy;
+    let t = if l2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (a[0] + t * dx - p[0]).hypot(a[1] + t * dy - p[1])
+}
+
+/// Three significant digits, compactly (`3e-5`, not `2.9999999999999997e-5`).
+fn sig3(v: f64) -> String {
+    crate::error::num(format!("{v:.2e}").parse().unwrap_or(v))
+}
+
+fn pt(p: [f64; 2]) -> String {
+    format!("({}, {})", crate::error::num(p[0]), crate::error::num(p[1]))
+}
+
+/// Refuses a closed polygon (mm, no exact repeats) that floating point cannot mesh: two points
+/// nearer than [`MIN_SEPARATION_FRACTION`] × its size (a zero-length edge when they are
+/// neighbours), a point that nearly touches an edge it is not an end of (the outline touches
+/// itself), edges that cross, and a spike sharper than [`MIN_VERTEX_ANGLE_DEG`]. `label(i)` names point `i`
+/// as the user gave it (`planform[4]`); `field` names the outline. O(n²) in the point count (at
+/// most [`MAX_OUTLINE_POINTS`]). The mesher runs it again on the outline it is given (with
+/// the mesh lines' crossings inserted), so no input reaches the triangulation unchecked.
+pub fn check_meshable(p: &[[f64; 2]], label: &dyn Fn(usize) -> String, field: &str) -> Result<()> {
+    let n = p.len();
+    if n < 3 {
+        return Err(WingbeatError::invalid(
+            field,
+            format!("{n} points"),
+            "at least 3 distinct points forming a simple polygon",
+        ));
+    }
+    let (lo, hi) = bounds(p);
+    let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+    let tol = MIN_SEPARATION_FRACTION * size;
+    if !(size.is_finite() && tol > 0.0 && tol.is_normal()) {
+        return Err(WingbeatError::invalid(
+            field,
+            format!("an outline of size {} mm", crate::error::num(size)),
+            format!(
+                "a finite outline at least {MIN_EXTENT_MM} mm in span and chord, coordinates within ±{MAX_COORD_MM} mm"
+            ),
+        ));
+    }
+    let allowed = format!(
+        "points at least {} mm apart and from every edge they are not an end of \
+         ({} of the outline's size, {} mm): floating point cannot mesh nearly coincident or \
+         touching geometry",
+        sig3(tol),
+        crate::error::num(MIN_SEPARATION_FRACTION),
+        sig3(size)
+    );
+    // points: all pairs
+    for i in 0..n {
+        for j in (i + 1)..n {
+            let d = (p[i][0] - p[j][0]).hypot(p[i][1] - p[j][1]);
+            if d < tol {
+                let what = if j == i + 1 || (i == 0 && j == n - 1) {
+                    "a zero-length edge: "
+                } else {
+                    ""
+                };
+                return Err(WingbeatError::invalid(
+                    label(j),
+                    format!(
+                        "{what}{} is {} mm from {} {}",
+                        pt(p[j]),
+                        crate::error::num(d),
+                        label(i),
+                        pt(p[i])
+                    ),
+                    allowed,
+                ));
+            }
+        }
+    }
+    // a point near an edge it is not an end of
+    for i in 0..n {
+        for j in 0..n {
+            let k = (j + 1) % n;
+            if i == j || i == k {
+                continue;
+            }
+            let d = point_segment_distance(p[i], p[j], p[k]);
+            if d < tol {
+                return Err(WingbeatError::invalid(
+                    label(i),
+                    format!(
+                        "{} is {} mm from the edge {}–{} ({}–{}): the outline touches itself",
+                        pt(p[i]),
+                        crate::error::num(d),
+                        label(j),
+                        label(k),
+                        pt(p[j]),
+                        pt(p[k])
+                    ),
+                    allowed,
+                ));
+            }
+        }
+    }
+    // edges that cross (the near misses are caught above)
+    for i in 0..n {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        for j in (i + 2)..n {
+            if i == 0 && j == n - 1 {
+                continue;
+            }
+            let (c, d) = (p[j], p[(j + 1) % n]);
+            if segments_intersect(a, b, c, d) {
+                return Err(WingbeatError::Geometry(format!(
+                    "{field} outline is self-intersecting: edge {}–{} ({}–{}) crosses edge {}–{} ({}–{})",
+                    label(i),
+                    label((i + 1) % n),
+                    pt(a),
+                    pt(b),
+                    label(j),
+                    label((j + 1) % n),
+                    pt(c),
+                    pt(d)
+                )));
+            }
+        }
+    }
+    // spikes: the angle between the two edges at a point
+    let min_angle = MIN_VERTEX_ANGLE_DEG.to_radians();
+    for i in 0..n {
+        let (a, b, c) = (p[(i + n - 1) % n], p[i], p[(i + 1) % n]);
+        let (u, v) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
+        let angle = (u[0] * v[1] - u[1] * v[0])
+            .abs()
+            .atan2(u[0] * v[0] + u[1] * v[1]);
+        if angle < min_angle {
+            return Err(WingbeatError::invalid(
+                label(i),
+                format!(
+                    "a spike of {}° at {} between {} and {}",
+                    crate::error::num((angle.to_degrees() * 1e6).round() / 1e6),
+                    pt(b),
+                    label((i + n - 1) % n),
+                    label((i + 1) % n)
+                ),
+                format!(
+                    "an angle of at least {MIN_VERTEX_ANGLE_DEG}° between the two edges at every point (a sharper spike is a zero-area sliver to the mesher)"
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Local leading-edge and trailing-edge y (mm) of the outline at spanwise station `x`:

@@ -1,7 +1,7 @@
 //! Quality triangulation of the planform (spade's constrained Delaunay refinement) and the
 //! cambered node positions.
 
-use super::geometry::{camber_height, signed_area};
+use super::geometry::{camber_height, check_meshable, signed_area};
 use crate::error::{Result, WingbeatError};
 use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
@@ -204,6 +204,23 @@ pub fn mesh_planform_with(
     opts: &MeshOptions,
 ) -> Result<Mesh> {
     let cap = opts.max_nodes.min(MAX_NODES);
+    if !(h_mm.is_finite() && h_mm > 0.0) {
+        return Err(WingbeatError::invalid(
+            "mesh_size_mm",
+            h_mm,
+            "a finite element size > 0 mm",
+        ));
+    }
+    if !camber.is_finite() {
+        return Err(WingbeatError::invalid("camber", camber, "a finite number"));
+    }
+    if let Some(x) = opts.lines_x_mm.iter().find(|x| !x.is_finite()) {
+        return Err(WingbeatError::invalid(
+            "mesh line x (mm)",
+            x,
+            "a finite station",
+        ));
+    }
     let n = outline.len();
     let perim: f64 = (0..n)
         .map(|i| {
@@ -254,6 +271,25 @@ pub fn mesh_planform_with(
             .collect()
     };
     let (poly, lines) = outline_with_lines(outline, &opts.lines_x_mm);
+    // Second line of defence (callers validate the outline first): nothing that floating
+    // point cannot triangulate reaches spade, including a mesh line's crossing that falls on
+    // top of an outline point.
+    let names: std::collections::HashMap<(u64, u64), usize> = outline
+        .iter()
+        .enumerate()
+        .map(|(i, p)| ((p[0].to_bits(), p[1].to_bits()), i))
+        .collect();
+    check_meshable(
+        &poly,
+        &|i| {
+            let p = poly[i];
+            names.get(&(p[0].to_bits(), p[1].to_bits())).map_or_else(
+                || format!("the crossing {p:?} of the mesh line x = {} mm", p[0]),
+                |k| format!("planform[{k}]"),
+            )
+        },
+        "planform",
+    )?;
     let np = poly.len();
     let mut verts: Vec<Point2<f64>> = Vec::new();
     let mut poly_index = vec![0usize; np];
@@ -308,8 +344,18 @@ pub fn mesh_planform_with(
         pts.push(b);
         line_pts.push(pts);
     }
-    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(verts, edges)
+    let mut conflicts = 0usize;
+    let mut cdt =
+        ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(verts, edges, |_| {
+            conflicts += 1;
+        })
         .map_err(|e| WingbeatError::Geometry(format!("triangulation failed: {e:?}")))?;
+    if conflicts > 0 {
+        return Err(WingbeatError::Geometry(format!(
+            "triangulation failed: {conflicts} outline segment(s) at the mesh size {h_mm} mm overlap \
+             or cross another (the outline nearly touches itself)"
+        )));
+    }
     let max_area = 3f64.sqrt() / 4.0 * h_mm * h_mm;
     let result = cdt.refine(
         RefinementParameters::new()
