@@ -71,15 +71,22 @@
     const cache = await caches.open(CACHE);
     const must = new Set(ESSENTIAL.map((p) => new URL(p, SCOPE).href));
     const all = [...new Set([...must, ...(await manifest())])];
-    await Promise.all(all.map(async (url) => {
-      try {
-        const res = await fetch(new Request(url, { cache: 'reload', credentials: 'same-origin' }));
-        if (!res.ok || res.redirected || res.type !== 'basic') throw new Error(`HTTP ${res.status}`);
-        await cache.put(url, res);
-      } catch (e) {
-        if (must.has(url)) throw new Error(`precache: ${url}: ${e instanceof Error ? e.message : e}`);
+    // A few at a time: the browser's connections to the host (6 over HTTP/1.1) are shared with
+    // the page, whose own first loads should not queue behind the whole copy.
+    let next = 0;
+    const one = async () => {
+      while (next < all.length) {
+        const url = all[next++];
+        try {
+          const res = await fetch(new Request(url, { cache: 'reload', credentials: 'same-origin' }));
+          if (!res.ok || res.redirected || res.type !== 'basic') throw new Error(`HTTP ${res.status}`);
+          await cache.put(url, res);
+        } catch (e) {
+          if (must.has(url)) throw new Error(`precache: ${url}: ${e instanceof Error ? e.message : e}`);
+        }
       }
-    }));
+    };
+    await Promise.all([one(), one(), one()]);
   }
 
   sw.addEventListener('install', (e) => {
