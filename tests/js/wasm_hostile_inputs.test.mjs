@@ -12,6 +12,7 @@
 //   * the instance still answers: a cheap known call (`decimateMinMax` of a fixed series, and
 //     `checkPlanform` of a square) gives its known result;
 //   * no leak: when a refused call grew the wasm memory, repeating it must not grow it again;
+//   * nothing stalls: a refusal takes under 2 s, any call under 20 s;
 //   * clear refusals: every thrown value is an Error whose message names the field in backticks
 //     (the core's "invalid value for `field`: … (allowed: …)" form) or names the problem
 //     explicitly (a geometry, a parse position, a cap).
@@ -25,9 +26,9 @@ import { fileURLToPath } from 'node:url';
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 // WASM_HOSTILE_PKG: another build to try (e.g. one of an older commit, to see this test fail there).
 const PKG = process.env.WASM_HOSTILE_PKG || path.join(ROOT, 'www', 'pkg');
-const CALLS = Number(process.env.WASM_HOSTILE_CALLS || 3000);
+const CALLS = Number(process.env.WASM_HOSTILE_CALLS || 2500);
 const SEED = Number(process.env.WASM_HOSTILE_SEED || 20);
-const TIME_BUDGET_MS = 50_000;
+const TIME_BUDGET_MS = 40_000;
 
 async function loadReal() {
   const glue = path.join(PKG, 'wingbeat.js');
@@ -236,7 +237,9 @@ test('every wasm export refuses hostile arguments by name, without trapping, dyi
     const took = Date.now() - t0;
     counts.calls++;
     const what = describeCall(target.name, labels);
-    if (took > 3000 && !once.has(target.name)) {
+    // A refusal is quick; a call that computes (feModes of the default wing) may take seconds,
+    // within the core's work budgets; nothing may hang.
+    if ((!res.ok && took > 2000) || (took > 20000 && !once.has(target.name))) {
       counts.slow++;
       problems.push(`SLOW ${what}: ${(took / 1000).toFixed(1)} s`);
     }
@@ -272,7 +275,7 @@ test('every wasm export refuses hostile arguments by name, without trapping, dyi
   }
   const ms = Date.now() - started;
   t.diagnostic(`seed ${SEED}: ${counts.calls} calls in ${(ms / 1000).toFixed(1)} s — ${counts.returned} returned, ${counts.refused} refused; ` +
-    `traps ${counts.traps}, dead instances ${counts.dead}, leaks ${counts.leaks}, unclear errors ${counts.unclear}, calls over 3 s ${counts.slow}; ` +
+    `traps ${counts.traps}, dead instances ${counts.dead}, leaks ${counts.leaks}, unclear errors ${counts.unclear}, slow (refusal > 2 s or any call > 20 s) ${counts.slow}; ` +
     `wasm memory ${(memory.buffer.byteLength / 2 ** 20).toFixed(0)} MiB`);
   for (const p of problems.slice(0, 40)) t.diagnostic(p);
   assert.ok(counts.calls >= Math.min(CALLS, 500), `at least 500 calls ran (${counts.calls})`);
