@@ -300,7 +300,8 @@ pub(crate) fn number_arg(v: &JsValue, field: &str, allowed: &str) -> Result<f64,
     v.as_f64().ok_or_else(|| bad(field, kind(v), allowed))
 }
 
-/// A finite number argument within `[lo, hi]`.
+/// A finite number argument within `[lo, hi]` (used by the 3-D view only).
+#[cfg_attr(not(all(feature = "render", target_arch = "wasm32")), allow(dead_code))]
 pub(crate) fn finite_arg(v: &JsValue, field: &str, lo: f64, hi: f64) -> Result<f64, JsError> {
     let allowed = format!("a finite number in [{}, {}]", js_number(lo), js_number(hi));
     let x = number_arg(v, field, &allowed)?;
@@ -328,7 +329,8 @@ pub(crate) fn int_arg(v: &JsValue, field: &str, lo: usize, hi: usize) -> Result<
     super::helpers::check_int(field, x, lo, hi).map_err(err)
 }
 
-/// A boolean argument (`true`/`false` only).
+/// A boolean argument (`true`/`false` only; used by the 3-D view only).
+#[cfg_attr(not(all(feature = "render", target_arch = "wasm32")), allow(dead_code))]
 pub(crate) fn bool_arg(v: &JsValue, field: &str) -> Result<bool, JsError> {
     v.as_bool()
         .ok_or_else(|| bad(field, kind(v), "true or false"))

@@ -58,7 +58,7 @@ fn points_from(v: JsValue, what: &str) -> Result<Vec<[f64; 2]>, String> {
         .ok()
         .and_then(|l| l.as_f64())
         .unwrap_or(f64::INFINITY);
-    if !(n <= MAX_OUTLINE_POINTS as f64) {
+    if n.is_nan() || n > MAX_OUTLINE_POINTS as f64 {
         return Err(crate::WingbeatError::ResourceCap {
             field: what.into(),
             requested: format!("{n} points"),
@@ -158,6 +158,9 @@ pub fn wing_input(
     to_js(&w)
 }
 
+/// `nodes`, `triangles` and `strain_nodes` as read by [`flat_mesh_args`].
+pub(crate) type FlatMeshArgs = (Vec<f64>, Vec<u32>, Vec<f64>);
+
 /// `feModes`' flat mesh arrays as given back by a caller: `nodes` (x, y, z per node),
 /// `triangles` (three node indices each) and `strain_nodes` (3 values per node per mode), each
 /// length checked against the browser's node cap before it is copied.
@@ -166,7 +169,7 @@ pub(crate) fn flat_mesh_args(
     triangles: &JsValue,
     strain_nodes: &JsValue,
     n_modes: usize,
-) -> Result<(Vec<f64>, Vec<u32>, Vec<f64>), JsError> {
+) -> Result<FlatMeshArgs, JsError> {
     let (max_nodes, max_tris) = flat_mesh_caps();
     let nodes = f64_array_arg(nodes, "nodes", 3, 3 * max_nodes)?;
     let triangles = u32_array_arg(triangles, "triangles", 3, 3 * max_tris)?;
