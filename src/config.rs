@@ -33,6 +33,17 @@ pub struct SimConfig {
     pub sample_rate_hz: f64,
     /// Initial conditions (q_k(0), q̇_k(0)) per mode; missing entries are zero.
     pub initial_conditions: Vec<[f64; 2]>,
+    /// The fluid around the wing (default: vacuum, the paper's assumption). Left out of the
+    /// serialised config when it is a vacuum with the default model.
+    #[serde(
+        skip_serializing_if = "crate::aero::AeroConfig::is_default",
+        deserialize_with = "crate::error::object_only"
+    )]
+    pub aero: crate::aero::AeroConfig,
+    /// The wing's mesh and mode shapes, which air needs (the FE wing or a `wingbeat modes`
+    /// document); not part of the JSON config: front ends attach it from the modes source.
+    #[serde(skip)]
+    pub wing: Option<std::sync::Arc<crate::aero::WingGeometry>>,
 }
 
 impl Default for SimConfig {
@@ -43,6 +54,8 @@ impl Default for SimConfig {
             duration_s: 2.0,
             sample_rate_hz: 10_000.0,
             initial_conditions: vec![],
+            aero: crate::aero::AeroConfig::default(),
+            wing: None,
         }
     }
 }
@@ -57,8 +70,10 @@ impl SimConfig {
     /// [`presets::FE_WING_MODES`] shell-FE modes of the default wing
     /// ([`presets::fe_wing_modes`]). Takes about a second natively.
     pub fn fe_wing() -> Result<Self> {
+        let (modes, wing) = presets::fe_wing_modes_and_wing()?;
         Ok(SimConfig {
-            modes: presets::fe_wing_modes()?,
+            modes,
+            wing: Some(std::sync::Arc::new(wing)),
             ..SimConfig::paper()
         })
     }
@@ -78,6 +93,7 @@ impl SimConfig {
     /// Validates every field and the resource caps.
     pub fn validate(&self) -> Result<()> {
         self.model().validate()?;
+        self.aero.validate()?;
         crate::modes_doc::check_strain_names(&self.modes, "modes")?;
         check_positive("duration_s", self.duration_s, MAX_DURATION_S, "s")?;
         check_positive(

@@ -6,6 +6,8 @@
 //! * [`kinematics`] — roll α, pitch β, yaw γ and the frame's angular velocity Ω (Eq. 1);
 //!   [`kinematics_table`] turns a measured CSV table of them into periodic kinematics;
 //! * [`model`] — the modal equation of motion, Eq. 13, and its three force terms;
+//! * [`aero`] — the wing in air: quadrature over the FE wing, aerodynamic force, damping and
+//!   added mass, the coupled solve and its Floquet analysis;
 //! * [`solve`] — exact-to-rounding period propagation plus two independent time steppers;
 //! * [`floquet`] — monodromy, multipliers, stability, effective frequency and beat period;
 //! * [`simulate`] — the driver: a [`config::SimConfig`] in, responses and summaries out;
@@ -37,6 +39,7 @@
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
+pub mod aero;
 pub mod analysis;
 pub mod config;
 pub mod error;

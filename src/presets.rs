@@ -65,13 +65,20 @@ pub const FE_WING_MODES: usize = 4;
 /// P = [`crate::fem::STRAIN_POINT_P_MM`]. Takes about a second natively. The whole preset
 /// (these modes under the paper's kinematics) is [`crate::config::SimConfig::fe_wing`].
 pub fn fe_wing_modes() -> crate::Result<Vec<Mode>> {
+    Ok(fe_wing_modes_and_wing()?.0)
+}
+
+/// [`fe_wing_modes`] and the wing's mesh and mode shapes, which the air needs
+/// ([`crate::aero::WingGeometry`]).
+pub fn fe_wing_modes_and_wing() -> crate::Result<(Vec<Mode>, crate::aero::WingGeometry)> {
     let input = crate::fem::FemInput {
         n_modes: FE_WING_MODES,
         ..Default::default()
     };
     let fe = crate::fem::compute_modes(&input)?;
     let (x, y) = crate::fem::STRAIN_POINT_P_MM;
-    fe.model_modes(0.0, &[("P".to_string(), x, y)], "strain point")
+    let modes = fe.model_modes(0.0, &[("P".to_string(), x, y)], "strain point")?;
+    Ok((modes, crate::aero::WingGeometry::from_fem(&fe)))
 }
 
 /// Names of the built-in presets.

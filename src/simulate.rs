@@ -21,6 +21,9 @@ pub struct Responses {
     pub centrifugal: Vec<f64>,
     /// Response to the Coriolis force alone, zero initial conditions.
     pub coriolis: Vec<f64>,
+    /// Response to the aerodynamic force alone (in air; empty and left out in a vacuum).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub aerodynamic: Vec<f64>,
     /// Free response to the initial conditions alone (zero when they are zero).
     pub free: Vec<f64>,
     /// Total response: all forces together plus the initial conditions.
@@ -60,6 +63,9 @@ pub struct ModeResult {
     pub floquet: FloquetResult,
     /// Accuracy report.
     pub accuracy: Accuracy,
+    /// What the air does to this mode (absent in a vacuum).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub air: Option<crate::aero::simulate::ModeAir>,
 }
 
 pub use crate::analysis::strain::StrainSeries;
@@ -81,6 +87,9 @@ pub struct SimResult {
     pub strain_points: Vec<StrainSeries>,
     /// Non-fatal warnings (e.g. yaw beyond the small-angle range).
     pub warnings: Vec<String>,
+    /// The medium and the coupled system's Floquet multipliers (absent in a vacuum).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub air: Option<crate::aero::simulate::AirSummary>,
 }
 
 /// Mean of the stiffness coefficient S(t) = α̇² cos²β + β̇² over one period (1/s²), by a
@@ -234,6 +243,10 @@ pub fn commensurate_sample_rate(flap_freq_hz: f64, sample_rate_hz: f64) -> f64 {
 /// Runs a simulation.
 pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     cfg.validate()?;
+    if !cfg.aero.is_vacuum() {
+        let geom = cfg.wing.as_deref().ok_or_else(crate::aero::no_wing_error)?;
+        return crate::aero::simulate::simulate_in_air(cfg, geom);
+    }
     let kin = cfg.kinematics.compile();
     check_cost_with(cfg, &kin, MAX_RUN_WORK, "simulate")?;
     let n = cfg.n_samples();
@@ -247,6 +260,7 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
             euler: std::mem::take(&mut p.q[ModalOde::EULER]),
             centrifugal: std::mem::take(&mut p.q[ModalOde::CENTRIFUGAL]),
             coriolis: std::mem::take(&mut p.q[ModalOde::CORIOLIS]),
+            aerodynamic: Vec::new(),
             free: p.free,
             total: p.total,
         };
@@ -273,6 +287,7 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
             contribution_percent,
             floquet,
             accuracy,
+            air: None,
         });
     }
     let totals: Vec<&[f64]> = modes.iter().map(|m| m.q.total.as_slice()).collect();
@@ -288,6 +303,7 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
         },
         modes,
         warnings: cfg.warnings(),
+        air: None,
     })
 }
 

@@ -39,6 +39,7 @@ fn lab_config(v: &[(&str, f64)], base: &SimConfig) -> SimConfig {
         duration_s: get("duration"),
         sample_rate_hz: 10_000.0,
         initial_conditions: vec![],
+        ..SimConfig::paper()
     }
 }
 

@@ -24,6 +24,7 @@ proptest! {
             duration_s: 0.2,
             sample_rate_hz: 5000.0,
             initial_conditions: vec![[q0, v0]],
+            ..SimConfig::paper()
         };
         match simulate(&cfg) {
             Ok(r) => {

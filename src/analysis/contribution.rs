@@ -13,6 +13,9 @@ pub struct Contributions {
     pub centrifugal: f64,
     /// Coriolis share, %.
     pub coriolis: f64,
+    /// Aerodynamic share, % (in air; absent in a vacuum).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub aerodynamic: Option<f64>,
 }
 
 impl Contributions {
@@ -22,6 +25,7 @@ impl Contributions {
         for (n, v) in [
             ("centrifugal", self.centrifugal),
             ("coriolis", self.coriolis),
+            ("aerodynamic", self.aerodynamic.unwrap_or(f64::NEG_INFINITY)),
         ] {
             if v > best.1 {
                 best = (n, v);
@@ -65,11 +69,32 @@ pub fn contributions(
             euler: 0.0,
             centrifugal: 0.0,
             coriolis: 0.0,
+            aerodynamic: None,
         };
     }
     Contributions {
         euler: 100.0 * ss(euler) / den,
         centrifugal: 100.0 * ss(centrifugal) / den,
         coriolis: 100.0 * ss(coriolis) / den,
+        aerodynamic: None,
+    }
+}
+
+/// [`contributions`] with a fourth, aerodynamic partial response (the wing in air).
+pub fn contributions_with_aero(
+    euler: &[f64],
+    centrifugal: &[f64],
+    coriolis: &[f64],
+    aerodynamic: &[f64],
+    total: &[f64],
+) -> Contributions {
+    // The aerodynamic share with the same scaling and denominator: computed as the Euler
+    // share of (aerodynamic, –, –, total).
+    let base = contributions(euler, centrifugal, coriolis, total);
+    let aero = contributions(aerodynamic, &[], &[], total).euler;
+    let zero = base.euler == 0.0 && base.centrifugal == 0.0 && base.coriolis == 0.0 && aero == 0.0;
+    Contributions {
+        aerodynamic: Some(if zero { 0.0 } else { aero }),
+        ..base
     }
 }

@@ -18,6 +18,7 @@
 //! * [`rk4`] — the classical explicit Runge–Kutta method, an independent second method used to
 //!   cross-check the propagator.
 
+pub mod coupled;
 pub mod gauss;
 pub mod propagator;
 pub mod rk4;
