@@ -60,8 +60,8 @@ pub const MAX_SEGMENT: usize = 1 << 22;
 /// min(segment, samples)/2 + 1 bins, every bin a frequency and a density): 6e6 bins keep the
 /// JSON text near 250 MB, so that the run, its series and the text stay under the documented
 /// 1.5 GB (docs/limits.md, "Memory"). One mode may still use a segment of 2 000 000 samples
-/// (the whole run at the sample cap); four modes up to 500 000.
-pub const MAX_RUN_SPECTRUM_BINS: f64 = 6.0e6;
+/// (the whole run at the sample cap, 6 000 006 bins); four modes up to about 508 000.
+pub const MAX_RUN_SPECTRUM_BINS: f64 = 6.1e6;
 
 impl WelchOptions {
     /// Validates the options.

@@ -239,10 +239,47 @@ pub fn modal_rotation_signal_with(
     })
 }
 
+/// Most values of the Δε series at chosen points (points × samples): each point keeps six
+/// series (Δε and the flapping strain, three components) and writes three, about 105 bytes per
+/// point and sample in `wingbeat sense` (measured: 15 points over 2 000 000 samples of 4 FE
+/// modes peaked at 3.5 GB, 60 points at 13.5 GB). 8e6 keeps a run at the sample cap (the two
+/// runs' series, about 360 MB) under the documented 1.5 GB: 4 points over 2 000 000 samples,
+/// all 256 over 31 250.
+pub const MAX_SENSING_SERIES_VALUES: f64 = 8.0e6;
+
+/// The Δε series' caps: work (points × samples × modes) and memory (points × samples).
+fn check_series_size(n_points: usize, n: usize, m: usize) -> Result<()> {
+    let work = n_points as f64 * n as f64 * m as f64;
+    if work > MAX_SENSING_SERIES_WORK {
+        return Err(WingbeatError::ResourceCap {
+            field: "points × samples × modes (Δε series)".into(),
+            requested: format!("{n_points} × {n} × {m} = {work:.3e}"),
+            cap: format!("{MAX_SENSING_SERIES_WORK:e}"),
+            why: "every point's series is written out; ask for fewer points or a shorter run"
+                .into(),
+        });
+    }
+    let values = n_points as f64 * n as f64;
+    if values > MAX_SENSING_SERIES_VALUES {
+        return Err(WingbeatError::ResourceCap {
+            field: "points × samples (Δε series)".into(),
+            requested: format!("{n_points} × {n} = {values:.3e}"),
+            cap: format!("{MAX_SENSING_SERIES_VALUES:e}"),
+            why: format!(
+                "memory for the series (about 105 bytes per point and sample); at {n} samples at \
+                 most {} points fit: ask for fewer points (--points) or a shorter run",
+                (MAX_SENSING_SERIES_VALUES / n.max(1) as f64).floor()
+            ),
+        });
+    }
+    Ok(())
+}
+
 /// Checks, before any work, every budget of a sensing analysis of `cfg` under `body_rate`:
 /// both runs against [`MAX_RUN_WORK`], the per-node map and placement against
 /// [`MAX_SENSING_MAP_WORK`] (`n_nodes`, 0 without a mesh), and `n_points` Δε series against
-/// [`MAX_SENSING_SERIES_WORK`]. `who` names the caller in errors.
+/// [`MAX_SENSING_SERIES_WORK`] and [`MAX_SENSING_SERIES_VALUES`]. `who` names the caller in
+/// errors.
 pub fn check_sensing_cost(
     cfg: &SimConfig,
     body_rate: [f64; 3],
@@ -257,17 +294,7 @@ pub fn check_sensing_cost(
     check_run_cost(&rot, MAX_RUN_WORK, who)?;
     let m = cfg.modes.len();
     check_map_work(n_nodes, m)?;
-    let work = n_points as f64 * cfg.n_samples() as f64 * m as f64;
-    if work > MAX_SENSING_SERIES_WORK {
-        return Err(WingbeatError::ResourceCap {
-            field: "points × samples × modes (Δε series)".into(),
-            requested: format!("{n_points} × {} × {m} = {work:.3e}", cfg.n_samples()),
-            cap: format!("{MAX_SENSING_SERIES_WORK:e}"),
-            why: "every point's series is written out; ask for fewer points or a shorter run"
-                .into(),
-        });
-    }
-    Ok(())
+    check_series_size(n_points, cfg.n_samples(), m)
 }
 
 /// The strain component names, in the order of the nodal strain triples.
@@ -636,16 +663,7 @@ pub fn delta_strain_series(
 ) -> Result<Vec<(StrainSeries, StrainSeries)>> {
     let m = sig.flap.len();
     let n = check_signal(m, sig)?;
-    let work = modal.len() as f64 * n as f64 * m as f64;
-    if work > MAX_SENSING_SERIES_WORK {
-        return Err(WingbeatError::ResourceCap {
-            field: "points × samples × modes (Δε series)".into(),
-            requested: format!("{} × {n} × {m} = {work:.3e}", modal.len()),
-            cap: format!("{MAX_SENSING_SERIES_WORK:e}"),
-            why: "every point's series is written out; ask for fewer points or a shorter run"
-                .into(),
-        });
-    }
+    check_series_size(modal.len(), n, m)?;
     let series = |name: &str, e: &[[f64; 3]], qs: &[Vec<f64>]| {
         let mut s = StrainSeries {
             point: name.to_string(),

@@ -270,19 +270,49 @@ pub fn run(a: SenseArgs) -> Result<String> {
         (Format::Json, _) => {
             let mut points = Vec::new();
             for ((x, y), (d, _)) in pts.iter().zip(&series) {
-                points.push(json!({
-                    "x_mm": x,
-                    "y_mm": y,
-                    "delta_strain": d,
-                    "spectrum": {
-                        "eps_x": welch(&d.eps_x, sig.sample_rate_hz, &wopts, Some(fd))?,
-                        "eps_y": welch(&d.eps_y, sig.sample_rate_hz, &wopts, Some(fd))?,
-                        "gamma_xy": welch(&d.gamma_xy, sig.sample_rate_hz, &wopts, Some(fd))?,
+                points.push(SensePoint {
+                    delta_strain: d,
+                    spectrum: Spectra {
+                        eps_x: welch(&d.eps_x, sig.sample_rate_hz, &wopts, Some(fd))?,
+                        eps_y: welch(&d.eps_y, sig.sample_rate_hz, &wopts, Some(fd))?,
+                        gamma_xy: welch(&d.gamma_xy, sig.sample_rate_hz, &wopts, Some(fd))?,
                     },
-                }));
+                    x_mm: *x,
+                    y_mm: *y,
+                });
             }
-            to_json(&json!({
-                "units": {
+            // Written straight from the results (a `serde_json::Value` of the series took
+            // several times the memory of the text; issue 20). Keys in alphabetical order,
+            // as before.
+            #[derive(serde::Serialize)]
+            struct Out<'a> {
+                body_rate: [f64; 3],
+                elapsed_s: f64,
+                flap_freq_hz: f64,
+                map: &'a wingbeat::analysis::sensing::DetectabilityMap,
+                n_nodes: usize,
+                nodes_mm: Vec<[f64; 2]>,
+                options: SensingOptions,
+                placement: &'a wingbeat::analysis::sensing::Placement,
+                points: Vec<SensePoint<'a>>,
+                sample_rate_hz: f64,
+                t: &'a [f64],
+                units: serde_json::Value,
+                warnings: &'a [String],
+            }
+            to_json(&Out {
+                body_rate: w,
+                elapsed_s: elapsed,
+                flap_freq_hz: fd,
+                map: &res.map,
+                n_nodes: fe.nodes.len(),
+                nodes_mm: fe.nodes.iter().map(|p| [p[0] * 1e3, p[1] * 1e3]).collect(),
+                options: opts,
+                placement: &res.placement,
+                points,
+                sample_rate_hz: sig.sample_rate_hz,
+                t: &sig.t,
+                units: json!({
                     "body_rate": "rad/s, body axes (I roll, J pitch, K yaw)",
                     "strain": "dimensionless (FE modes, SI)",
                     "x_mm": "mm, spanwise from the root", "y_mm": "mm, chordwise",
@@ -290,22 +320,28 @@ pub fn run(a: SenseArgs) -> Result<String> {
                     "d_prime": "sqrt(Delta^T (rho^2 F F^T + noise^2 I)^-1 Delta), stacked decimated series",
                     "pd": "detection probability at a 1 % false-alarm rate",
                     "psd": "strain^2 / Hz, one-sided Welch",
-                },
-                "body_rate": w,
-                "options": opts,
-                "flap_freq_hz": fd,
-                "sample_rate_hz": sig.sample_rate_hz,
-                "n_nodes": fe.nodes.len(),
-                "elapsed_s": elapsed,
-                "warnings": sig.warnings,
-                "nodes_mm": fe.nodes.iter().map(|p| [p[0] * 1e3, p[1] * 1e3]).collect::<Vec<_>>(),
-                "map": res.map,
-                "placement": res.placement,
-                "t": sig.t,
-                "points": points,
-            }))
+                }),
+                warnings: &sig.warnings,
+            })
         }
     }
+}
+
+/// One point of `wingbeat sense`'s JSON: Δε there and its spectra.
+#[derive(serde::Serialize)]
+struct SensePoint<'a> {
+    delta_strain: &'a StrainSeries,
+    spectrum: Spectra,
+    x_mm: f64,
+    y_mm: f64,
+}
+
+/// The spectra of the three strain components.
+#[derive(serde::Serialize)]
+struct Spectra {
+    eps_x: wingbeat::analysis::psd::Spectrum,
+    eps_y: wingbeat::analysis::psd::Spectrum,
+    gamma_xy: wingbeat::analysis::psd::Spectrum,
 }
 
 fn series_csv(t: &[f64], series: &[(StrainSeries, StrainSeries)]) -> String {
@@ -352,20 +388,34 @@ fn modal_only(
                 pts.iter().map(|p| (p.clone(), p.clone())).collect();
             Ok(series_csv(&sig.t, &pairs))
         }
-        Format::Json => to_json(&json!({
-            "units": {
-                "body_rate": "rad/s, body axes (I roll, J pitch, K yaw)",
-                "delta_q": "the modes' units (paper table: not SI)",
-                "strain": "the table's modal-strain units times q (not SI)",
-            },
-            "note": "paper-table modes carry strain only at named points: no detectability map or sensor placement (use --preset fe-wing or --modes FILE from `wingbeat modes`)",
-            "body_rate": sig.body_rate,
-            "flap_freq_hz": sig.flap_freq_hz,
-            "sample_rate_hz": sig.sample_rate_hz,
-            "warnings": sig.warnings,
-            "t": sig.t,
-            "delta_q": sig.delta,
-            "points": pts,
-        })),
+        Format::Json => {
+            #[derive(serde::Serialize)]
+            struct Out<'a> {
+                body_rate: [f64; 3],
+                delta_q: &'a [Vec<f64>],
+                flap_freq_hz: f64,
+                note: &'static str,
+                points: &'a [StrainSeries],
+                sample_rate_hz: f64,
+                t: &'a [f64],
+                units: serde_json::Value,
+                warnings: &'a [String],
+            }
+            to_json(&Out {
+                body_rate: sig.body_rate,
+                delta_q: &sig.delta,
+                flap_freq_hz: sig.flap_freq_hz,
+                note: "paper-table modes carry strain only at named points: no detectability map or sensor placement (use --preset fe-wing or --modes FILE from `wingbeat modes`)",
+                points: &pts,
+                sample_rate_hz: sig.sample_rate_hz,
+                t: &sig.t,
+                units: json!({
+                    "body_rate": "rad/s, body axes (I roll, J pitch, K yaw)",
+                    "delta_q": "the modes' units (paper table: not SI)",
+                    "strain": "the table's modal-strain units times q (not SI)",
+                }),
+                warnings: &sig.warnings,
+            })
+        }
     }
 }
