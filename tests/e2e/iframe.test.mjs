@@ -101,6 +101,32 @@ async function labFrame(page, n = 1) {
   return frame;
 }
 
+/**
+ * Waits until none of the page's requests (its frames' and their workers') is in flight for
+ * `quiet` ms, so that a navigation the test makes next does not cancel loads the lab started
+ * (the live worker, started by the first parameter change, loads worker.js and its modules) and
+ * count them as failed. Fails, naming the loads, when they have not settled within `limit` ms.
+ * Call trackLoads right after openPage (before the first goto).
+ * @param {import('playwright-core').Page} page
+ */
+function trackLoads(page) {
+  /** @type {Set<import('playwright-core').Request>} */
+  const pending = new Set();
+  page.on('request', (r) => pending.add(r));
+  page.on('requestfinished', (r) => pending.delete(r));
+  page.on('requestfailed', (r) => pending.delete(r));
+  return async function settled(quiet = 300, limit = 15000) {
+    const t0 = Date.now();
+    let idleSince = pending.size ? 0 : Date.now();
+    while (!idleSince || Date.now() - idleSince < quiet) {
+      if (Date.now() - t0 > limit) throw new Error(`loads still in flight after ${limit} ms: ${[...pending].map((r) => r.url()).join(', ')}`);
+      await new Promise((r) => setTimeout(r, 25));
+      if (pending.size) idleSince = 0;
+      else if (!idleSince) idleSince = Date.now();
+    }
+  };
+}
+
 /** Heights: the lab's content (inside the frame), the frame's viewport, the iframe element. */
 async function heights(page, frame) {
   const inner = await frame.evaluate(() => {
@@ -340,6 +366,7 @@ test('postMessage API: set γ0 and β0, read back the Floquet numbers the lab sh
 
 test('parent_origin=: the pinned origin is answered, any other is ignored (no reply, no height); a malformed one silences the API', async () => {
   const { context, page, problems } = await openPage(env.browser, env.A, { width: 1000, height: 800 });
+  const settled = trackLoads(page);
   await page.goto(`${env.A}pinned.html`);
   const frame = await labFrame(page);
   await page.waitForFunction(() => document.getElementById('lab').style.height !== '', null, { timeout: 10000 });
@@ -350,6 +377,8 @@ test('parent_origin=: the pinned origin is answered, any other is ignored (no re
   const notice = await frame.evaluate(() => { const lab = document.getElementById('lab'); const n = (lab.shadowRoot || lab).querySelector('.wl-notice'); return n && !n.hidden ? n.textContent : ''; });
   assert.equal(notice, '', 'no "invalid parameter" notice for parent_origin');
 
+  // The set above started the lab's live worker: its module loads finish before the page is left.
+  await settled();
   await page.goto(`${env.A}pinned-other.html`);
   await labFrame(page);
   await page.waitForTimeout(500);
@@ -359,6 +388,7 @@ test('parent_origin=: the pinned origin is answered, any other is ignored (no re
   const r = await raw(page, { type: 'wingbeat:get', version: 1, id: 'x' }, 1500);
   assert.equal(r, null, 'requests from the other origin are ignored');
 
+  await settled();
   await page.goto(`${env.A}pinned-bad.html`);
   await labFrame(page);
   await page.waitForTimeout(500);
