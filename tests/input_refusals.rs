@@ -120,9 +120,10 @@ fn arrays_where_fe_input_objects_belong_are_refused() {
     assert_array_refused(&fe_err(json!({"material": mat})), "material");
     assert_array_refused(&fe_err(json!([def["planform_mm"]])), "");
     let clamp = json!({"clamp": {"strip": [2.0]}});
-    if parse_json::<FemInput>(&clamp.to_string(), "FE input").is_ok() {
-        panic!("a strip clamp as an array was read: {clamp}");
-    }
+    assert!(
+        parse_json::<FemInput>(&clamp.to_string(), "FE input").is_err(),
+        "a strip clamp as an array was read: {clamp}"
+    );
 }
 
 #[test]

@@ -13,7 +13,7 @@ use wingbeat::analysis::spectra::mode_spectra;
 use wingbeat::analysis::sweep::{apply, sweep, SweepOptions, SweepParam};
 use wingbeat::config::SimConfig;
 use wingbeat::kinematics_table::{kinematics_from_csv, AngleUnits, CsvKinematicsOptions};
-use wingbeat::modes_doc::modes_from_json;
+use wingbeat::modes_doc::read_modes_document;
 use wingbeat::simulate::{force_series, simulate, SimResult};
 use wingbeat::{Result, WingbeatError};
 
@@ -225,6 +225,15 @@ struct SimInput {
     /// Initial velocities q̇_k(0), comma-separated per mode.
     #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
     qdot0: Vec<f64>,
+    /// Density of the fluid around the wing, kg/m³, 0 ..= 1000: 0 = vacuum (the paper's
+    /// assumption and the default), 0.18 helium, 1.2 air. Overrides the config's
+    /// `aero.air_density_kg_m3`. Air loads the wing point by point (quasi-steady strip theory
+    /// with added mass, docs/model.md "The wing in air"), so it needs mode shapes over the
+    /// wing: `--preset fe-wing`, or `--modes FILE` written by `wingbeat modes`. In air the
+    /// modes are coupled; each mode gains an `aerodynamic` partial response and share and an
+    /// `air` block (still-air frequency, aerodynamic damping ratio, decay time, the beat's fate).
+    #[arg(long, value_name = "RHO", allow_negative_numbers = true)]
+    air_density: Option<f64>,
 }
 
 #[derive(Args, Debug)]
@@ -333,7 +342,6 @@ fn command() -> clap::Command {
 }
 
 /// Parses the command line and runs; returns what to print.
-
 pub fn run() -> Result<String> {
     let parsed = command()
         .try_get_matches()
@@ -411,7 +419,7 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
         "paper" => None,
         "fe-wing" => {
             eprintln!("simulate: computing the fe-wing preset's shell FE modes…");
-            Some(wingbeat::presets::fe_wing_modes()?)
+            Some(wingbeat::presets::fe_wing_modes_and_wing()?)
         }
         other => {
             return Err(WingbeatError::invalid(
@@ -431,11 +439,35 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
         })?,
         None => SimConfig::paper(),
     };
-    if let Some(fe_modes) = preset {
+    if let Some((fe_modes, wing)) = preset {
         cfg.modes = fe_modes;
+        cfg.wing = Some(std::sync::Arc::new(wing));
     }
     if let Some(p) = &inp.modes {
-        cfg.modes = modes_from_json(&read_file(p)?, &p.display().to_string())?;
+        let doc = read_modes_document(&read_file(p)?, &p.display().to_string())?;
+        cfg.modes = doc.modes;
+        // A `wingbeat modes` document carries the mesh and shapes the air needs.
+        cfg.wing = doc
+            .fe
+            .as_ref()
+            .map(|fe| std::sync::Arc::new(wingbeat::aero::WingGeometry::from_fem(fe)));
+    }
+    if let Some(rho) = inp.air_density {
+        wingbeat::error::check_range(
+            "--air-density",
+            rho,
+            0.0,
+            wingbeat::aero::MAX_DENSITY,
+            "kg/m³ (0 = vacuum, 0.18 helium, 1.2 air)",
+        )?;
+        cfg.aero.air_density_kg_m3 = rho;
+    }
+    if !cfg.aero.is_vacuum() && cfg.wing.is_none() {
+        return Err(WingbeatError::invalid(
+            "--air-density",
+            cfg.aero.air_density_kg_m3,
+            "0 (vacuum) with these modes: air needs mode shapes over the wing, from `--preset fe-wing` or `--modes FILE` written by `wingbeat modes` (the paper's table modes and modes without a mesh have none)",
+        ));
     }
     if let Some(p) = &inp.kinematics_csv {
         let units = inp.kinematics_units.as_deref().ok_or_else(|| {
@@ -544,8 +576,21 @@ fn to_json(v: &impl serde::Serialize) -> Result<String> {
 
 fn csv_of(r: &SimResult) -> String {
     let mut out = String::from("t_s");
+    let air = r.air.is_some();
+    let terms: &[&str] = if air {
+        &[
+            "euler",
+            "centrifugal",
+            "coriolis",
+            "aerodynamic",
+            "free",
+            "total",
+        ]
+    } else {
+        &["euler", "centrifugal", "coriolis", "free", "total"]
+    };
     for (k, _) in r.modes.iter().enumerate() {
-        for term in ["euler", "centrifugal", "coriolis", "free", "total"] {
+        for term in terms {
             out.push_str(&format!(",q{}_{}", k + 1, term));
         }
         out.push_str(&format!(",qdot{}_total", k + 1));
@@ -557,14 +602,12 @@ fn csv_of(r: &SimResult) -> String {
     for (i, t) in r.t.iter().enumerate() {
         out.push_str(&format!("{t:.9e}"));
         for m in &r.modes {
-            for v in [
-                m.q.euler[i],
-                m.q.centrifugal[i],
-                m.q.coriolis[i],
-                m.q.free[i],
-                m.q.total[i],
-                m.qdot_total[i],
-            ] {
+            let mut vals = vec![m.q.euler[i], m.q.centrifugal[i], m.q.coriolis[i]];
+            if air {
+                vals.push(m.q.aerodynamic[i]);
+            }
+            vals.extend([m.q.free[i], m.q.total[i], m.qdot_total[i]]);
+            for v in vals {
                 out.push_str(&format!(",{v:.12e}"));
             }
         }

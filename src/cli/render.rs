@@ -50,7 +50,7 @@ pub fn run_render(
         Some(p) => {
             // the CLI's capped reader (64 MiB, also for devices and pipes) and the modes
             // document's reader (objects only, duplicate names refused)
-            let text = super::read_file(std::path::Path::new(p)).map_err(|e| e.to_string())?;
+            let text = super::read_file(Path::new(p)).map_err(|e| e.to_string())?;
             let v: serde_json::Value =
                 serde_json::from_str(&text).map_err(|e| format!("{p}: invalid JSON: {e}"))?;
             if v.get("modes").is_some() {
@@ -64,7 +64,7 @@ pub fn run_render(
     };
     let cfg = match (config, fe_modes) {
         (Some(p), _) => {
-            let text = super::read_file(std::path::Path::new(p)).map_err(|e| e.to_string())?;
+            let text = super::read_file(Path::new(p)).map_err(|e| e.to_string())?;
             SimConfig::from_json(&text).map_err(|e| format!("{p}: {e}"))?
         }
         (None, Some(modes)) => SimConfig {
