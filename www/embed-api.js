@@ -23,6 +23,7 @@
 
 import { parsePairs, paramsOf, toQuery, shortKey, PANELS } from './state.js';
 import { fmt } from './format.js';
+import { experimentPatch } from './experiments.js';
 
 export const API_VERSION = 1;
 const PREFIX = 'wingbeat:';
@@ -219,6 +220,8 @@ export function startEmbedApi(labEl, opts = {}) {
     for (const r of parsed.rejected) errors.push({ field: r.key, message: `${r.key}: ${r.why}` });
     const into = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (parsed.state));
     for (const [key] of pairs) if (!parsed.rejected.some((r) => r.key === short(key))) patch[key] = into[key];
+    // exp opens a guided experiment with its parameters, as its chip does (values set with it win).
+    if (typeof patch.exp === 'string' && patch.exp) Object.assign(patch, experimentPatch(patch.exp, Object.keys(patch)));
     // The selected mode must exist in the mode set it will be used with.
     if ('mode' in patch || 'modes' in patch) {
       const st = store();
