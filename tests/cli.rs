@@ -50,7 +50,7 @@ fn bad_input_is_named_and_exits_nonzero() {
             vec!["simulate", "--config", "/nonexistent.json"],
             "/nonexistent.json",
         ),
-        (vec!["psd", "--overlap", "0.99"], "psd.overlap"),
+        (vec!["psd", "--overlap", "0.99"], "--overlap"),
         (vec!["sweep", "nonsense"], "sweep.param"),
         (vec!["sweep", "alpha0"], "--from"),
         (

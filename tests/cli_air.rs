@@ -103,3 +103,47 @@ fn reproduce_carries_the_computed_air_claims() {
         .unwrap();
     assert_eq!(beat["verdict"], "holds");
 }
+
+#[test]
+fn sense_runs_in_air_and_psd_and_sweep_refuse_it_by_name() {
+    let args = |rho: &'static str| {
+        vec![
+            "sense",
+            "--preset",
+            "fe-wing",
+            "--fe-modes",
+            "2",
+            "--duration",
+            "0.2",
+            "--k-max",
+            "2",
+            "--body-rate",
+            "0,0,2",
+            "--air-density",
+            rho,
+        ]
+    };
+    let (code, air, err) = run(&args("1.2"));
+    assert_eq!(code, 0, "{err}");
+    let (code, vac, err) = run(&args("0"));
+    assert_eq!(code, 0, "{err}");
+    let (a, v): (Value, Value) = (
+        serde_json::from_str(&air).unwrap(),
+        serde_json::from_str(&vac).unwrap(),
+    );
+    // The rotation-induced response differs in air (the sensing runs are the air runs).
+    assert_ne!(a["delta_q"], v["delta_q"]);
+    for sub in ["psd", "sweep"] {
+        let mut cmd = vec![sub];
+        if sub == "sweep" {
+            cmd.push("gamma0");
+        }
+        cmd.extend(["--preset", "fe-wing", "--air-density", "1.2"]);
+        let (code, _, err) = run(&cmd);
+        assert_eq!(code, 2, "{sub}");
+        assert!(
+            err.contains("--air-density") && err.contains(sub),
+            "{sub}: {err}"
+        );
+    }
+}

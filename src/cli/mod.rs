@@ -665,6 +665,7 @@ fn cmd_simulate(a: SimulateArgs) -> Result<String> {
 
 fn cmd_psd(a: PsdArgs) -> Result<String> {
     let cfg = build_config(&a.input)?;
+    vacuum_only(&cfg, "psd")?;
     let opts = WelchOptions {
         segment_len: a.segment_len,
         overlap: a.overlap,
@@ -776,8 +777,21 @@ fn check_run_spectra(modes: usize, samples: usize, segment_len: usize, flag: &st
     Ok(())
 }
 
+/// Refuses air for a subcommand that does not handle it yet (rather than ignore it).
+fn vacuum_only(cfg: &SimConfig, what: &str) -> Result<()> {
+    if cfg.aero.is_vacuum() {
+        return Ok(());
+    }
+    Err(WingbeatError::invalid(
+        "--air-density",
+        cfg.aero.air_density_kg_m3,
+        format!("0 for `{what}` (not yet in air: {what} prices and spectra its runs for a vacuum); `simulate` and `sense` run in air"),
+    ))
+}
+
 fn cmd_sweep(a: SweepArgs) -> Result<String> {
     let cfg = build_config(&a.input)?;
+    vacuum_only(&cfg, "sweep")?;
     for w in cfg.warnings() {
         eprintln!("warning: {w}");
     }

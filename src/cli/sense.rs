@@ -154,10 +154,35 @@ pub fn run(a: SenseArgs) -> Result<String> {
     if input.preset == "fe-wing" && input.modes.is_none() {
         input.preset = "paper".into();
     }
+    // The medium is applied once the FE wing's shapes are attached (air needs them).
+    let air = input.air_density.take();
     let mut cfg = build_config(&input)?;
     if let (Some(fe), None) = (&fe, &a.input.modes) {
         cfg.modes = fe.to_modes(a.input.zeta.unwrap_or(0.0), &[]);
         cfg.initial_conditions.truncate(cfg.modes.len());
+        cfg.validate()?;
+    }
+    if let Some(fe) = &fe {
+        cfg.wing = Some(std::sync::Arc::new(wingbeat::aero::WingGeometry::from_fem(
+            fe,
+        )));
+    }
+    if let Some(rho) = air {
+        wingbeat::error::check_range(
+            "--air-density",
+            rho,
+            0.0,
+            wingbeat::aero::MAX_DENSITY,
+            "kg/m³ (0 = vacuum, 0.18 helium, 1.2 air)",
+        )?;
+        if rho > 0.0 && cfg.wing.is_none() {
+            return Err(WingbeatError::invalid(
+                "--air-density",
+                rho,
+                "0 (vacuum) without an FE wing: air needs its mode shapes (`--preset fe-wing` or `--modes FILE` from `wingbeat modes`)",
+            ));
+        }
+        cfg.aero.air_density_kg_m3 = rho;
         cfg.validate()?;
     }
     if let Some(fe) = &fe {
