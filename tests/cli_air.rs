@@ -131,8 +131,10 @@ fn sense_runs_in_air_and_psd_and_sweep_refuse_it_by_name() {
         serde_json::from_str(&air).unwrap(),
         serde_json::from_str(&vac).unwrap(),
     );
-    // The rotation-induced response differs in air (the sensing runs are the air runs).
-    assert_ne!(a["delta_q"], v["delta_q"]);
+    // Both runs are in the medium, and the rotation-induced strain map differs in air.
+    assert_eq!(a["air_density_kg_m3"], 1.2);
+    assert_eq!(v["air_density_kg_m3"], 0.0);
+    assert_ne!(a["map"], v["map"]);
     for sub in ["psd", "sweep"] {
         let mut cmd = vec![sub];
         if sub == "sweep" {

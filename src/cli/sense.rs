@@ -311,6 +311,7 @@ pub fn run(a: SenseArgs) -> Result<String> {
             // as before.
             #[derive(serde::Serialize)]
             struct Out<'a> {
+                air_density_kg_m3: f64,
                 body_rate: [f64; 3],
                 elapsed_s: f64,
                 flap_freq_hz: f64,
@@ -326,6 +327,7 @@ pub fn run(a: SenseArgs) -> Result<String> {
                 warnings: &'a [String],
             }
             to_json(&Out {
+                air_density_kg_m3: cfg.aero.air_density_kg_m3,
                 body_rate: w,
                 elapsed_s: elapsed,
                 flap_freq_hz: fd,
@@ -338,6 +340,7 @@ pub fn run(a: SenseArgs) -> Result<String> {
                 sample_rate_hz: sig.sample_rate_hz,
                 t: &sig.t,
                 units: json!({
+                    "air_density_kg_m3": "kg/m³ of the medium both runs are in (0 = vacuum)",
                     "body_rate": "rad/s, body axes (I roll, J pitch, K yaw)",
                     "strain": "dimensionless (FE modes, SI)",
                     "x_mm": "mm, spanwise from the root", "y_mm": "mm, chordwise",
