@@ -240,6 +240,28 @@ pub fn commensurate_sample_rate(flap_freq_hz: f64, sample_rate_hz: f64) -> f64 {
     (sample_rate_hz / flap_freq_hz).round().max(1.0) * flap_freq_hz
 }
 
+/// Names the mode and the inputs behind a response that overflowed (a parametrically unstable
+/// mode over a long run): the solver's own message says why, not which field drives it.
+fn name_overflow(e: WingbeatError, cfg: &SimConfig, k: usize) -> WingbeatError {
+    match e {
+        WingbeatError::NonFinite { what, detail } => {
+            let num = crate::error::num;
+            WingbeatError::NonFinite {
+                what: format!(
+                    "{what} of `modes[{k}]` ({} Hz) over `duration_s` = {} s",
+                    num(cfg.modes[k].freq_hz),
+                    num(cfg.duration_s)
+                ),
+                detail: format!(
+                    "{detail} (the mode sits in a parametric-resonance tongue of the kinematics at `kinematics.flap_freq_hz` = {} Hz: raise `modes[{k}].zeta`, move the flap frequency, or lower the amplitudes)",
+                    num(cfg.kinematics.flap_freq_hz)
+                ),
+            }
+        }
+        other => other,
+    }
+}
+
 /// Runs a simulation.
 pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     cfg.validate()?;
@@ -255,7 +277,8 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     let mut modes = Vec::with_capacity(cfg.modes.len());
     for (k, mode) in cfg.modes.iter().enumerate() {
         let ode = ModalOde::new(&kin, mode);
-        let mut p = propagate_responses(&ode, dt, n, ModalOde::TOTAL, cfg.ic(k))?;
+        let mut p = propagate_responses(&ode, dt, n, ModalOde::TOTAL, cfg.ic(k))
+            .map_err(|e| name_overflow(e, cfg, k))?;
         let q = Responses {
             euler: std::mem::take(&mut p.q[ModalOde::EULER]),
             centrifugal: std::mem::take(&mut p.q[ModalOde::CENTRIFUGAL]),

@@ -143,4 +143,9 @@ fn parametric_resonance_is_reported_not_hidden() {
     cfg.sample_rate_hz = 100.0;
     let e = simulate(&cfg).unwrap_err().to_string();
     assert!(e.contains("parametrically unstable"), "{e}");
+    // ... naming the mode and the inputs that drive it.
+    assert!(
+        e.contains("modes[0]") && e.contains("duration_s") && e.contains("kinematics.flap_freq_hz"),
+        "{e}"
+    );
 }
