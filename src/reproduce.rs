@@ -774,6 +774,17 @@ fn basal_component(r: &SimResult) -> Option<(&'static str, usize)> {
     Some((["ε_x", "ε_y", "γ_xy"][i], i))
 }
 
+/// [`basal_component`] of the vacuum run with its sample rate and flap frequency (Hz).
+fn basal(c: &Context) -> Result<(&'static str, usize, f64, f64)> {
+    let (name, i) =
+        basal_component(&c.wing_vac).ok_or_else(|| crate::WingbeatError::NonFinite {
+            what: "air claims".into(),
+            detail: "the fe-wing preset carries no strain point".into(),
+        })?;
+    let fs = 1.0 / (c.wing_vac.t[1] - c.wing_vac.t[0]);
+    Ok((name, i, fs, c.wing_vac.flap_freq_hz))
+}
+
 fn strain_component(r: &SimResult, i: usize) -> &[f64] {
     let s = r
         .strain
@@ -783,17 +794,7 @@ fn strain_component(r: &SimResult, i: usize) -> &[f64] {
 }
 
 fn air_suppresses_3wd(c: &Context) -> Result<Claim> {
-    let Some((name, i)) = basal_component(&c.wing_vac) else {
-        return Ok(claim(
-            "air-3wd",
-            "beyond the paper: air",
-            "—",
-            "no strain point".into(),
-            Verdict::Fails,
-        ));
-    };
-    let fs = 1.0 / (c.wing_vac.t[1] - c.wing_vac.t[0]);
-    let fd = c.wing_vac.flap_freq_hz;
+    let (name, i, fs, fd) = basal(c)?;
     let amp = |r: &SimResult, h: f64| amplitude_at(strain_component(r, i), fs, fd, h * fd, 40.0);
     let (v1, v3) = (amp(&c.wing_vac, 1.0), amp(&c.wing_vac, 3.0));
     let (a1, a3) = (amp(&c.wing_air, 1.0), amp(&c.wing_air, 3.0));
@@ -816,17 +817,7 @@ fn air_suppresses_3wd(c: &Context) -> Result<Claim> {
 }
 
 fn helium_vs_air(c: &Context) -> Result<Claim> {
-    let Some((name, i)) = basal_component(&c.wing_vac) else {
-        return Ok(claim(
-            "helium-vs-air",
-            "beyond the paper: air",
-            "—",
-            "no strain point".into(),
-            Verdict::Fails,
-        ));
-    };
-    let fs = 1.0 / (c.wing_vac.t[1] - c.wing_vac.t[0]);
-    let fd = c.wing_vac.flap_freq_hz;
+    let (name, i, fs, fd) = basal(c)?;
     let rms = |r: &SimResult| {
         let x = strain_component(r, i);
         let n = ((40.0 / fd) * fs).round() as usize;

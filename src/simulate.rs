@@ -313,9 +313,21 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
             air: None,
         });
     }
+    Ok(assemble(cfg, t, modes, None))
+}
+
+/// The result of a run from its per-mode results: the strain at every named point from the
+/// total responses, the warnings, and the air summary when there is one (the vacuum and the
+/// air paths both end here).
+pub(crate) fn assemble(
+    cfg: &SimConfig,
+    t: Vec<f64>,
+    modes: Vec<ModeResult>,
+    air: Option<crate::aero::simulate::AirSummary>,
+) -> SimResult {
     let totals: Vec<&[f64]> = modes.iter().map(|m| m.q.total.as_slice()).collect();
     let strain_points = crate::analysis::strain::strain_series(&cfg.modes, &totals);
-    Ok(SimResult {
+    SimResult {
         t,
         flap_freq_hz: cfg.kinematics.flap_freq_hz,
         strain: strain_points.first().cloned(),
@@ -326,8 +338,8 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
         },
         modes,
         warnings: cfg.warnings(),
-        air: None,
-    })
+        air,
+    }
 }
 
 /// The Eq. 13 terms of one mode sampled on a time grid (paper Fig. 4).

@@ -484,35 +484,22 @@ pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult
             }),
         });
     }
-    let totals: Vec<&[f64]> = modes.iter().map(|m| m.q.total.as_slice()).collect();
-    let strain_points = crate::analysis::strain::strain_series(&cfg.modes, &totals);
-    Ok(SimResult {
-        t: t_axis,
-        flap_freq_hz: cfg.kinematics.flap_freq_hz,
-        strain: strain_points.first().cloned(),
-        strain_points: if strain_points.len() > 1 {
-            strain_points
-        } else {
-            vec![]
-        },
-        modes,
-        warnings: cfg.warnings(),
-        air: Some(AirSummary {
-            aero: cfg.aero,
-            area_m2: wing.area(),
-            points: wing.points.len(),
-            added_mass: (0..n)
-                .map(|i| {
-                    (0..n)
-                        .map(|j| ode.mass[i * n + j] - if i == j { 1.0 } else { 0.0 })
-                        .collect()
-                })
-                .collect(),
-            multipliers: fl.multipliers.clone(),
-            stable: fl.stable,
-            steps_per_period: pr.steps,
-        }),
-    })
+    let summary = AirSummary {
+        aero: cfg.aero,
+        area_m2: wing.area(),
+        points: wing.points.len(),
+        added_mass: (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| ode.mass[i * n + j] - if i == j { 1.0 } else { 0.0 })
+                    .collect()
+            })
+            .collect(),
+        multipliers: fl.multipliers.clone(),
+        stable: fl.stable,
+        steps_per_period: pr.steps,
+    };
+    Ok(crate::simulate::assemble(cfg, t_axis, modes, Some(summary)))
 }
 
 /// `v` rounded to `sig` significant digits (for messages).

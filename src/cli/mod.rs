@@ -452,23 +452,7 @@ fn build_config(inp: &SimInput) -> Result<SimConfig> {
             .as_ref()
             .map(|fe| std::sync::Arc::new(wingbeat::aero::WingGeometry::from_fem(fe)));
     }
-    if let Some(rho) = inp.air_density {
-        wingbeat::error::check_range(
-            "--air-density",
-            rho,
-            0.0,
-            wingbeat::aero::MAX_DENSITY,
-            "kg/m³ (0 = vacuum, 0.18 helium, 1.2 air)",
-        )?;
-        cfg.aero.air_density_kg_m3 = rho;
-    }
-    if !cfg.aero.is_vacuum() && cfg.wing.is_none() {
-        return Err(WingbeatError::invalid(
-            "--air-density",
-            cfg.aero.air_density_kg_m3,
-            "0 (vacuum) with these modes: air needs mode shapes over the wing, from `--preset fe-wing` or `--modes FILE` written by `wingbeat modes` (the paper's table modes and modes without a mesh have none)",
-        ));
-    }
+    apply_air_density(&mut cfg, inp.air_density)?;
     if let Some(p) = &inp.kinematics_csv {
         let units = inp.kinematics_units.as_deref().ok_or_else(|| {
             WingbeatError::invalid(
@@ -773,6 +757,29 @@ fn check_run_spectra(modes: usize, samples: usize, segment_len: usize, flag: &st
                 fit.floor()
             ),
         });
+    }
+    Ok(())
+}
+
+/// Applies `--air-density` (when given) to `cfg` and refuses air without the wing's mode
+/// shapes; the one place the flag is read (simulate, psd, sweep, sense).
+pub(crate) fn apply_air_density(cfg: &mut SimConfig, rho: Option<f64>) -> Result<()> {
+    if let Some(rho) = rho {
+        wingbeat::error::check_range(
+            "--air-density",
+            rho,
+            0.0,
+            wingbeat::aero::MAX_DENSITY,
+            "kg/m³ (0 = vacuum, 0.18 helium, 1.2 air)",
+        )?;
+        cfg.aero.air_density_kg_m3 = rho;
+    }
+    if !cfg.aero.is_vacuum() && cfg.wing.is_none() {
+        return Err(WingbeatError::invalid(
+            "--air-density",
+            cfg.aero.air_density_kg_m3,
+            "0 (vacuum) with these modes: air needs mode shapes over the wing, from `--preset fe-wing` or `--modes FILE` written by `wingbeat modes` (the paper's table modes and modes without a mesh have none)",
+        ));
     }
     Ok(())
 }

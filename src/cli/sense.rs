@@ -167,22 +167,8 @@ pub fn run(a: SenseArgs) -> Result<String> {
             fe,
         )));
     }
-    if let Some(rho) = air {
-        wingbeat::error::check_range(
-            "--air-density",
-            rho,
-            0.0,
-            wingbeat::aero::MAX_DENSITY,
-            "kg/m³ (0 = vacuum, 0.18 helium, 1.2 air)",
-        )?;
-        if rho > 0.0 && cfg.wing.is_none() {
-            return Err(WingbeatError::invalid(
-                "--air-density",
-                rho,
-                "0 (vacuum) without an FE wing: air needs its mode shapes (`--preset fe-wing` or `--modes FILE` from `wingbeat modes`)",
-            ));
-        }
-        cfg.aero.air_density_kg_m3 = rho;
+    if air.is_some() {
+        super::apply_air_density(&mut cfg, air)?;
         cfg.validate()?;
     }
     if let Some(fe) = &fe {
