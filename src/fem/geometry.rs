@@ -285,7 +285,7 @@ fn bounds(p: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
 }
 
 /// Distance from `p` to the segment a–b.
-fn point_segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+pub(crate) fn point_segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let l2 = dx * dx + dy * dy;
     let t = if l2 > 0.0 {

@@ -1,7 +1,7 @@
 //! Quality triangulation of the planform (spade's constrained Delaunay refinement) and the
 //! cambered node positions.
 
-use super::geometry::{camber_height, check_meshable, signed_area};
+use super::geometry::{camber_height, check_meshable, point_segment_distance, signed_area};
 use crate::error::{Result, WingbeatError};
 use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
@@ -122,16 +122,7 @@ fn strictly_inside(poly: &[[f64; 2]], p: [f64; 2], tol: f64) -> bool {
     let mut inside = false;
     for i in 0..n {
         let (a, b) = (poly[i], poly[(i + 1) % n]);
-        // distance to the segment
-        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-        let l2 = dx * dx + dy * dy;
-        let t = if l2 > 0.0 {
-            (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        let (qx, qy) = (a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
-        if (qx * qx + qy * qy).sqrt() <= tol {
+        if point_segment_distance(p, a, b) <= tol {
             return false;
         }
         if (a[1] > p[1]) != (b[1] > p[1]) {
