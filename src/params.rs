@@ -424,7 +424,7 @@ pub struct MaterialRange {
 
 /// What [`crate::fem::ShellMaterial::validate`] accepts, one entry per field: physical
 /// bounds, wider than the lab's sliders ([`WING_PARAMS`], which lie inside them —
-/// `tests/issue13_errors.rs`), narrow enough that the element matrices stay far from
+/// `tests/clear_errors_and_url_ranges.rs`), narrow enough that the element matrices stay far from
 /// underflow and overflow (E = 1e-300 Pa used to end in "Krylov space exhausted"; any
 /// E ≥ 1e-100 Pa still solves, so these bounds leave a wide margin). From a soft gel
 /// (1 kPa) to above diamond (1e13 Pa); 0.1 µm to 1 m thick; 1 to 1e5 kg/m³.

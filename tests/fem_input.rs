@@ -70,7 +70,7 @@ fn input_json_round_trip_and_clamp_parse() {
 /// Issue 13: an unknown field inside the clamp (or anywhere in the FE input) is refused, not
 /// ignored.
 #[test]
-fn issue13_unknown_clamp_and_input_fields_are_refused() {
+fn unknown_clamp_and_input_fields_are_refused() {
     for bad in [
         r#"{"clamp": {"strip": {"x_mm": 1.0, "extra": 2}}}"#,
         r#"{"clamp": {"strip": {"x": 1.0}}}"#,

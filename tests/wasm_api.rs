@@ -816,7 +816,7 @@ fn modes_from_json_reads_the_exported_document() {
 // ---- Issue 13: no coercion, no trap, no non-finite result, no key ignored ----
 
 #[wasm_bindgen_test]
-fn issue13_integer_arguments_are_never_coerced() {
+fn integer_arguments_are_never_coerced() {
     let cfg = to_js(&SimConfig {
         duration_s: 0.2,
         ..SimConfig::paper()
@@ -844,7 +844,7 @@ fn issue13_integer_arguments_are_never_coerced() {
 }
 
 #[wasm_bindgen_test]
-fn issue13_functions_and_fake_arrays_are_refused_by_name() {
+fn functions_and_fake_arrays_are_refused_by_name() {
     let f: JsValue = js_sys::Function::new_no_args("return 1").into();
     let m = message(wasm::analyze(
         f.clone(),
@@ -878,7 +878,7 @@ fn issue13_functions_and_fake_arrays_are_refused_by_name() {
 }
 
 #[wasm_bindgen_test]
-fn issue13_psd_envelope_and_ic_map_are_finite_or_refused() {
+fn psd_envelope_and_ic_map_are_finite_or_refused() {
     let x: Vec<f64> = (0..256).map(|i| (i as f64 * 0.3).sin()).collect();
     let m = message(wasm::psd(
         wasm_common::fa(&x),
@@ -919,7 +919,7 @@ fn issue13_psd_envelope_and_ic_map_are_finite_or_refused() {
 }
 
 #[wasm_bindgen_test]
-fn issue13_unknown_nested_keys_are_refused() {
+fn unknown_nested_keys_are_refused() {
     let m = message(wasm::simulate(json(
         r#"{"modes":[{"freq_hz":62.5,"a":[7.5e-6,9.3e-7],"damping":0.05}]}"#,
     )));

@@ -151,7 +151,7 @@ export function defaults() {
  * Parses one numeric value; returns a number or null when not a plain in-range decimal. The
  * range check is the core's (`check_range` in src/error.rs: finite and min <= v <= max, no
  * tolerance), so a value accepted here is never refused by `applyOverrides`/`wingInput`
- * (`zeta=-1e-13` used to pass here and fail there); tests/issue13_errors.rs runs this file
+ * (`zeta=-1e-13` used to pass here and fail there); tests/clear_errors_and_url_ranges.rs runs this file
  * against the core's tables.
  * @param {NumericParam} p
  * @param {unknown} raw

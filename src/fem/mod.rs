@@ -90,7 +90,7 @@ impl ShellMaterial {
             ("material.rho_kg_m3", self.rho_kg_m3),
             ("material.nu", self.nu),
         ] {
-            // every field has a range (tests/issue13_errors.rs checks the table)
+            // every field has a range (tests/clear_errors_and_url_ranges.rs checks the table)
             if let Some(r) = crate::params::material_range(field) {
                 r.check(v)?;
             }

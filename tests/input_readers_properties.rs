@@ -1,4 +1,4 @@
-//! Issue 13, item 5: property tests over every reader of outside input — the config JSON,
+//! Property tests over every reader of outside input — the config JSON,
 //! the modes document, the kinematics CSV, the planform readers, the FE input and the wasm
 //! entry points' Rust-side checks (`wasm::helpers`, compiled natively with `--features web`).
 //! For any input: no panic, and either `Ok` with finite outputs or `Err` with a message that

@@ -1,4 +1,4 @@
-//! Issue 13 ("bounded and strict"): regression tests for the reproductions the core and the CLI
+//! Bounded and strict inputs: regression tests for the reproductions the core and the CLI
 //! now refuse or answer (strict schemas at every level, paths in CLI type errors, compact
 //! numbers, a work budget checked before the work, finite analyses).
 
@@ -22,7 +22,7 @@ fn parse_err(json: &str) -> String {
 }
 
 #[test]
-fn issue13_unknown_keys_are_refused_at_every_level() {
+fn unknown_keys_are_refused_at_every_level() {
     // The issue's case: `damping` instead of `zeta` used to run undamped with exit 0.
     let e = parse_err(r#"{"modes":[{"freq_hz":62.5,"a":[7.5e-6,9.3e-7],"damping":0.05}]}"#);
     assert!(e.contains("modes[0].damping") && e.contains("zeta"), "{e}");
@@ -49,7 +49,7 @@ fn issue13_unknown_keys_are_refused_at_every_level() {
 }
 
 #[test]
-fn issue13_config_type_errors_name_the_field_path() {
+fn config_type_errors_name_the_field_path() {
     let e = parse_err(r#"{"modes":[{"freq_hz":"fast","a":[1,0]}]}"#);
     assert!(e.contains("`modes[0].freq_hz`"), "{e}");
     let e = parse_err(r#"{"duration_s":"x"}"#);
@@ -57,7 +57,7 @@ fn issue13_config_type_errors_name_the_field_path() {
 }
 
 #[test]
-fn issue13_modes_files_are_strict_but_keep_the_modes_document_keys() {
+fn modes_files_are_strict_but_keep_the_modes_document_keys() {
     let e = modes_from_json(
         r#"{"modes":[{"freq_hz":62.5,"a":[7.5e-6,9.3e-7],"damping":0.05}]}"#,
         "m.json",
@@ -80,7 +80,7 @@ fn issue13_modes_files_are_strict_but_keep_the_modes_document_keys() {
 }
 
 #[test]
-fn issue13_numbers_in_messages_are_compact() {
+fn numbers_in_messages_are_compact() {
     let invalid = |json: &str| {
         SimConfig::from_json(json)
             .unwrap()
@@ -97,7 +97,7 @@ fn issue13_numbers_in_messages_are_compact() {
 }
 
 #[test]
-fn issue13_cli_negative_values_reach_the_range_check() {
+fn cli_negative_values_reach_the_range_check() {
     let (code, _, err, _) = run(&["modes", "--camber", "-0.1"]);
     assert_eq!(code, 2);
     assert!(
@@ -107,7 +107,7 @@ fn issue13_cli_negative_values_reach_the_range_check() {
 }
 
 #[test]
-fn issue13_cli_config_from_a_device_is_capped() {
+fn cli_config_from_a_device_is_capped() {
     if !std::path::Path::new("/dev/zero").exists() {
         return;
     }
@@ -118,7 +118,7 @@ fn issue13_cli_config_from_a_device_is_capped() {
 }
 
 #[test]
-fn issue13_slow_flap_is_refused_quickly() {
+fn slow_flap_is_refused_quickly() {
     for args in [
         &["simulate", "--flap-hz", "1e-320"][..],
         &["simulate", "--flap-hz", "1e-3", "--duration", "0.1"][..],
@@ -134,7 +134,7 @@ fn issue13_slow_flap_is_refused_quickly() {
 }
 
 #[test]
-fn issue13_stiff_modes_are_refused_before_the_work() {
+fn stiff_modes_are_refused_before_the_work() {
     let stiff = |zeta: f64, flap: f64| {
         let mut c = SimConfig::from_json(&format!(
             r#"{{"modes":[{{"freq_hz":1e5,"a":[1e-6,0],"zeta":{zeta}}}],"duration_s":0.01}}"#
@@ -175,7 +175,7 @@ fn table(n: usize) -> String {
 }
 
 #[test]
-fn issue13_long_sampled_tables_get_a_default_harmonic_cap() {
+fn long_sampled_tables_get_a_default_harmonic_cap() {
     let cfg = SimConfig::from_json(&table(10_000)).unwrap();
     let s = cfg.kinematics.alpha.series();
     assert_eq!(s.terms.len(), DEFAULT_SAMPLED_MAX_HARMONIC as usize);
@@ -192,7 +192,7 @@ fn issue13_long_sampled_tables_get_a_default_harmonic_cap() {
 }
 
 #[test]
-fn issue13_sweeps_check_their_total_work_first() {
+fn sweeps_check_their_total_work_first() {
     let mut cfg = SimConfig::paper();
     cfg.duration_s = 99.0;
     let t0 = Instant::now();
@@ -212,7 +212,7 @@ fn issue13_sweeps_check_their_total_work_first() {
 }
 
 #[test]
-fn issue13_psd_and_envelope_are_finite_or_refused() {
+fn psd_and_envelope_are_finite_or_refused() {
     let x: Vec<f64> = (0..256).map(|i| (i as f64 * 0.3).sin()).collect();
     let o = WelchOptions::default();
     let e = welch(&x, 5e-324, &o, None).unwrap_err().to_string();
@@ -244,7 +244,7 @@ fn issue13_psd_and_envelope_are_finite_or_refused() {
 }
 
 #[test]
-fn issue13_contribution_shares_survive_a_growing_response() {
+fn contribution_shares_survive_a_growing_response() {
     let n = 1000;
     let e: Vec<f64> = (0..n).map(|i| (i as f64 * 0.1).sin()).collect();
     let c: Vec<f64> = (0..n).map(|i| 0.2 * (i as f64 * 0.2).cos()).collect();
@@ -263,7 +263,7 @@ fn issue13_contribution_shares_survive_a_growing_response() {
 }
 
 #[test]
-fn issue13_unstable_modes_have_no_beat_period() {
+fn unstable_modes_have_no_beat_period() {
     // The lab's instability experiment: α0 0.87 rad at 29.5 Hz.
     let mut cfg = SimConfig::paper();
     cfg = wingbeat::analysis::sweep::apply(&cfg, SweepParam::Alpha0, 0.87).unwrap();
@@ -285,7 +285,7 @@ fn issue13_unstable_modes_have_no_beat_period() {
 }
 
 #[test]
-fn issue13_ic_map_ranges_are_bounded() {
+fn ic_map_ranges_are_bounded() {
     use wingbeat::analysis::ic_map::{ic_map, IcMapOptions};
     let mut cfg = SimConfig::paper();
     cfg.duration_s = 0.2;
@@ -318,7 +318,7 @@ fn issue13_ic_map_ranges_are_bounded() {
 }
 
 #[test]
-fn issue13_strain_points_are_capped_and_linear() {
+fn strain_points_are_capped_and_linear() {
     use wingbeat::model::{ModalStrain, MAX_STRAIN_POINTS};
     let point = |j: usize| ModalStrain {
         point: format!("S{j}"),
@@ -347,7 +347,7 @@ fn issue13_strain_points_are_capped_and_linear() {
 }
 
 #[test]
-fn issue13_shares_of_a_response_grown_past_1e200() {
+fn shares_of_a_response_grown_past_1e200() {
     // The instability experiment run long: q_total of mode 1 reaches about 4e212.
     let base = wingbeat::analysis::sweep::apply(&SimConfig::paper(), SweepParam::Alpha0, 0.87)
         .and_then(|c| wingbeat::analysis::sweep::apply(&c, SweepParam::FlapHz, 29.5))

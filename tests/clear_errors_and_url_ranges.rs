@@ -1,4 +1,4 @@
-//! Issue 13, second pass: clear errors for the FE reproductions (a 1e-9 mm outline, a
+//! Clear errors for the FE reproductions (a 1e-9 mm outline, a
 //! modulus of 1e-300 Pa), one owner for the URL and core ranges (www/state.js against
 //! src/params.rs), the FE work budget (a 5 000-point outline), and a regression test for each
 //! remaining reproduction of the issue's "Unclear errors" list.
@@ -41,10 +41,10 @@ pub fn resampled_manduca(n: usize) -> Vec<[f64; 2]> {
 
 /// Prints mesh size, system size, estimated work and measured time of a few FE runs (the
 /// calibration of `fem::FE_MAX_WORK` in docs/limits.md). Release build:
-/// `cargo test --release --test issue13_errors -- --ignored --nocapture calibration`.
+/// `cargo test --release --test clear_errors_and_url_ranges -- --ignored --nocapture calibration`.
 #[test]
 #[ignore = "measurement, minutes"]
-fn issue13_fe_work_calibration() {
+fn fe_work_calibration() {
     let opt = fem::EigenOptions::default();
     let mut cases: Vec<(String, FemInput)> = Vec::new();
     for (h, n) in [(2.0, 6), (1.0, 6), (0.75, 6), (0.5, 6), (1.0, 64), (0.3, 6)] {
@@ -105,7 +105,7 @@ fn err_text<T: std::fmt::Debug>(r: wingbeat::Result<T>) -> String {
 }
 
 #[test]
-fn issue13_a_tiny_outline_is_refused_by_name() {
+fn a_tiny_outline_is_refused_by_name() {
     // The issue's case: a 1e-9 mm outline used to fail with "invalid value for `clamp.x_mm`:
     // Root".
     let tiny = geometry_square(1e-9);
@@ -145,8 +145,8 @@ fn geometry_square(side: f64) -> Vec<[f64; 2]> {
 }
 
 #[test]
-fn issue13_cli_tiny_outline_and_tiny_modulus_get_clear_messages() {
-    let dir = std::env::temp_dir().join(format!("wingbeat-issue13-{}", std::process::id()));
+fn cli_tiny_outline_and_tiny_modulus_get_clear_messages() {
+    let dir = std::env::temp_dir().join(format!("wingbeat-clear-errors-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let tiny = dir.join("tiny.json");
     std::fs::write(&tiny, "[[0,0],[1e-9,0],[1e-9,1e-9],[0,1e-9]]").unwrap();
@@ -169,7 +169,7 @@ fn issue13_cli_tiny_outline_and_tiny_modulus_get_clear_messages() {
 }
 
 #[test]
-fn issue13_material_ranges_have_one_owner() {
+fn material_ranges_have_one_owner() {
     // Every field the material has is checked against MATERIAL_RANGES, by name.
     let ok = fem::ShellMaterial::paper_frequencies();
     ok.validate().unwrap();
@@ -271,7 +271,7 @@ console.log(JSON.stringify({{ numeric: NUMERIC, wing: WING, accepted }}));"#
 }
 
 #[test]
-fn issue13_url_and_core_ranges_are_the_same() {
+fn url_and_core_ranges_are_the_same() {
     // The issue's case: the URL parser let `zeta=-1e-13` through, then validateConfig refused.
     let mut probes: Vec<(String, String)> = vec![("zeta".into(), "-1e-13".into())];
     for p in PARAMS.iter().chain(WING_PARAMS.iter()) {
@@ -352,7 +352,7 @@ fn issue13_url_and_core_ranges_are_the_same() {
 }
 
 #[test]
-fn issue13_clamp_messages_say_what_the_clamp_is() {
+fn clamp_messages_say_what_the_clamp_is() {
     // A strip wider than the wing: the message names the strip and says it holds everything.
     let e = err_text(fem::compute_modes(&FemInput {
         clamp: fem::Clamp::Strip { x_mm: 900.0 },
@@ -372,7 +372,7 @@ fn issue13_clamp_messages_say_what_the_clamp_is() {
 }
 
 #[test]
-fn issue13_cli_mode_index_errors_name_the_option() {
+fn cli_mode_index_errors_name_the_option() {
     for bad in ["-1", "1.5", "4294967296"] {
         let (code, _, err, _) = run(&["sweep", "ic", "--mode", bad, "--n", "3"]);
         assert_eq!(code, 2, "{err}");
@@ -382,11 +382,11 @@ fn issue13_cli_mode_index_errors_name_the_option() {
 }
 
 #[test]
-fn issue13_fe_runs_beyond_the_work_budget_are_refused_before_assembly() {
+fn fe_runs_beyond_the_work_budget_are_refused_before_assembly() {
     // The issue's cases: a 5 000-point outline (inside the point cap) meshed to 17 129 nodes
     // and took 548 s and 2.5 GB; `--mesh-size-mm 0.3` took 76 s; wasm feModes at 0.3 mm with
     // 64 modes 232 s. Now each is refused after meshing, before anything is assembled.
-    let dir = std::env::temp_dir().join(format!("wingbeat-issue13-fe-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("wingbeat-clear-errors-fe-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("outline5000.csv");
     let mut csv = String::from("x_mm,y_mm\n");

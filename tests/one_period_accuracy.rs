@@ -1,4 +1,4 @@
-//! Issue 12, item 4: the step size is chosen so that one period's integration errs by at most
+//! The step size is chosen so that one period's integration errs by at most
 //! 1e-11 (relative) for stiff modes and rich kinematics, and the dense output used on
 //! incommensurate sample grids is as exact as the per-sample checkpoints. References are
 //! independent integrations with four times as many Gauss–Legendre steps (error 4⁸ ≈ 6.5e4
