@@ -151,13 +151,8 @@ fn bad_flags_are_named() {
 
 #[test]
 fn a_modes_document_is_an_fe_wing_and_points_are_checked_first() {
-    let dir = std::env::temp_dir().join(format!("wingbeat_sense_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("modes.json");
-    let (code, out, err) = run(&["modes", "--mesh-size-mm", "2", "--n-modes", "3"]);
-    assert_eq!(code, 0, "{err}");
-    std::fs::write(&file, out).unwrap();
-    let f = file.to_str().unwrap();
+    let (dir, f) = common_cli::modes_document("sense");
+    let f = f.as_str();
     let (code, out, err) = run(&["sense", "--modes", f, "--duration", "0.2", "--k-max", "2"]);
     assert_eq!(code, 0, "{err}");
     let v: Value = serde_json::from_str(&out).unwrap();

@@ -10,13 +10,8 @@ use common_cli::run;
 
 #[test]
 fn the_noise_range_ends_both_run_and_outside_is_refused_by_name() {
-    let dir = std::env::temp_dir().join(format!("wingbeat_noise_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("modes.json");
-    let (code, out, err) = run(&["modes", "--mesh-size-mm", "2", "--n-modes", "3"]);
-    assert_eq!(code, 0, "{err}");
-    std::fs::write(&file, out).unwrap();
-    let f = file.to_str().unwrap();
+    let (dir, f) = common_cli::modes_document("noise");
+    let f = f.as_str();
     let lo = format!("{MIN_NOISE:e}");
     for noise in [lo.as_str(), "1"] {
         let (code, out, err) = run(&[

@@ -24,3 +24,17 @@ pub fn run(args: &[&str]) -> (i32, String, String) {
     let (code, out, err, _) = run_timed(args);
     (code, out, err)
 }
+
+/// Writes a small `wingbeat modes` document (the default wing, 2 mm elements, 3 modes) into a
+/// fresh temporary folder named after `tag`; returns the folder (remove it when done) and the
+/// file's path.
+pub fn modes_document(tag: &str) -> (std::path::PathBuf, String) {
+    let dir = std::env::temp_dir().join(format!("wingbeat_{tag}_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("modes.json");
+    let (code, out, err) = run(&["modes", "--mesh-size-mm", "2", "--n-modes", "3"]);
+    assert_eq!(code, 0, "{err}");
+    std::fs::write(&file, out).unwrap();
+    let f = file.to_str().unwrap().to_string();
+    (dir, f)
+}

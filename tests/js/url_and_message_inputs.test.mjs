@@ -10,17 +10,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { parseQuery, parsePairs, defaults, NUMERIC, WING, ENUMS, PANELS, BODY_RATE, shortKey, MAX_PAIRS } from '../../www/state.js';
 import { checkEnvelope, paramPairs, API_VERSION } from '../../www/embed-api.js';
+import { prng } from './prng.mjs';
 
-function prng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6D2B79F5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 const KEYS = [...NUMERIC.map((p) => p.key), ...WING.map((w) => w.key), ...ENUMS.map((e) => e.key),
   'panels', 'embed', 'exp', 'outline', 'planform', 'body_rate', 'body_axis'];
