@@ -69,5 +69,5 @@ pub use error::{Result, WingbeatError};
 const _: () = assert!(
     option_env!("CARGO_PRIMARY_PACKAGE").is_none(),
     "wingbeat for wasm32 needs its JS API: build with `--no-default-features --features web,render` \
-     (wasm-pack: `wasm-pack build --target web -- --no-default-features --features web,render`; see README)"
+     (wasm-pack: `wasm-pack build --target web -- --no-default-features --features web,render`; see docs/embedding.md, section 3)"
 );
