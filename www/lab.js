@@ -804,7 +804,7 @@ export class WingLab extends HTMLElement {
     const patch = { fe };
     if (Number(s.mode) > fe.modes.length) patch.mode = '1';
     // A chosen strain point that is not on the new wing falls back to the wing's own point.
-    if (s.strain_point && this.engine.has('modalStrainAt')) {
+    if (s.strain_point) {
       try {
         this.engine.modalStrainAt(s.strain_point);
       } catch {

@@ -1,17 +1,18 @@
 // @ts-check
 // Web Worker for the lab's expensive studies, so sliders never freeze: parameter sweeps
 // (Fig. 6), the initial-condition map (Fig. 7), long damped runs (Fig. 8), the resonance map
-// (Floquet numbers over flap frequency and α0), the paper report, the FE wing (`fe`) and the
-// sensing analysis (`sense`).
-// Protocol: in { id, kind, cfg, opts }; out { id, progress: [done, total] } | { id, result, ms }
-// | { id, error }, and once { ready: true } when the wasm has loaded (a first message
-// { wasmModule } hands over the page's compiled module). Typed arrays are
-// transferred, not copied. The lab runs two of these workers: one for the studies (and `fe`),
-// one for the live `analyze` of the sliders (www/engine.js requestLive), so neither waits for
-// the other.
+// (Floquet numbers over flap frequency and α0), the paper report, the FE wing (`fe`), the
+// sensing analysis (`sense`) and the live analysis of the sliders (`analyze`).
+// Its messages are built and read by www/engine/protocol.js (the engine uses the same module):
+// a first { wasmModule } hands over the page's compiled module, { ready: true } says the wasm
+// has loaded, then per job { id, kind, ...inputs } in and progress, a result (typed arrays
+// transferred, not copied) or an error out. The lab runs two of these workers: one for the
+// studies (and `fe`), one for the live `analyze` of the sliders (www/engine/requests.js), so
+// neither waits for the other.
 import init, * as wb from './pkg/wingbeat.js';
 import { decimate } from './decimate.js';
 import { errorText } from './format.js';
+import { JOB, readRequest, readyMessage, progressMessage, resultMessage, errorMessage, transferList } from './engine/protocol.js';
 
 /**
  * The wasm, loaded on the first message: the page's own compiled module when the engine sends
@@ -23,19 +24,24 @@ function start(/** @type {WebAssembly.Module | undefined} */ module) {
   if (!ready) {
     ready = init({ module_or_path: module || new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
     // Tells the engine that the wasm is loaded (the live worker is used once it is).
-    ready.then(() => scope.postMessage({ ready: true }), () => {});
+    ready.then(() => scope.postMessage(readyMessage()), () => {});
   }
   return ready;
 }
 
+/**
+ * The jobs by kind (www/engine/protocol.js JOB): each gets the job's message and a progress
+ * callback, and returns the result to post.
+ * @type {Record<string, (job: Record<string, any>, progress: (done: number, total: number) => void) => unknown>}
+ */
 const jobs = {
-  sweep({ cfg, opts }, progress) {
+  [JOB.sweep]({ cfg, opts }, progress) {
     return wb.sweep(cfg, opts, progress);
   },
-  icmap({ cfg, opts }) {
+  [JOB.icmap]({ cfg, opts }) {
     return wb.icMap(cfg, opts);
   },
-  damping({ cfg, opts }, progress) {
+  [JOB.damping]({ cfg, opts }, progress) {
     // Fig. 8: the same case undamped and with ζ = opts.zeta over a longer run.
     const mode = opts.mode;
     const out = { zeta: opts.zeta, duration_s: cfg.duration_s, mode };
@@ -57,32 +63,20 @@ const jobs = {
     });
     return out;
   },
-  resonance({ cfg, opts }, progress) {
+  [JOB.resonance]({ cfg, opts }, progress) {
     // Floquet effective frequency and largest |multiplier| per flap frequency (and α0).
     return wb.resonanceMap(cfg, opts, progress);
   },
-  reproduce() {
+  [JOB.reproduce]() {
     return wb.reproduce();
   },
-  analyze({ cfg, opts, k }) {
+  [JOB.analyze]({ cfg, opts, k }) {
     // The live analysis (engine.requestLive, run in the lab's own live worker so that a study
-    // or the FE wing never delays it): the same wasm `analyze` the main thread would call, with
-    // the angles on sim.t (one anglesAt call for builds whose analyze lacks them).
-    const a = wb.analyze(cfg, opts, k);
-    if (!(a.angles && a.angles.alpha) && typeof wb.anglesAt === 'function') {
-      const flat = wb.anglesAt(cfg, a.sim.t);
-      const n = Math.floor(flat.length / 3);
-      const alpha = new Float64Array(n), beta = new Float64Array(n), gamma = new Float64Array(n);
-      for (let i = 0; i < n; i++) {
-        alpha[i] = flat[3 * i];
-        beta[i] = flat[3 * i + 1];
-        gamma[i] = flat[3 * i + 2];
-      }
-      /** @type {any} */ (a).angles = { alpha, beta, gamma };
-    }
-    return a;
+    // or the FE wing never delays it): the same wasm `analyze` the main thread would call; its
+    // result carries the angles on sim.t.
+    return wb.analyze(cfg, opts, k);
   },
-  fe({ input, opts }, progress) {
+  [JOB.fe]({ input, opts }, progress) {
     // Shell FE modes of the wing (mesh, assembly, shift-invert eigen-solve): about a second for
     // the default wing. `opts` = { json?, strain_point_mm? } (the modes JSON document for
     // export). One wasm call: progress says only that it started; Cancel ends the worker.
@@ -91,43 +85,33 @@ const jobs = {
     progress(1, 1);
     return r;
   },
-  sense({ cfg, fe, body_rate, opts }, progress) {
-    // Sensing body rotation (wasm senseRotation, issue 14): two runs of the FE wing's modes
+  [JOB.sense]({ cfg, fe, body_rate, opts }, progress) {
+    // Sensing body rotation (wasm senseRotation): two runs of the FE wing's modes
     // (with and without the body rate), the detectability map, the greedy sensors and Δε at a
     // point; progress after each stage. `fe` = { nodes, triangles, strain_nodes } of feModes.
     return wb.senseRotation(cfg, fe.nodes, fe.triangles, fe.strain_nodes, body_rate, opts || undefined, progress);
   },
 };
 
-function transferables(v, acc = []) {
-  if (ArrayBuffer.isView(v)) acc.push(v.buffer);
-  else if (Array.isArray(v)) v.forEach((x) => transferables(x, acc));
-  else if (v && typeof v === 'object') Object.values(v).forEach((x) => transferables(x, acc));
-  return acc;
-}
-
-function transferList(v) {
-  return [...new Set(transferables(v))];
-}
-
 /** The worker's global scope (a DedicatedWorkerGlobalScope; tsconfig's lib is the page's DOM). */
 const scope = /** @type {{ postMessage(message: unknown, transfer?: Transferable[]): void, onmessage: ((ev: MessageEvent) => void) | null }} */ (/** @type {unknown} */ (self));
 
 scope.onmessage = async (ev) => {
-  const { id, kind, wasmModule } = ev.data || {};
-  if (wasmModule) {
-    start(wasmModule);
+  const req = readRequest(ev.data);
+  if ('wasmModule' in req) {
+    start(req.wasmModule);
     return;
   }
+  const { id, kind } = req;
   try {
     await start(undefined);
-    const job = jobs[kind];
+    const job = Object.hasOwn(jobs, String(kind)) ? jobs[String(kind)] : null;
     if (!job) throw new Error(`unknown job ${String(kind).slice(0, 40)}`);
     const t0 = performance.now();
-    const result = job(ev.data, (done, total) => scope.postMessage({ id, progress: [done, total] }));
+    const result = job(req.job, (done, total) => scope.postMessage(progressMessage(id, done, total)));
     const ms = performance.now() - t0;
-    scope.postMessage({ id, result, ms }, transferList(result));
+    scope.postMessage(resultMessage(id, result, ms), transferList(result));
   } catch (e) {
-    scope.postMessage({ id, error: errorText(e) });
+    scope.postMessage(errorMessage(id, errorText(e)));
   }
 };

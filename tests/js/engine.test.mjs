@@ -1,13 +1,15 @@
 // The engine (www/engine.js) against a fake wasm module and a fake worker: the only module
 // that talks to wasm; the config comes from wasm applyOverrides (the core interprets every
-// parameter); results carry the angles (one crossing per recompute); worker jobs with progress,
-// errors and cancellation. tests/js/wasm.test.mjs runs the same engine on the real wasm.
+// parameter); results carry the angles of wasm analyze (one crossing per recompute); worker jobs
+// with progress, errors and cancellation. tests/js/wasm.test.mjs runs the same engine on the real
+// wasm; the parts in www/engine/ have their own tests (engine_protocol, engine_requests,
+// engine_cache).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createEngine, splitAngles } from '../../www/engine.js';
 import { defaults } from '../../www/state.js';
 
-function fakeWasm({ withAngles = false } = {}) {
+function fakeWasm() {
   const calls = { analyze: 0, anglesAt: 0, applyOverrides: [] };
   const n = 5;
   const t = Float64Array.from({ length: n }, (_, i) => i / 10000);
@@ -27,9 +29,9 @@ function fakeWasm({ withAngles = false } = {}) {
       calls.analyze++;
       calls.last = { cfg, opts, k };
       const sp = { euler: spec(), centrifugal: spec(), coriolis: spec(), stiffness_force: spec(), total: spec() };
-      const out = { sim: { t, n, sample_rate_hz: 10000, flap_freq_hz: 25, modes: [] }, spectra: [sp], forces: [{ stiffness_force: 1 }], envelope: [] };
-      if (withAngles) out.angles = { alpha: new Float64Array(n), beta: new Float64Array(n), gamma: new Float64Array(n) };
-      return out;
+      // As the real analyze: the angles α, β, γ on sim.t come with the result.
+      const angles = { alpha: t.map((x) => x), beta: t.map((x) => 2 * x), gamma: t.map((x) => 3 * x) };
+      return { sim: { t, n, sample_rate_hz: 10000, flap_freq_hz: 25, modes: [] }, spectra: [sp], forces: [{ stiffness_force: 1 }], envelope: [], angles };
     },
     anglesAt(cfg, times) {
       calls.anglesAt++;
@@ -52,7 +54,7 @@ function fakeWorker() {
   return w;
 }
 
-test('analyze builds the config from the parameters and returns angles from ONE anglesAt call', async () => {
+test('analyze builds the config from the parameters; the angles come with the analysis (no anglesAt call)', async () => {
   const wb = fakeWasm();
   const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
   assert.equal(e.ready, false);
@@ -62,10 +64,8 @@ test('analyze builds the config from the parameters and returns angles from ONE 
   p.gamma0 = 0.1; p.mode = '2'; p.detrend = 'mean';
   const r = e.analyze(p);
   assert.equal(wb.calls.analyze, 1);
-  assert.equal(wb.calls.anglesAt, 0, 'angles are fetched when first read, not during the slider redraw');
-  assert.equal(r.angles.alpha.length, 5);
-  assert.equal(r.angles, r.angles);
-  assert.equal(wb.calls.anglesAt, 1, 'one crossing per recompute');
+  assert.equal(r.angles, r.analysis.angles, 'the analysis’s own angles');
+  assert.equal(wb.calls.anglesAt, 0, 'no second crossing for the angles');
   assert.equal(wb.calls.last.k, 1);
   assert.deepEqual(wb.calls.last.opts, { detrend: 'mean', segment_len: 8192 });
   // The config is the core's: base (the paper case at 10 kHz) plus every numeric parameter by key.
@@ -80,17 +80,27 @@ test('analyze builds the config from the parameters and returns angles from ONE 
   assert.equal(r.angles.beta[2], 2 * r.analysis.sim.t[2]);
   assert.ok(r.compute_ms >= 0);
   assert.ok(r.analysis.spectra[0].stiffness_force);
+  assert.equal(r.analysis.spectra[0].stiffness, undefined, 'no old alias: one name, stiffness_force');
   assert.equal(r.analysis.forces[0].stiffness_force, 1);
 });
 
-test('a wasm build that returns angles is not asked again', async () => {
-  const wb = fakeWasm({ withAngles: true });
+test('anglesAt splits the interleaved wasm output; wingInput goes through wasm wingInput', async () => {
+  const wb = fakeWasm();
+  const seen = [];
+  wb.wingInput = (o, pts) => { seen.push([o, pts]); return { n_modes: o.n_modes, planform_mm: pts }; };
   const e = createEngine({ load: async () => wb, createWorker: fakeWorker });
+  assert.throws(() => e.anglesAt({}, new Float64Array([0.5])), /not loaded/);
+  assert.deepEqual(e.planforms(), [], 'no outlines before load');
   await e.load();
-  const r = e.analyze(defaults());
-  assert.equal(wb.calls.anglesAt, 0);
-  assert.ok(r.angles.gamma instanceof Float64Array);
-  assert.equal(r.analysis.spectra[0].stiffness, undefined, 'no old alias: one name, stiffness_force');
+  const a = e.anglesAt({}, new Float64Array([0.5, 1]));
+  assert.deepEqual([...a.alpha, ...a.beta, ...a.gamma], [0.5, 1, 1, 2, 1.5, 3]);
+  assert.equal(wb.calls.anglesAt, 1);
+  const pts = [[0, -2], [10, -2], [10, 0], [0, 0]];
+  const input = e.wingInput({ ...defaults(), n_modes: 3 }, pts);
+  assert.deepEqual(input, { n_modes: 3, planform_mm: pts });
+  assert.equal(seen[0][0].n_modes, 3, 'the wing parameters by the core’s keys');
+  assert.deepEqual(e.wingInput(defaults(), null), { n_modes: 2, mesh_size_mm: 1 }, 'the default wing without a crossing');
+  assert.equal(seen.length, 1);
 });
 
 test('analyze before load throws; wasm errors pass through with their message', async () => {
@@ -262,7 +272,7 @@ test('custom kinematics replace the sliders’ stroke; a strain point replaces t
 
 test('live requests: coalesced in the live worker; only the newest result reaches the store', async () => {
   const { createStore } = await import('../../www/store.js');
-  const wb = fakeWasm({ withAngles: true });
+  const wb = fakeWasm();
   let lw;
   let made = 0;
   const e = createEngine({ load: async () => wb, createWorker: fakeWorker, createLiveWorker: () => { made++; lw = fakeWorker(); return lw; } });
@@ -324,7 +334,7 @@ test('live requests: coalesced in the live worker; only the newest result reache
 });
 
 test('without workers, live requests compute on the main thread', async () => {
-  const wb = fakeWasm({ withAngles: true });
+  const wb = fakeWasm();
   const e = createEngine({ load: async () => wb, createWorker: fakeWorker, createLiveWorker: () => { throw new Error('no Worker here'); } });
   await e.load();
   const r = await e.requestLive({ ...defaults(), gamma0: 0.25 });
