@@ -18,12 +18,13 @@
 // This file wires the panel's parts (www/wing3d/): panel-dom.js builds the elements,
 // camera.js keeps the renderer's camera and its mirror and binds drag / wheel / keys,
 // frame-loop.js plays, picking.js maps pointer ↔ wing, overlays.js moves the labels, the
-// strain point's ring and the sensors, legend.js draws the colour bar and its words, fields.js
+// strain point's ring and the sensors, canvas.js sizes the canvas, legend.js draws the colour bar and its words, fields.js
 // uploads colours 5 and 6, texts.js words the status lines.
 import { el, rich, isTouch } from '../dom.js';
 import { fmt, errorText } from '../format.js';
 import * as S from '../scene3d.js';
 import { buildPanel, makeCanvas } from '../wing3d/panel-dom.js';
+import { canvasSize, prepareContext } from '../wing3d/canvas.js';
 import { createCameraRig, bindCamera, strokePoses, fitLift, refitKey } from '../wing3d/camera.js';
 import { createFrameLoop, PUSH_MS } from '../wing3d/frame-loop.js';
 import * as P from '../wing3d/picking.js';
@@ -41,36 +42,8 @@ export const title = '3-D wing';
  */
 const RANGE_SAMPLES = 1000;
 
-/**
- * The canvas's backing store: CSS size × devicePixelRatio, the ratio capped at MAX_DPR and the
- * area at MAX_BACKING_PX device pixels (a software rasteriser pays per pixel, every frame).
- */
-export const MAX_DPR = 2;
-export const MAX_BACKING_PX = 2_000_000;
 /** While playing, the status, summary, legend and deflection texts change at most this often (ms). */
 const TEXT_MS = 250;
-
-/**
- * WebGL2 context attributes for the 3-D canvas when the browser offers no WebGPU adapter (wgpu
- * then takes this context as it is): no alpha channel, depth or stencil buffer on the canvas
- * (wgpu draws into its own targets and blits), no MSAA, no preserved drawing buffer (so the
- * browser never has to keep or read back a copy).
- */
-export const WEBGL_ATTRIBUTES = { alpha: false, depth: false, stencil: false, antialias: false, preserveDrawingBuffer: false, powerPreference: 'high-performance' };
-
-/**
- * Without a WebGPU adapter wgpu draws with WebGL2 into the canvas's "webgl2" context; made
- * here first, that context has WEBGL_ATTRIBUTES instead of the defaults (an alpha channel and
- * a depth buffer nobody uses, each paid per pixel per frame by a software rasteriser).
- * @param {HTMLCanvasElement} c
- */
-async function prepareContext(c) {
-  try {
-    const gpu = /** @type {any} */ (navigator).gpu;
-    if (gpu && (await gpu.requestAdapter())) return;
-  } catch { /* no WebGPU: WebGL2 */ }
-  try { c.getContext('webgl2', WEBGL_ATTRIBUTES); } catch { /* wgpu reports it */ }
-}
 
 /** Sets `e`'s text only when it differs (an unchanged text costs no layout or paint). */
 function setText(/** @type {HTMLElement} */ e, /** @type {string} */ t) { if (e.textContent !== t) e.textContent = t; }
@@ -291,10 +264,7 @@ class Wing3dPanel {
   fitCanvas() {
     this.cssW = 0;
     const { canvas, dom } = this;
-    const w = Math.max(160, Math.round(dom.stage.clientWidth || 640));
-    const aspect = w < 520 ? 0.72 : 0.78;
-    const h = Math.max(140, Math.round(Math.min(w * aspect, 520)));
-    const { width: W, height: H } = S.backingSize(w, h, globalThis.devicePixelRatio || 1, MAX_DPR, MAX_BACKING_PX);
+    const { cssH: h, width: W, height: H } = canvasSize(dom.stage.clientWidth, globalThis.devicePixelRatio || 1);
     dom.box.dataset.backing = `${W}x${H}`;
     canvas.style.height = `${h}px`;
     if (canvas.width === W && canvas.height === H) return false;
