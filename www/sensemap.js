@@ -1,8 +1,9 @@
 // @ts-check
-// Pure helpers of the sensing panel (www/views/sensing.js, issue 14): the body-rate slider's
-// logarithmic scale, the detectability map's colour scale (decades below the largest D), the
-// rotation-induced strain at any point from the modal series, and the performance-vs-K rows.
-// No DOM; unit-tested in tests/js/sensemap.test.mjs.
+// Pure helpers of the sensing panel (www/views/sensing.js, rotation sensing): the body-rate
+// slider's logarithmic scale, the detectability map's colour scale (decades below the largest D),
+// the rotation-induced strain at any point from the modal series, the performance-vs-K rows, and
+// the panel's words and data built from a result (spectrum window, summaries, the map published
+// for the 3-D view, the CSV columns). No DOM; unit-tested in tests/js/sensemap.test.mjs.
 import { BODY_RATE } from './state.js';
 
 /** The rate slider moves log10 |ω_b| (rad/s) over [min, max] in steps of `step`. */
@@ -145,4 +146,143 @@ export function clusterMarkers(markers, radius) {
 export function groupLabel(ranks, max = 4) {
   const shown = ranks.slice(0, max).join(',');
   return ranks.length > max ? `${shown} +${ranks.length - max}` : shown;
+}
+
+/** How the panel names a strain component. */
+export const COMP_LABEL = Object.freeze({ eps_x: 'ε_x', eps_y: 'ε_y', gamma_xy: 'γ_xy' });
+
+/**
+ * The rate field's complaint about a typed value, or null when it is a rate the core accepts.
+ * @param {string} text
+ */
+export function rateError(text) {
+  const v = Number(text);
+  if (text.trim() === '' || !Number.isFinite(v) || v < BODY_RATE.min || v > BODY_RATE.max) return `ω_b must be a number in [${BODY_RATE.min}, ${BODY_RATE.max}] rad/s.`;
+  return null;
+}
+
+/**
+ * The FE wing the sensing analysis can use: the store's `fe` when the FE mode set is chosen and
+ * the live result was computed with that wing's modes; else null.
+ * @param {any} s store state
+ */
+export const senseFe = (s) => (s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null);
+
+/**
+ * Largest |v| of a series (0 for an empty one).
+ * @param {ArrayLike<number>} y
+ */
+export function peakAbs(y) {
+  let m = 0;
+  for (let i = 0; i < y.length; i++) m = Math.max(m, Math.abs(y[i]));
+  return m;
+}
+
+/**
+ * The spectrum plot's window: the bins up to min(Nyquist, 10 f_d) and a marker at every multiple
+ * of the flap frequency f_d inside it.
+ * @param {{ flap_freq_hz: number, sample_rate_hz: number }} r
+ * @param {ArrayLike<number>} freq bin frequencies, Hz, ascending
+ */
+export function spectrumWindow(r, freq) {
+  const fd = r.flap_freq_hz;
+  const fmax = Math.min(r.sample_rate_hz / 2, 10 * fd);
+  let n = 0;
+  while (n < freq.length && freq[n] <= fmax) n++;
+  const marks = [];
+  for (let j = 1; j * fd <= fmax; j++) marks.push({ x: j * fd, label: `${j}f_d`, color: '#8a8a8a' });
+  return { fmax, n, marks };
+}
+
+/**
+ * The detection curve's summary at K sensors.
+ * @param {{ pd: ArrayLike<number>, d_prime: ArrayLike<number>, d_prime_all: number, pd_all: number, n_nodes: number, k_for_90_percent?: number | null }} r
+ * @param {number} K
+ * @param {(v: number, digits: number) => string} fmt number formatter
+ */
+export function curveSummary(r, K, fmt) {
+  if (!(r.d_prime_all > 0)) return 'With no body rotation there is nothing to detect: P_d is the false-alarm rate (1 %) at every K.';
+  const k90 = sensorsFor(r.pd);
+  const atK = K ? r.pd[K - 1] : 0;
+  return `With K = ${K} sensors, P_d = ${fmt(atK, 3)} (d′ = ${fmt(r.d_prime[K - 1], 3)}); all ${3 * r.n_nodes} candidates together: d′ = ${fmt(r.d_prime_all, 3)}, P_d = ${fmt(r.pd_all, 3)}. ${k90 ? `P_d ≥ 0.9 from K = ${k90}.` : 'P_d stays below 0.9 up to K = ' + r.pd.length + '.'} ${r.k_for_90_percent ? `90 % of the all-sensor d′ needs K = ${r.k_for_90_percent}.` : ''} A lower rate (or more noise) makes detection harder: try 0.001 rad/s.`;
+}
+
+/**
+ * The legend's words for a map scale (rich text: 10^{n} is a power).
+ * @param {ReturnType<typeof mapScale>} scale
+ * @param {(v: number, digits: number) => string} fmt
+ * @returns {string[]} the scale's sentence, then (for a non-zero map) the note on the sensors
+ */
+export function legendWords(scale, fmt) {
+  if (!(scale.max > 0)) return ['D = 0 everywhere: no rotation, so nothing to detect'];
+  return [
+    scale.mode === 'absolute'
+      ? `detectability D, log scale from 10^{${MAP_LO}} (and below) to 10^{${MAP_HI}} (and above); largest on this wing ${fmt(scale.max, 3)}. D = 1: the rotation’s strain as large as the flapping variation plus noise.`
+      : `detectability D, log scale from ${fmt(10 ** scale.lo, 3)} (and below) to ${fmt(scale.max, 3)}, the largest on this wing (brightest: where rotation shows up best). D = 1: the rotation’s strain as large as the flapping variation plus noise.`,
+    ' The colours rate each point alone, by energy; the numbered sensors are chosen by how well their time series tell a rotation from a slightly different stroke, which favours points whose Δε has a different time course from the flapping strain, not only the brightest ones.',
+  ];
+}
+
+/**
+ * What the sensing panel publishes in the store (`sense_map`) for the 3-D view's colour "rotation
+ * detectability": the map's colour position per node (`field`, 0…1: log10 D on the panel's
+ * colour scale, `mode` relative | absolute, from 10^lo to 10^hi; `max` the largest D), the first
+ * K sensors (`label` their rank as text), the FE wing it was computed for, the body rate (rad/s,
+ * body axes), the run configuration as JSON (`cfg_json`: kinematics and modes of the two runs) and
+ * `show`, a count the button "Show on the 3-D wing" raises.
+ * @typedef {{ fe: import('./engine.js').FeModesResult, n_nodes: number, field: Float64Array,
+ *   mode: 'relative' | 'absolute', lo: number, hi: number, max: number, body_rate: number[], cfg_json: string,
+ *   sensors: { rank: number, node: number, component: string, x_mm: number, y_mm: number, label: string }[],
+ *   show: number }} SenseMap
+ */
+
+/**
+ * The SenseMap of a result on its wing with the first K sensors.
+ * @param {any} fe the FE wing (n_nodes)
+ * @param {{ d_best: ArrayLike<number>, body_rate: ArrayLike<number>, sensors: { rank: number, node: number, component: string, x_mm: number, y_mm: number }[] }} result
+ * @param {ReturnType<typeof mapScale>} scale
+ * @param {number} K
+ * @param {string} cfgJson
+ * @param {number} show
+ * @returns {SenseMap}
+ */
+export function senseMapOf(fe, result, scale, K, cfgJson, show) {
+  const n = fe.n_nodes;
+  const field = new Float64Array(n);
+  for (let i = 0; i < n && i < result.d_best.length; i++) field[i] = scale.t(result.d_best[i]);
+  return {
+    fe,
+    n_nodes: n,
+    field,
+    mode: /** @type {'relative' | 'absolute'} */ (scale.mode),
+    lo: scale.lo,
+    hi: scale.hi,
+    max: scale.max,
+    body_rate: Array.from(result.body_rate),
+    cfg_json: cfgJson,
+    sensors: result.sensors.slice(0, K).map((sn) => ({ rank: sn.rank, node: sn.node, component: sn.component, x_mm: sn.x_mm, y_mm: sn.y_mm, label: String(sn.rank) })),
+    show,
+  };
+}
+
+/**
+ * The sensing map's CSV columns: node position (mm), D per component and the best, and the rank
+ * at which the greedy placement first chose the node (0 = not chosen).
+ * @param {{ nodes: ArrayLike<number> }} fe
+ * @param {{ n_nodes: number, d: ArrayLike<number>, d_best: ArrayLike<number>, sensors: { node: number, rank: number }[] }} result
+ */
+export function senseCsvColumns(fe, result) {
+  const n = result.n_nodes;
+  const col = (c) => Float64Array.from({ length: n }, (_, i) => result.d[3 * i + c]);
+  const rank = new Float64Array(n);
+  result.sensors.forEach((sn) => { if (!rank[sn.node]) rank[sn.node] = sn.rank; });
+  return [
+    { name: 'x', unit: 'mm', values: Float64Array.from({ length: n }, (_, i) => fe.nodes[3 * i] * 1e3) },
+    { name: 'y', unit: 'mm', values: Float64Array.from({ length: n }, (_, i) => fe.nodes[3 * i + 1] * 1e3) },
+    { name: 'D_eps_x', unit: '-', values: col(0) },
+    { name: 'D_eps_y', unit: '-', values: col(1) },
+    { name: 'D_gamma_xy', unit: '-', values: col(2) },
+    { name: 'D_best', unit: '-', values: result.d_best },
+    { name: 'sensor_rank', unit: '0 = not chosen', values: rank },
+  ];
 }

@@ -1,4 +1,4 @@
-// The sensing panel (www/views/sensing.js, issue 14) end to end: it opens from a URL with the
+// The sensing panel (www/views/sensing.js: rotation sensing) end to end: it opens from a URL with the
 // body rate in it; a different rate gives different numbers (D ∝ ω_b² for small rates) and a
 // different picture on the map canvas; a zero rate gives a Δε that is exactly zero in the wasm
 // result; the point is picked with the keyboard alone; axe finds nothing in the panel; the

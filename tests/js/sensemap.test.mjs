@@ -2,7 +2,11 @@
 // parameters (www/state.js BODY_RATE, BODY_AXIS). Run: node --test tests/js/sensemap.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor, clusterMarkers, groupLabel } from '../../www/sensemap.js';
+import {
+  RATE_SLIDER, MAP_LO, MAP_HI, REL_DECADES, sliderOfRate, rateOfSlider, mapScale, deltaAt, curveData, sensorsFor, clusterMarkers, groupLabel,
+  rateError, senseFe, peakAbs, spectrumWindow, curveSummary, legendWords, senseMapOf, senseCsvColumns,
+} from '../../www/sensemap.js';
+import { fmt } from '../../www/format.js';
 import { BODY_RATE, BODY_AXIS, bodyRateVector, parseQuery, toQuery, defaults, paramsOf, PANELS, expectation } from '../../www/state.js';
 
 test('rate slider: log10 |ω_b| both ways, sign kept, zero at the left end, range kept', () => {
@@ -114,4 +118,99 @@ test('markers closer than the radius share a label; every rank appears once', ()
   assert.equal(groupLabel([1, 2, 4]), '1,2,4');
   assert.equal(groupLabel([1, 2, 3, 4, 5, 6]), '1,2,3,4 +2');
   assert.equal(groupLabel([7]), '7');
+});
+
+test('rate field: empty, non-numeric and out-of-range text is refused with the range; in-range rates pass', () => {
+  for (const t of ['', '  ', 'abc', 'NaN', String(BODY_RATE.max * 2), String(BODY_RATE.min * 2)]) {
+    const e = rateError(t);
+    assert.ok(e && e.includes(`[${BODY_RATE.min}, ${BODY_RATE.max}]`), `${JSON.stringify(t)} → ${e}`);
+  }
+  for (const t of ['0', '0.05', '-3', String(BODY_RATE.max), String(BODY_RATE.min)]) assert.equal(rateError(t), null, t);
+});
+
+test('the FE wing for sensing: only with the FE mode set and a live result of that wing’s mode count', () => {
+  const fe = { n_modes: 3 };
+  const result = (n) => ({ analysis: { sim: { modes: new Array(n).fill({}) } } });
+  assert.equal(senseFe({ modes: 'fe', fe, result: result(3) }), fe);
+  assert.equal(senseFe({ modes: 'fe', fe, result: result(2) }), null, 'a result of the previous wing');
+  assert.equal(senseFe({ modes: 'paper', fe, result: result(3) }), null);
+  assert.equal(senseFe({ modes: 'fe', fe: null, result: result(3) }), null);
+  assert.equal(senseFe({ modes: 'fe', fe, result: null }), null);
+});
+
+test('peak |v| of a series, 0 when empty', () => {
+  assert.equal(peakAbs([]), 0);
+  assert.equal(peakAbs([1, -3, 2]), 3);
+  assert.equal(peakAbs(new Float64Array([-1e-9, 5e-10])), 1e-9);
+});
+
+test('spectrum window: bins up to min(Nyquist, 10 f_d), a marker at every multiple of f_d inside it', () => {
+  const freq = Array.from({ length: 600 }, (_, i) => i);
+  const a = spectrumWindow({ flap_freq_hz: 25, sample_rate_hz: 10000 }, freq);
+  assert.equal(a.fmax, 250);
+  assert.equal(a.n, 251);
+  assert.deepEqual(a.marks.map((m) => m.x), [25, 50, 75, 100, 125, 150, 175, 200, 225, 250]);
+  assert.equal(a.marks[2].label, '3f_d');
+  const b = spectrumWindow({ flap_freq_hz: 25, sample_rate_hz: 120 }, freq);
+  assert.equal(b.fmax, 60);
+  assert.equal(b.n, 61);
+  assert.deepEqual(b.marks.map((m) => m.x), [25, 50]);
+});
+
+test('detection summary: P_d and d′ at K, the K for P_d ≥ 0.9, or why there is nothing to detect', () => {
+  const r = { pd: [0.2, 0.6, 0.95, 0.99], d_prime: [1, 2, 3, 4], d_prime_all: 5, pd_all: 0.999, n_nodes: 10, k_for_90_percent: 4 };
+  const t = curveSummary(r, 2, fmt);
+  assert.match(t, /With K = 2 sensors, P_d = 0\.6 \(d′ = 2\)/);
+  assert.match(t, /all 30 candidates together/);
+  assert.match(t, /P_d ≥ 0\.9 from K = 3\./);
+  assert.match(t, /90 % of the all-sensor d′ needs K = 4\./);
+  assert.match(curveSummary({ ...r, pd: [0.1, 0.2] }, 1, fmt), /P_d stays below 0\.9 up to K = 2\./);
+  assert.match(curveSummary({ ...r, d_prime_all: 0 }, 2, fmt), /nothing to detect/);
+});
+
+test('legend words follow the scale: zero map, absolute range, relative range from the largest D', () => {
+  assert.deepEqual(legendWords(mapScale([0, 0]), fmt), ['D = 0 everywhere: no rotation, so nothing to detect']);
+  const abs = legendWords(mapScale([0.5], 'absolute'), fmt);
+  assert.equal(abs.length, 2);
+  assert.ok(abs[0].includes(`10^{${MAP_LO}}`) && abs[0].includes(`10^{${MAP_HI}}`) && abs[0].includes('0.5'));
+  const rel = legendWords(mapScale([2, 0.5]), fmt);
+  assert.ok(rel[0].startsWith(`detectability D, log scale from ${fmt(2 / 10 ** REL_DECADES, 3)} (and below) to 2,`), rel[0]);
+});
+
+test('the published map: colour position per node from the scale, the first K sensors labelled by rank', () => {
+  const fe = { n_nodes: 3 };
+  const result = {
+    d_best: [1e-3, 1e-2, 1e-1],
+    body_rate: new Float64Array([0, 0, 0.5]),
+    sensors: [
+      { rank: 1, node: 2, component: 'eps_x', x_mm: 10, y_mm: -2, d: 0.1 },
+      { rank: 2, node: 1, component: 'eps_y', x_mm: 5, y_mm: -1, d: 0.01 },
+    ],
+  };
+  const scale = mapScale(result.d_best, 'relative');
+  const m = senseMapOf(fe, result, scale, 1, '{"c":1}', 4);
+  assert.deepEqual(Array.from(m.field), result.d_best.map((v) => scale.t(v)));
+  assert.equal(m.field[2], 1);
+  assert.equal(m.field[0], 0);
+  assert.deepEqual(m.body_rate, [0, 0, 0.5]);
+  assert.equal(m.sensors.length, 1);
+  assert.deepEqual(m.sensors[0], { rank: 1, node: 2, component: 'eps_x', x_mm: 10, y_mm: -2, label: '1' });
+  assert.equal(m.mode, 'relative');
+  assert.equal(m.cfg_json, '{"c":1}');
+  assert.equal(m.show, 4);
+  assert.equal(m.fe, fe);
+});
+
+test('sensing CSV columns: node position in mm, D per component de-interleaved, first rank per node', () => {
+  const fe = { nodes: [0.001, -0.002, 0, 0.003, 0.004, 0] };
+  const result = { n_nodes: 2, d: [1, 2, 3, 4, 5, 6], d_best: [3, 6], sensors: [{ node: 1, rank: 1 }, { node: 1, rank: 3 }, { node: 0, rank: 2 }] };
+  const cols = senseCsvColumns(fe, result);
+  const by = Object.fromEntries(cols.map((c) => [c.name, Array.from(c.values)]));
+  assert.deepEqual(cols.map((c) => c.name), ['x', 'y', 'D_eps_x', 'D_eps_y', 'D_gamma_xy', 'D_best', 'sensor_rank']);
+  assert.deepEqual(by.x, [1, 3]);
+  assert.deepEqual(by.y, [-2, 4]);
+  assert.deepEqual(by.D_eps_x, [1, 4]);
+  assert.deepEqual(by.D_eps_y, [2, 5]);
+  assert.deepEqual(by.D_gamma_xy, [3, 6]);
+  assert.deepEqual(by.sensor_rank, [2, 1]);
 });
