@@ -7,28 +7,26 @@
 //   <script type="module" src="lab.js"></script>
 //   <wing-lab gamma0="0.1" flap_hz="25" panels="controls,numbers,spectrum"></wing-lab>
 //
-// Module map (model / view split in the manner of PhET sims; each module has one job):
+// Module map (model / view split in the manner of PhET sims; each module has one job; the
+// table in ARCHITECTURE.md, "The lab", says more):
 //   state.js     pure: parameters, URL/attribute parsing and validation, overridesOf (the
 //                SimConfig itself is the core's: engine.config → wasm applyOverrides)
 //   store.js     observable state: get / set(patch) / subscribe(keys, fn); keys = the URL
 //                parameters + result (latest analysis, with angles), fe, t3d (3-D instant),
 //                playing, timing, status
-//   engine.js    the ONLY module that talks to wasm and to the worker (worker.js): analyze,
-//                FE wing, studies, cancel
-//   decimate.js  the one min/max decimation (plots and worker)
-//   format.js    numbers, units and rich-label markup (f_d, kg^½·m → sub/superscripts)
-//   dom.js       el(), rich(), the shadow root's stylesheets, activeIn(), touch detection
-//   layout.js    the grid from the element's own width and the panels shown (pure)
-//   screens.js   the screens: which panels each shows, which one an experiment opens (pure)
-//   plot.js      uPlot wrapper: HTML axis titles, keyboard legend toggles, markers, a11y summary
-//   export.js    CSV, PNG (2×) and SVG figures from one drawing routine
-//   beat.js      the beat period, the three-beat window, the force shares (pure)
-//   scene3d.js   camera mirror, stroke fit, run-wide strain range and deflection (pure)
+//   engine.js    the ONLY module that talks to wasm and to the workers (worker.js); its parts
+//                are in engine/ (wasm loading, worker protocol, live requests, jobs, caches)
+//   decimate.js, format.js, dom.js, layout.js, screens.js, plot.js, export.js, beat.js,
+//   scene3d.js   helpers: decimation, formatting, DOM, the grid, the screens, uPlot, figures,
+//                the beat, the 3-D camera
 //   views/<panel>.js  one per panel; `export const title` and `mount(ctx)` → { destroy() }.
 //                Views read the store and call ctx.* only; they never import engine.js.
-//   lab.js       this element: parses attributes/URL, creates store + engine, lays out the
-//                panels (order in LAYOUT below), mounts the views, recomputes on parameter
-//                changes, keeps the URL in sync, exports.
+//   lab.js       this element: creates store + engine, lays out the panels (order in LAYOUT
+//                below), mounts the views, recomputes on parameter changes. Its parts are in
+//                lab/: url.js (first state from attributes and URL, URL writes, share fragment),
+//                draws.js (a new result's redraws, one panel per task), nav.js (the screen
+//                tabs), exports.js (export buttons and downloads), types.js (LabState,
+//                ViewContext, …).
 // Adding a panel (e.g. views/experiments.js, views/resonance.js): add its name to PANELS in
 // state.js, import it into VIEWS below, put it in LAYOUT (visual order = tab order), and give
 // it a place in layout.js's TEMPLATES (the grid is computed there from the panels shown).
@@ -37,7 +35,7 @@
 // toCSV, emit(type, detail), notice(text), setParams(patch), showPanel(name) }.
 // Screens (www/screens.js, the one table of screen → panels): a tablist above the grid opens one
 // screen at a time (`screen` attribute / URL parameter, lab.screen, iframe set({screen})); the
-// panels of other screens are hidden and skip their redraws until shown (viewStore).
+// panels of other screens are hidden and skip their redraws until shown (lab/draws.js).
 //
 // Attributes: every URL parameter of www/state.js (alpha0, beta0, gamma0, flap_hz, zeta,
 // alpha_phase, beta_phase, gamma_phase, duration, modes, mode, detrend, panels), plus
@@ -47,20 +45,23 @@
 // Several labs on one page are independent: each has its own store, engine and worker; they
 // share the (stateless) wasm module. Assets resolve relative to this file, also when it is
 // loaded from another origin (the lab's host must then send CORS headers; the worker starts
-// from a same-origin Blob that imports worker.js, see engine.js).
+// from a same-origin Blob that imports worker.js, see engine/wasm.js).
 // Test hooks: data-renders, data-layout (on the host), events wl-ready / wl-rendered / wl-study
 // (bubbling and composed), and the properties state, analysis, plots, studies, wing3d,
-// timeCursor, fe, config(), modeIndex(); inside: lab.shadowRoot.
-import { NUMERIC, ENUMS, WING, parsePairs, parseQuery, toQuery, defaults, paramsOf, describe } from './state.js';
-import { shareLink, decodeShare, fragmentValue, checkPoints } from './share.js';
+// timeCursor, fe, config(), modeIndex(), views, lastExport, lastTiming; inside: lab.shadowRoot.
+import { NUMERIC, ENUMS, WING, parsePairs, defaults, paramsOf, describe } from './state.js';
 import { experimentPatch } from './experiments.js';
 import { createStore } from './store.js';
 import { createEngine } from './engine.js';
 import { el, shadowStyles } from './dom.js';
 import { layoutMode, gridLayout, areasCss } from './layout.js';
-import { SCREENS, EXPERIMENT_SCREEN, resolveScreen, screenOfPanel } from './screens.js';
+import { EXPERIMENT_SCREEN, SCREENS, resolveScreen, screenOfPanel } from './screens.js';
 import { plain, errorText } from './format.js';
-import { toCSV, download, figurePNG, figureSVG, tablePNG, drawFigure, canvasPainter, context2d } from './export.js';
+import { toCSV } from './export.js';
+import { initialState, createUrlSync, WING_KEYS, LIVE_ATTRS } from './lab/url.js';
+import { createDraws } from './lab/draws.js';
+import { createNav } from './lab/nav.js';
+import { exportPanel, exportButtons } from './lab/exports.js';
 import * as controls from './views/controls.js';
 import * as numbers from './views/numbers.js';
 import * as time from './views/time.js';
@@ -78,72 +79,18 @@ import * as sensing from './views/sensing.js';
 
 export { loadWasm } from './engine.js';
 
-/**
- * The store's state: the URL parameters plus what the engine and the views derive.
- * @typedef {import('./state.js').Params & {
- *   result: import('./engine.js').LiveResult | null,
- *   fe: import('./engine.js').FeModesResult | null,
- *   t3d: number | null,
- *   playing: boolean,
- *   timing: { compute: number, draw: number, end: number } | null,
- *   status: string | null,
- *   wing: WingState | null,
- *   kin: KinState | null,
- *   strain_point: [number, number] | null,
- *   strain_map: { component: 'eps_x' | 'eps_y' | 'gamma_xy' | 'von_mises', stat: 'rms' | 'peak' } | null,
- *   sense_map?: import('./views/sensing.js').SenseMap | null,
- * }} LabState
- */
-/**
- * The wing in use when it is not the lab's default FE wing: the FemInput it was computed from
- * (null for imported modes), where it came from, and its outline (mm) for the editor and the
- * share fragment. `null` = the default wing (the paper table or the default FE wing).
- * @typedef {{ input: import('./pkg/wingbeat.js').FemInput | null, source: 'builtin' | 'file' | 'edited' | 'url' | 'import' | 'share', label: string, outline: string, points: [number, number][] | null }} WingState
- */
-/**
- * Custom kinematics (null = the sliders' Fourier kinematics): the core's Kinematics, where they
- * came from, and for a measured table its samples (rad, one period) and the CSV text.
- * @typedef {{ kinematics: import('./pkg/wingbeat.js').Kinematics, source: 'csv' | 'edited' | 'share', label: string,
- *   samples?: { t: Float64Array | number[], alpha: Float64Array | number[], beta: Float64Array | number[], gamma: Float64Array | number[] } | null,
- *   csv?: { text: string, units: 'deg' | 'rad', flap_hz: number } | null }} KinState
- */
-/** @typedef {ReturnType<typeof import('./plot.js').linePlot>} Plot */
-/**
- * What a panel registers for export (each optional; `null` when there is nothing to export yet).
- * @typedef {{ csv?: () => string | null, figure?: () => any, table?: () => any, canvas?: () => HTMLCanvasElement | null }} ExportReg
- */
-/**
- * What a view gets from the element (see the module map above).
- * @typedef {{
- *   store: import('./store.js').Store<LabState>,
- *   engine: ReturnType<typeof createEngine>,
- *   section: HTMLElement,
- *   uid: string,
- *   id: (s: string) => string,
- *   toCSV: typeof toCSV,
- *   registerPlot: (name: string, plot: Plot) => void,
- *   registerExport: (name: string, reg: ExportReg) => void,
- *   exportButtons: (name: string, label: string, kinds?: string[]) => HTMLElement,
- *   emit: (type: string, detail?: unknown) => void,
- *   notice: (text: string) => void,
- *   setParams: (patch: Partial<LabState>) => void,
- *   showPanel: (name: string) => void,
- * }} ViewContext
- */
-/** A mounted view: destroy() always; some views add hooks (startWhenVisible, setLayout, studies …). */
-/** @typedef {{ destroy(): void, [hook: string]: any }} View */
+/** @typedef {import('./lab/types.js').LabState} LabState */
+/** @typedef {import('./lab/types.js').WingState} WingState */
+/** @typedef {import('./lab/types.js').KinState} KinState */
+/** @typedef {import('./lab/types.js').Plot} Plot */
+/** @typedef {import('./lab/types.js').ExportReg} ExportReg */
+/** @typedef {import('./lab/types.js').ViewContext} ViewContext */
+/** @typedef {import('./lab/types.js').View} View */
 
 const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance, wing, kinematics, modeshape, sensing };
 /** DOM (= tab) order of the panels; layout.js places them so that it is also the visual order. */
 export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'sensing', 'studies', 'resonance', 'report'];
 const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'planform'];
-/** The keys that decide which wing is wanted. */
-const WING_KEYS = [...WING.map((w) => w.key), 'outline', 'planform', 'wing'];
-const FIG_W = 900, FIG_H = 560;
-/** Attributes that are not lab parameters. */
-const NOT_PARAMS = ['id', 'class', 'style', 'sync-url', 'embed', 'layout', 'hidden', 'title', 'lang', 'dir', 'slot', 'part', 'tabindex', 'nonce', 'role', 'inert', 'translate', 'is'];
-/** Parameter attributes that apply live when changed after connection (planform= needs a fetch: not live). */
-const LIVE_ATTRS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'panels', 'exp', 'screen'];
 const EVENT = { bubbles: true, composed: true };
 let instances = 0;
 /** Labs built so far on this page: the second one on is "lab 2", … in its sections' names. */
@@ -155,6 +102,12 @@ export class WingLab extends HTMLElement {
   store;
   /** @type {ReturnType<typeof createEngine>} */
   engine;
+  /** @type {ReturnType<typeof createDraws>} */
+  draws;
+  /** @type {ReturnType<typeof createUrlSync>} */
+  url;
+  /** @type {ReturnType<typeof createNav>} */
+  nav;
   /** @type {HTMLElement} */
   root;
   /** @type {HTMLElement} */
@@ -165,12 +118,6 @@ export class WingLab extends HTMLElement {
   panels;
   /** @type {HTMLElement | null} the panels' grid (its template is set by applyLayout) */
   grid = null;
-  /** @type {HTMLElement} the screen nav (a tablist, see buildNav) */
-  nav;
-  /** @type {HTMLElement} the line that says what the screen shown is for */
-  aboutEl;
-  /** @type {Record<string, HTMLButtonElement>} the nav's tabs by screen id */
-  tabs = {};
   /** the grid's current columns and areas (CSS text) */
   gridCols = '';
   gridAreas = '';
@@ -197,29 +144,17 @@ export class WingLab extends HTMLElement {
     this.ro = null;
     /** @type {{ compute: number, draw: number, end: number } | null} */
     this.lastTiming = null;
-    /** Whether a new result's panel redraws are being run (one task each, see drainDraws). */
-    this.drawing = false;
-    /** @type {{ name: string, fn: Function }[]} */
-    this.drawQueue = [];
-    /** @type {{ name: string, fn: Function }[]} redraws skipped by hidden panels (flushStale) */
-    this.stale = [];
+    /** @type {import('./lab/exports.js').ExportDone | undefined} the last export (a test hook) */
+    this.lastExport = undefined;
     /** @type {string | undefined} the screen shown (applyPanels) */
     this.shownScreen = undefined;
     /** @type {string[] | null} its panels */
     this.shownPanels = null;
-    /** @type {MessageChannel | null} */
-    this.drawPort = null;
-    /** bumped when the element is removed: a redraw sequence of the old build stops */
-    this.drawGen = 0;
-    /** @type {{ r: import('./engine.js').LiveResult, t1: number } | null} the result being drawn */
-    this.pendingRender = null;
     /** Work that must finish before the first computation (planform= file, #s= fragment). */
     this.pending = 0;
     /** Why the wanted wing cannot be built ('' = it can). */
     this.wingError = '';
     this.feRunning = false;
-    /** @type {ReturnType<typeof setTimeout> | undefined} */
-    this.fragTimer = undefined;
   }
 
   // ---------- test and embedding hooks ----------
@@ -237,59 +172,23 @@ export class WingLab extends HTMLElement {
     if (this.built) return;
     this.built = true;
     if (!this.ordinal) this.ordinal = ++labsBuilt;
-    const ignore = NOT_PARAMS;
-    const attrs = [...this.attributes].filter((a) => !a.name.startsWith('aria-') && !a.name.startsWith('data-')).map((a) => [a.name, a.value]);
-    const fromAttrs = parsePairs(attrs, ignore);
-    const params = fromAttrs.state;
-    const rejected = [...fromAttrs.rejected];
-    if (this.hasAttribute('sync-url')) {
-      const q = parseQuery(location.search);
-      for (const [k] of new URLSearchParams(location.search)) {
-        if (k === 'embed') continue;
-        if (!q.rejected.some((r) => r.key === k) && k in q.state) params[k] = q.state[k];
-      }
-      rejected.push(...q.rejected.filter((r) => r.key !== 'embed'));
-    }
-    // A wing parameter, outline or planform file given without a mode set means the FE wing.
-    const given = new Set([...attrs.map((a) => a[0]), ...(this.hasAttribute('sync-url') ? [...new URLSearchParams(location.search).keys()] : [])]);
-    // A guided experiment (exp= attribute or URL) brings its parameters, as its chip does; values
-    // given with it (and accepted) win.
-    if (params.exp) Object.assign(params, experimentPatch(params.exp, [...given].filter((k) => !rejected.some((r) => r.key === k))));
-    if (!given.has('modes') && WING_KEYS.some((k) => given.has(k) && !rejected.some((r) => r.key === k))) params.modes = 'fe';
-    const nModes = params.modes === 'fe' ? params.n_modes : 2;
-    if (Number(params.mode) > nModes) {
-      rejected.push({ key: 'mode', why: `expected 1 to ${nModes} (the modes of the ${params.modes === 'fe' ? 'FE wing' : 'paper table'})` });
-      params.mode = '1';
-    }
-    // A guided experiment opens the screen that shows what it talks about (screen= wins).
-    if (params.exp && !params.screen) params.screen = EXPERIMENT_SCREEN[params.exp] || '';
+    const syncUrl = this.hasAttribute('sync-url');
+    const attrs = /** @type {[string, string][]} */ ([...this.attributes].filter((a) => !a.name.startsWith('aria-') && !a.name.startsWith('data-')).map((a) => [a.name, a.value]));
+    const { params, rejected } = initialState({ attrs, search: syncUrl ? location.search : null });
     this.store = createStore({ ...params, screen: params.screen || '', result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
     this.engine = createEngine();
+    this.draws = createDraws({
+      store: this.store,
+      section: (name) => this.panels[name],
+      live: () => !!this.built,
+      rendered: (r, t1) => this.finishRender(r, t1),
+    });
+    this.url = createUrlSync({ store: this.store, engine: this.engine, notice: (t) => this.notice(t), params: () => this.state });
     this.build();
     if (rejected.length) {
       this.notice(`Ignored ${rejected.length} invalid parameter(s), using defaults instead: ` + rejected.map((r) => `${r.key} (${r.why})`).join('; '));
     }
-    this.unsub.push(
-      this.store.subscribe(PARAM_KEYS, () => {
-        this.schedule();
-        if (this.hasAttribute('sync-url')) this.scheduleUrl();
-      }),
-      this.store.subscribe(['panels', 'screen'], () => this.applyPanels()),
-      this.store.subscribe(['exp', 'screen'], (st, changed) => {
-        // Choosing an experiment (chip, attribute, message) opens its screen.
-        if (st.exp && changed.includes('exp') && !changed.includes('screen') && EXPERIMENT_SCREEN[st.exp]) this.store.set({ screen: EXPERIMENT_SCREEN[st.exp] });
-        if (this.hasAttribute('sync-url')) this.scheduleUrl();
-      }),
-      this.store.subscribe(['body_rate', 'body_axis'], () => { if (this.hasAttribute('sync-url')) this.scheduleUrl(); }),
-      this.store.subscribe(WING_KEYS, () => { this.wantWing(); this.schedule(); }),
-      this.store.subscribe(['modes', 'mode'], (st) => {
-        const n = st.modes === 'fe' ? (st.fe ? st.fe.modes.length : 8) : 2;
-        if (Number(st.mode) > n) this.store.set({ mode: '1' });
-      }),
-      this.store.subscribe(['kin'], (st) => { this.engine.setKinematics(st.kin ? st.kin.kinematics : null); this.schedule(); }),
-      this.store.subscribe(['strain_point'], (st) => { this.engine.setStrainPoint(st.strain_point); this.schedule(); }),
-      this.store.subscribe(['wing', 'kin', 'strain_point'], () => { if (this.hasAttribute('sync-url')) this.scheduleFragment(); }),
-    );
+    this.subscribe();
     this.engine
       .load()
       .then(() => this.restoreShared())
@@ -308,15 +207,37 @@ export class WingLab extends HTMLElement {
       .catch((e) => this.error(`Could not load the wasm module: ${errorText(e)}`));
   }
 
+  /** What follows a change of the store: recomputes, the wing wanted, the screen, URL writes. */
+  subscribe() {
+    const syncUrl = () => this.hasAttribute('sync-url');
+    this.unsub.push(
+      this.store.subscribe(PARAM_KEYS, () => {
+        this.schedule();
+        if (syncUrl()) this.url.scheduleQuery();
+      }),
+      this.store.subscribe(['panels', 'screen'], () => this.applyPanels()),
+      this.store.subscribe(['exp', 'screen'], (st, changed) => {
+        // Choosing an experiment (chip, attribute, message) opens its screen.
+        if (st.exp && changed.includes('exp') && !changed.includes('screen') && EXPERIMENT_SCREEN[st.exp]) this.store.set({ screen: EXPERIMENT_SCREEN[st.exp] });
+        if (syncUrl()) this.url.scheduleQuery();
+      }),
+      this.store.subscribe(['body_rate', 'body_axis'], () => { if (syncUrl()) this.url.scheduleQuery(); }),
+      this.store.subscribe(WING_KEYS, () => { this.wantWing(); this.schedule(); }),
+      this.store.subscribe(['modes', 'mode'], (st) => {
+        const n = st.modes === 'fe' ? (st.fe ? st.fe.modes.length : 8) : 2;
+        if (Number(st.mode) > n) this.store.set({ mode: '1' });
+      }),
+      this.store.subscribe(['kin'], (st) => { this.engine.setKinematics(st.kin ? st.kin.kinematics : null); this.schedule(); }),
+      this.store.subscribe(['strain_point'], (st) => { this.engine.setStrainPoint(st.strain_point); this.schedule(); }),
+      this.store.subscribe(['wing', 'kin', 'strain_point'], () => { if (syncUrl()) this.url.scheduleFragment(); }),
+    );
+  }
+
   disconnectedCallback() {
     this.raf = 0;
-    this.drawing = false;
-    this.drawQueue = [];
-    this.stale = [];
+    this.draws.reset();
     this.shownScreen = undefined;
     this.shownPanels = null;
-    this.pendingRender = null;
-    this.drawGen++;
     for (const v of Object.values(this.views)) if (v && v.destroy) v.destroy();
     this.unsub.forEach((f) => f());
     if (this.ro) this.ro.disconnect();
@@ -361,10 +282,10 @@ export class WingLab extends HTMLElement {
     this.noticeEl = el('p', { class: 'wl-notice', role: 'status', hidden: true });
     this.errorEl = el('p', { class: 'wl-error', role: 'alert', hidden: true });
     const grid = el('div', { class: 'wl-grid', id: id('screen'), role: 'tabpanel' });
-    this.nav = this.buildNav(id);
-    this.aboutEl = el('p', { class: 'wl-screen-about', id: id('screen-about') });
-    this.root.append(this.noticeEl, this.errorEl, this.nav, this.aboutEl, grid);
+    this.nav = createNav({ id, labName: this.labName(), open: (screen) => this.showScreen(screen) });
+    this.root.append(this.noticeEl, this.errorEl, this.nav.list, this.nav.about, grid);
     this.panels = {};
+    /** @type {Omit<ViewContext, 'section'>} */
     const ctx0 = {
       store: this.store,
       engine: this.engine,
@@ -390,7 +311,7 @@ export class WingLab extends HTMLElement {
       sec.append(head);
       this.panels[name] = sec;
       grid.append(sec);
-      this.views[name] = view.mount({ ...ctx0, store: this.viewStore(name), section: sec });
+      this.views[name] = view.mount({ ...ctx0, store: this.draws.viewStore(name), section: sec });
       const reg = this.exportsReg[name];
       if (reg) head.append(this.exportButtons(name, view.title, reg.figure ? ['csv', 'png', 'svg'] : ['csv', 'png']));
     }
@@ -444,34 +365,21 @@ export class WingLab extends HTMLElement {
     }
   }
 
-  exportButtons(name, label, kinds = ['csv', 'png']) {
-    // On a focused screen the kinds fold behind one "Export…" button (style.css); the full page
-    // shows them all, as before.
-    const box = el('span', { class: 'wl-export' });
-    const toggle = el('button', { type: 'button', class: 'wl-export-toggle', 'aria-expanded': 'false', 'aria-label': `Export ${plain(label)}…`, text: 'Export…' });
-    toggle.addEventListener('click', () => {
-      const open = toggle.getAttribute('aria-expanded') !== 'true';
-      toggle.setAttribute('aria-expanded', String(open));
-      box.classList.toggle('wl-open', open);
-    });
-    box.append(toggle);
-    for (const kind of kinds) {
-      box.append(el('button', {
-        type: 'button',
-        text: kind.toUpperCase(),
-        'data-export': kind,
-        'data-target': name,
-        'aria-label': `Export ${plain(label)} as ${kind.toUpperCase()}`,
-        onclick: () => this.export(name, kind, label),
-      }));
-    }
-    return box;
+  /** A panel's export buttons (lab/exports.js). */
+  exportButtons(/** @type {string} */ name, /** @type {string} */ label, kinds = ['csv', 'png']) {
+    return exportButtons(name, label, kinds, (n, kind, l) => this.export(n, kind, l));
+  }
+
+  /** Downloads panel `name`'s export of `kind` (csv | png | svg); a notice when there is nothing yet. */
+  async export(/** @type {string} */ name, /** @type {string} */ kind, label = name) {
+    const done = await exportPanel(this.exportsReg[name], name, kind, label, { notice: (t) => this.notice(t), describe: () => describe(this.store.get()) });
+    if (done) this.lastExport = done;
   }
 
   /**
    * Shows the panels of the screen in use (www/screens.js: the wanted screen and the author's
    * `panels=` choice), selects its tab, and redraws the panels that come into view with what
-   * they skipped while hidden (hidden panels do not redraw, see viewStore).
+   * they skipped while hidden (hidden panels do not redraw, see lab/draws.js).
    */
   applyPanels() {
     const st = this.store.get();
@@ -485,76 +393,20 @@ export class WingLab extends HTMLElement {
       const was = sec.hidden;
       sec.hidden = !r.shown.includes(name);
       sec.style.gridArea = name;
-      if (was && !sec.hidden) this.flushStale(name);
+      if (was && !sec.hidden) this.draws.flush(name);
     }
     // The nav belongs to the whole lab: an author's own panel choice (panels=) is one page.
-    const chosen = LAYOUT.every((p) => st.panels.includes(p));
-    this.nav.hidden = !chosen;
-    this.aboutEl.hidden = !chosen;
-    // Without the tabs the grid is no tabpanel (an author's page of panels).
-    if (this.grid) {
-      if (chosen) {
-        this.grid.setAttribute('role', 'tabpanel');
-        this.grid.setAttribute('aria-describedby', this.aboutEl.id);
-      } else {
-        this.grid.removeAttribute('role');
-        this.grid.removeAttribute('aria-describedby');
-      }
-    }
-    for (const sc of SCREENS) {
-      const tab = this.tabs[sc.id];
-      const on = sc.id === r.id;
-      tab.setAttribute('aria-selected', String(on));
-      tab.tabIndex = on ? 0 : -1;
-      if (on) {
-        this.aboutEl.textContent = `${sc.label}: ${sc.about}.`;
-        if (this.grid) {
-          if (chosen) this.grid.setAttribute('aria-labelledby', tab.id);
-          else this.grid.removeAttribute('aria-labelledby');
-        }
-      }
-    }
+    this.nav.select(r.id, LAYOUT.every((p) => st.panels.includes(p)), this.grid);
     this.dataset.screen = r.id;
     // Views that show less on a focused screen (folded options) than on the full page.
     if (before !== r.id) for (const v of Object.values(this.views)) if (v && v.setScreen) v.setScreen(r.id);
     this.applyLayout();
     if (before !== undefined && before !== r.id) {
       // Focus that was in a panel now hidden goes to the selected tab (never lost to <body>).
-      if (focused && focused !== this.tabs[r.id] && !(/** @type {HTMLElement} */ (focused)).checkVisibility?.()) this.tabs[r.id].focus();
+      const tab = this.nav.tabs[r.id];
+      if (focused && focused !== tab && !(/** @type {HTMLElement} */ (focused)).checkVisibility?.()) tab.focus();
       this.dispatchEvent(new CustomEvent('wl-screen', { detail: { screen: r.id, panels: r.shown.slice() }, ...EVENT }));
     }
-  }
-
-  /**
-   * The screen nav: a tablist (one tab per screen of www/screens.js; arrow keys, Home and End
-   * move between the tabs, Enter or Space opens one) above the panels' grid (its tabpanel).
-   * @param {(s: string) => string} id
-   */
-  buildNav(id) {
-    const labName = this.labName();
-    const list = el('div', { class: 'wl-screens', role: 'tablist', 'aria-label': labName ? `Screens — ${labName}` : 'Screens of the lab' });
-    this.tabs = {};
-    for (const sc of SCREENS) {
-      const tab = /** @type {HTMLButtonElement} */ (el('button', {
-        type: 'button', role: 'tab', class: 'wl-tab', id: id(`tab-${sc.id}`), 'data-screen': sc.id,
-        'aria-controls': id('screen'), 'aria-selected': 'false', tabindex: '-1', text: sc.label, title: sc.about,
-      }));
-      tab.addEventListener('click', () => this.showScreen(sc.id));
-      this.tabs[sc.id] = tab;
-      list.append(tab);
-    }
-    list.addEventListener('keydown', (e) => {
-      const tabs = Object.values(this.tabs);
-      const at = tabs.indexOf(/** @type {HTMLButtonElement} */ (e.target));
-      if (at < 0) return;
-      const to = { ArrowRight: at + 1, ArrowDown: at + 1, ArrowLeft: at - 1, ArrowUp: at - 1, Home: 0, End: tabs.length - 1 }[e.key];
-      if (to === undefined) return;
-      e.preventDefault();
-      const next = tabs[(to + tabs.length) % tabs.length];
-      for (const t of tabs) t.tabIndex = t === next ? 0 : -1;
-      next.focus();
-    });
-    return list;
   }
 
   /**
@@ -575,18 +427,6 @@ export class WingLab extends HTMLElement {
   /** Opens the screen that holds a panel (e.g. a guided experiment's "Go to" button). */
   showPanel(/** @type {string} */ name) {
     if (this.panels[name] && this.panels[name].hidden) this.showScreen(screenOfPanel(name, LAYOUT));
-  }
-
-  /** Redraws a panel that comes into view with the new results it skipped while hidden. */
-  flushStale(/** @type {string} */ name) {
-    const entries = this.stale.filter((e) => e.name === name);
-    if (!entries.length) return;
-    this.stale = this.stale.filter((e) => e.name !== name);
-    for (const e of entries) this.deferDraw(e);
-    if (!this.drawing) {
-      this.drawing = true;
-      this.drainDraws(() => { this.drawing = false; this.finishRender(); });
-    }
   }
 
   notice(text) {
@@ -649,32 +489,37 @@ export class WingLab extends HTMLElement {
     }
   }
 
+  /** Starts the FE wing wanted when the FE mode set needs it; true while the first one computes. */
+  ensureWing() {
+    const s = this.store.get();
+    if (s.modes !== 'fe' || this.engine.wingCurrent || this.wingError) return false;
+    const first = !this.engine.fe;
+    if (first) this.store.set({ status: 'computing the FE wing’s modes in a worker…' });
+    if (!this.feRunning) {
+      this.feRunning = true;
+      this.engine.ensureFe().then(
+        (fe) => { this.feRunning = false; this.feReady(fe); },
+        (e) => {
+          this.feRunning = false;
+          // The lab stays usable: the previous wing (or, with none yet, the paper table's
+          // modes) goes on, with the reason shown until the wing changes.
+          this.wingError = `The FE wing could not be computed: ${errorText(e).replace(/\.?$/, ".")}${this.engine.fe ? ' The previous wing stays in use.' : ' Showing the paper table’s modes meanwhile.'}`;
+          this.error(this.wingError);
+          this.schedule();
+        },
+      );
+    }
+    return first;
+  }
+
+  /** One live recompute: the newest result is published when it arrives (superseded ones are not). */
   render() {
     if (!this.engine.ready || this.pending) return;
-    const s = this.store.get();
-    if (s.modes === 'fe' && !this.engine.wingCurrent && !this.wingError) {
-      const first = !this.engine.fe;
-      if (first) this.store.set({ status: 'computing the FE wing’s modes in a worker…' });
-      if (!this.feRunning) {
-        this.feRunning = true;
-        this.engine.ensureFe().then(
-          (fe) => { this.feRunning = false; this.feReady(fe); },
-          (e) => {
-            this.feRunning = false;
-            // The lab stays usable: the previous wing (or, with none yet, the paper table's
-            // modes) goes on, with the reason shown until the wing changes.
-            this.wingError = `The FE wing could not be computed: ${errorText(e).replace(/\.?$/, ".")}${this.engine.fe ? ' The previous wing stays in use.' : ' Showing the paper table’s modes meanwhile.'}`;
-            this.error(this.wingError);
-            this.schedule();
-          },
-        );
-      }
-      if (first) return;
-    }
+    if (this.ensureWing()) return;
     /** @type {Promise<import('./engine.js').LiveResult | null>} */
     let req;
     try {
-      req = this.engine.requestLive(paramsOf(s));
+      req = this.engine.requestLive(paramsOf(this.store.get()));
     } catch (e) {
       this.error(`Computation rejected: ${errorText(e)}`);
       return;
@@ -686,106 +531,14 @@ export class WingLab extends HTMLElement {
     );
   }
 
-  /**
-   * The store as a view sees it: the same store, except that a subscription whose only change
-   * is a new `result` runs in a task of its own (see publish), visible panels first, so that
-   * redrawing all panels is never one long task and a key press can paint between two panels.
-   * @param {string} name the panel
-   * @returns {import('./store.js').Store<LabState>}
-   */
-  viewStore(name) {
-    const store = this.store;
-    return {
-      get: store.get,
-      set: store.set,
-      subscribe: (keys, fn) => {
-        if (keys === '*' || !keys.includes('result')) return store.subscribe(keys, fn);
-        const entry = { name, fn };
-        return store.subscribe(keys, (st, changed) => {
-          const onlyResult = changed.length === 1 && changed[0] === 'result';
-          // A panel off the current screen does no work for a new result until it is shown.
-          const sec = this.panels[name];
-          if (onlyResult && sec && sec.hidden) {
-            if (!this.stale.includes(entry)) this.stale.push(entry);
-          } else if (this.drawing && onlyResult) this.deferDraw(entry);
-          else fn(st, changed);
-        });
-      },
-    };
-  }
-
-  /** Queues a panel's redraw for a new result (once per panel and function). */
-  deferDraw(/** @type {{ name: string, fn: Function }} */ entry) {
-    if (!this.drawQueue.includes(entry)) this.drawQueue.push(entry);
-  }
-
-  /**
-   * Runs the queued redraws one task each (a MessageChannel message: not clamped like
-   * setTimeout), the panels on screen first; then `done`.
-   * @param {() => void} done
-   */
-  drainDraws(done) {
-    const port = this.drawPort || (this.drawPort = new MessageChannel());
-    // Each panel's place (0 on screen, 1 off screen, 2 hidden), measured once per drain: a
-    // measurement after each panel's redraw would force a layout every task.
-    /** @type {Map<string, number>} */
-    const rank = new Map();
-    const visible = (/** @type {string} */ n) => {
-      let r = rank.get(n);
-      if (r === undefined) {
-        const sec = this.panels[n];
-        if (!sec || sec.hidden) r = 2;
-        else {
-          const b = sec.getBoundingClientRect();
-          r = b.bottom > 0 && b.top < (window.innerHeight || 800) ? 0 : 1;
-        }
-        rank.set(n, r);
-      }
-      return r;
-    };
-    const gen = this.drawGen;
-    const step = () => {
-      if (!this.built || gen !== this.drawGen) return;
-      if (!this.drawQueue.length) {
-        done();
-        return;
-      }
-      // One panel per task, the most visible first (ties: the order they subscribed in).
-      let best = 0, bestV = 3;
-      for (let i = 0; i < this.drawQueue.length; i++) {
-        const v = visible(this.drawQueue[i].name);
-        if (v < bestV) { best = i; bestV = v; }
-      }
-      const [e] = this.drawQueue.splice(best, 1);
-      try {
-        e.fn(this.store.get(), ['result']);
-      } finally {
-        port.port1.onmessage = step;
-        port.port2.postMessage(0);
-      }
-    };
-    step();
-  }
-
   /** The newest live result: into the store (the views redraw, a panel per task), then `wl-rendered`. */
   publish(/** @type {import('./engine.js').LiveResult} */ r) {
     this.error(this.wingError);
-    const t1 = performance.now();
-    // A result arriving while the previous one's panels are still being drawn: the queue keeps
-    // one entry per panel, each reads the newest result when it runs.
-    const first = !this.drawing;
-    this.drawing = true;
-    this.pendingRender = { r, t1: this.pendingRender ? this.pendingRender.t1 : t1 };
-    this.store.set({ result: r, status: null });
-    if (first) this.drainDraws(() => { this.drawing = false; this.finishRender(); });
+    this.draws.publish(r);
   }
 
-  /** All panels show the newest result: timing, data-renders and `wl-rendered`. */
-  finishRender() {
-    const pend = this.pendingRender;
-    this.pendingRender = null;
-    if (!pend) return;
-    const { r, t1 } = pend;
+  /** All panels show the newest result (published at t1): timing, data-renders and `wl-rendered`. */
+  finishRender(/** @type {import('./engine.js').LiveResult} */ r, /** @type {number} */ t1) {
     // uPlot commits its redraw in a microtask queued by setData; ours runs after it.
     queueMicrotask(() => {
       const t2 = performance.now();
@@ -816,172 +569,16 @@ export class WingLab extends HTMLElement {
     this.schedule();
   }
 
-  /**
-   * Restores what the URL carries beyond the query: a `planform=` file (same origin, relative)
-   * and the `#s=` fragment (outline, kinematics, strain point). Each failure is a notice; the
-   * lab then goes on with the defaults for that part.
-   */
+  /** Restores the `planform=` file and the `#s=` fragment (lab/url.js) before the first computation. */
   async restoreShared() {
     if (!this.hasAttribute('sync-url')) return;
     this.pending++;
-    const notes = [];
     try {
-      const s = this.store.get();
-      if (s.planform) {
-        try {
-          const points = await this.fetchPlanform(s.planform);
-          this.store.set({ wing: { input: null, source: 'url', label: s.planform, outline: 'file', points } });
-        } catch (e) {
-          notes.push(`The planform file “${s.planform}” could not be used (${errorText(e)}); using the built-in outline.`);
-          this.store.set({ planform: '' });
-        }
-      }
-      const frag = fragmentValue(location.hash);
-      if (frag) {
-        try {
-          const st = await decodeShare(frag);
-          /** @type {Partial<LabState>} */
-          const patch = {};
-          if (st.outline) {
-            const points = checkPoints(st.outline);
-            patch.wing = { input: null, source: 'share', label: typeof st.outline_label === 'string' ? st.outline_label.slice(0, 80) : 'shared outline', outline: 'shared', points };
-            patch.planform = '';
-          }
-          if (st.kin) patch.kin = this.kinFromShare(st.kin);
-          if (st.strain_point) patch.strain_point = checkPoints([st.strain_point, st.strain_point, st.strain_point], 'strain_point')[0];
-          this.store.set(patch);
-        } catch (e) {
-          notes.push(`The shared wing/kinematics in the link (#s=…) could not be restored: ${errorText(e)}. The lab uses its defaults for them.`);
-        }
-      }
+      await this.url.restore();
     } finally {
       this.pending--;
     }
-    if (notes.length) this.notice(notes.join(' '));
-  }
-
-  /** A `planform=` file: relative same-origin URL only (state.js checked the text), CSV or JSON. */
-  async fetchPlanform(path) {
-    const url = new URL(path, location.href);
-    if (url.origin !== location.origin) throw new Error('only same-origin files can be loaded');
-    const res = await fetch(url, { credentials: 'same-origin' });
-    if (!res.ok) throw new Error(`HTTP ${res.status}`);
-    const text = await res.text();
-    if (text.length > 1e6) throw new Error('the file is larger than 1 MB');
-    return this.engine.parsePlanform(text, /\.json$/i.test(path) ? 'json' : 'csv');
-  }
-
-  /**
-   * Kinematics from a share fragment: the CSV again (same core function) or the config itself.
-   * @returns {import('./lab.js').KinState}
-   */
-  kinFromShare(k) {
-    if (!k || typeof k !== 'object') throw new Error('kin: expected an object');
-    if (k.csv && typeof k.csv.text === 'string') {
-      const r = this.engine.kinematicsFromCsv(k.csv.text, { units: k.csv.units, flap_hz: k.csv.flap_hz, max_harmonic: k.csv.max_harmonic });
-      return { kinematics: k.kinematics || r.kinematics, source: /** @type {const} */ ('share'), label: String(k.label || 'shared kinematics').slice(0, 80), samples: r.samples, csv: k.csv };
-    }
-    if (!k.kinematics || typeof k.kinematics !== 'object') throw new Error('kin.kinematics: expected the core’s Kinematics object');
-    // Checked by the core on the first computation (applyOverrides validates the config).
-    return { kinematics: k.kinematics, source: /** @type {const} */ ('share'), label: String(k.label || 'shared kinematics').slice(0, 80), samples: null, csv: null };
-  }
-
-  /** Writes the `#s=` fragment (own outline, kinematics, strain point) after the state settles. */
-  scheduleFragment() {
-    clearTimeout(this.fragTimer);
-    this.fragTimer = setTimeout(() => this.writeFragment(), 300);
-  }
-
-  async writeFragment() {
-    const s = this.store.get();
-    /** @type {Record<string, unknown>} */
-    const st = {};
-    if (s.wing && s.wing.points && s.wing.source !== 'url' && s.wing.source !== 'import') {
-      st.outline = s.wing.points;
-      st.outline_label = s.wing.label;
-    }
-    if (s.kin) {
-      const csv = s.kin.csv && s.kin.csv.text.length <= 20000 ? s.kin.csv : null;
-      st.kin = { label: s.kin.label, kinematics: s.kin.kinematics, csv };
-    }
-    if (s.strain_point) st.strain_point = s.strain_point;
-    let hash = '';
-    if (Object.keys(st).length) {
-      try {
-        // The finest rounding that keeps the whole link within 2000 characters; a notice if not.
-        hash = (await shareLink(st, location.href.split('#')[0], (m) => this.notice(m))).hash;
-      } catch {
-        hash = '';
-      }
-    }
-    if (hash !== location.hash && !(hash === '' && !location.hash)) {
-      history.replaceState(null, '', `${location.pathname}${location.search}${hash}`);
-    }
-  }
-
-  /** Query-string writes: at most one per 250 ms while sliders move (Chromium throttles more). */
-  scheduleUrl() {
-    const write = () => {
-      this.urlTimer = 0;
-      this.urlWritten = performance.now();
-      /** @type {Record<string, string>} */
-      const extra = new URLSearchParams(location.search).get('embed') === '1' ? { embed: '1' } : {};
-      history.replaceState(null, '', `${location.pathname}?${toQuery(this.state, extra)}${location.hash}`);
-    };
-    if (this.urlTimer) return;
-    const since = performance.now() - (this.urlWritten || -1e9);
-    // Never in the key press's own task: history.replaceState costs ~10 ms in Chromium, which
-    // would delay the paint of the slider's new value.
-    this.urlTimer = setTimeout(write, Math.max(20, 250 - since));
-  }
-
-  // ---------- export ----------
-
-  async export(name, kind, label = name) {
-    const reg = this.exportsReg[name];
-    const nothing = () => this.notice(`Nothing to export yet for “${plain(label)}”: run it first.`);
-    if (!reg) return nothing();
-    if (kind === 'csv') {
-      const text = reg.csv && reg.csv();
-      if (!text) return nothing();
-      download(`wingbeat-${name}.csv`, new Blob([text], { type: 'text/csv;charset=utf-8' }));
-      this.lastExport = { name, kind };
-      return;
-    }
-    const fig = reg.figure && reg.figure();
-    if (kind === 'svg') {
-      if (!fig) return nothing();
-      const probe = canvasPainter(context2d(document.createElement('canvas')));
-      download(`wingbeat-${name}.svg`, new Blob([figureSVG(fig, FIG_W, FIG_H, (s, size) => probe.measure(s, size))], { type: 'image/svg+xml' }));
-      this.lastExport = { name, kind };
-      return;
-    }
-    let out;
-    if (fig) out = await figurePNG(fig, FIG_W, FIG_H, 2);
-    else if (reg.table && reg.table()) out = await tablePNG(plain(label), describe(this.store.get()), reg.table(), 2);
-    else if (reg.canvas && reg.canvas()) out = await canvasPNG(plain(label), describe(this.store.get()), reg.canvas());
-    else return nothing();
-    download(`wingbeat-${name}.png`, out.blob);
-    this.lastExport = { name, kind, width: out.width, height: out.height, legend: fig ? fig.series.filter((s) => s.show !== false).map((s) => s.color) : [] };
   }
 }
-
-/** A drawn canvas (the heat map) with title and parameter line, at 2×. */
-function canvasPNG(title, params, src) {
-  const w = Math.max(600, src.width + 32), h = src.height + 90;
-  const c = document.createElement('canvas');
-  c.width = 2 * w;
-  c.height = 2 * h;
-  const ctx = context2d(c);
-  ctx.scale(2, 2);
-  const p = canvasPainter(ctx);
-  p.rect(0, 0, w, h, '#fff');
-  p.text(16, 26, title, { size: 17, weight: 'bold', color: '#111' });
-  p.text(16, 46, params.length > 130 ? params.slice(0, 127) + '…' : params, { size: 11, color: '#444' });
-  ctx.drawImage(src, 16, 64);
-  return new Promise((resolve) => c.toBlob((blob) => resolve({ blob, width: c.width, height: c.height }), 'image/png'));
-}
-
-void drawFigure;
 
 if (!customElements.get('wing-lab')) customElements.define('wing-lab', WingLab);

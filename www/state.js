@@ -46,7 +46,7 @@ export const ENUMS = [
 export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance', 'wing', 'kinematics', 'modeshape', 'sensing'];
 
 /**
- * The body rotation of the sensing panel (www/views/sensing.js, sensing a body rotation): a constant body
+ * The body rotation that the sensing panel (www/views/sensing.js) detects: a constant body
  * angular velocity of `body_rate` rad/s about the body axis `body_axis` (x = I, roll; y = J,
  * pitch; z = K, yaw). The range is the core's for a constant component (src/params.rs
  * BODY_RATE_RANGES, `mean`; tests/sensing_lab.rs compares them); the sign is the direction.

@@ -156,7 +156,7 @@ export function mount(ctx) {
     }
     order.sort((a, b) => depth[b] - depth[a]);
     const R = engine.renderer;
-    const stops = R && typeof R.colourMap === 'function' ? R.colourMap() : null;
+    const stops = R ? R.colourMap() : null;
     const max = geom.max || 1;
     // Two-sided diffuse shading from a light above and behind the viewer's right shoulder, so
     // bending and twist read as shape, not only as colour.

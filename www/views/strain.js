@@ -114,7 +114,7 @@ export function mount(ctx) {
 
   function stops() {
     const R = ctx.engine.renderer;
-    const m = R && typeof R.colourMap === 'function' ? R.colourMap() : null;
+    const m = R ? R.colourMap() : null;
     return m && m.length ? m : null;
   }
 
