@@ -144,6 +144,22 @@ export function maxDeflectionAt(shapes, nNodes, states) {
   return best;
 }
 
+/**
+ * The display numbers of a run on an FE wing: the colour limit per strain component
+ * (strainRangesAt at RANGE_QUANTILE: { 1: ε_x, 2: ε_y, 3: γ_xy, 4: |ε| }) and the largest
+ * deflection (maxDeflectionAt, m). Taken over the analysis's `extreme_samples` when the core
+ * listed them (its hull vertices / extremes), else over extremeStates(qs, maxSamples).
+ * @param {{ nodes: ArrayLike<number>, strain_nodes: ArrayLike<number>, shapes: ArrayLike<number> }} fe
+ * @param {any} analysis the run's Analysis (sim.modes[k].q.total, optional extreme_samples)
+ * @param {number} maxSamples
+ */
+export function runRanges(fe, analysis, maxSamples) {
+  const qs = analysis.sim.modes.map((/** @type {any} */ m) => m.q.total);
+  const n = fe.nodes.length / 3;
+  const states = analysis.extreme_samples ? statesAt(qs, analysis.extreme_samples) : extremeStates(qs, maxSamples);
+  return { ranges: strainRangesAt(fe.strain_nodes, n, states, RANGE_QUANTILE), deflection: maxDeflectionAt(fe.shapes, n, states) };
+}
+
 // ---------- colour map and whole-wing strain maps (mode viewer, strain panel, 3-D view) ----------
 
 /**

@@ -100,3 +100,16 @@ test('colour 5 uploads the run’s strain map with the strain panel’s limit; t
   assert.match(s.fields.legendInfo().fieldProblem, /paper mode set has no whole-wing strain/);
   s.fields.destroy();
 });
+
+test('run ranges: the colour limit and the largest deflection over the run, or over the core’s listed samples', () => {
+  const { fe, result } = setting(1);
+  fe.shapes = Float64Array.of(0.1, 0.2, 0.3, 0.4);
+  // ε_x per unit q at nodes 0…3: 1, 4, 7, 10; q over the run: 1, −2, 0.5
+  const all = S.runRanges(fe, result.analysis, 1000);
+  assert.equal(all.ranges[1], 20); // max_t |ε_x q| = 2, 8, 14, 20: the 90 % quantile of 4 nodes is the largest
+  assert.equal(all.ranges[2], 0);
+  assert.equal(all.deflection, 0.8);
+  const listed = S.runRanges(fe, { ...result.analysis, extreme_samples: Uint32Array.of(0, 2) }, 1000);
+  assert.equal(listed.ranges[1], 10, 'sample 1 (q = −2) not listed, not seen');
+  assert.equal(listed.deflection, 0.4);
+});

@@ -327,15 +327,12 @@ class Wing3dPanel {
     this.dirty = false;
     const s = this.store.get();
     if (!s.result) return;
-    const a = s.result.analysis;
-    const qs = a.sim.modes.map((m) => m.q.total);
-    const n = fe.nodes.length / 3;
     // Display ranges: with 3+ modes over RANGE_SAMPLES states (exact hull vertices for 1–2).
     // The core lists those states' samples (Analysis.extreme_samples, computed in the live
     // worker), so this redraw costs (states × nodes), not a pass over every sample.
-    const states = a.extreme_samples ? S.statesAt(qs, a.extreme_samples) : S.extremeStates(qs, RANGE_SAMPLES);
-    this.ranges = S.strainRangesAt(fe.strain_nodes, n, states, S.RANGE_QUANTILE);
-    this.runDeflection = S.maxDeflectionAt(fe.shapes, n, states);
+    const { ranges, deflection } = S.runRanges(fe, s.result.analysis, RANGE_SAMPLES);
+    this.ranges = ranges;
+    this.runDeflection = deflection;
     this.applyRange();
     // Refit when the stroke, the canvas or the drawn deflection (true × exaggeration) changes.
     const key = refitKey(s, this.canvas.width, this.canvas.height, this.runDeflection * this.exaggeration());
