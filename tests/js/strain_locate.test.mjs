@@ -1,10 +1,10 @@
-// Finding where a modes document's strain point is (www/views/wing.js locateStrainPoint): the
+// Finding where a modes document's strain point is (www/modesdoc.js locateStrainPoint): the
 // modal strain at a point is the barycentric interpolation of its triangle's nodal strains, so
 // strains interpolated at a known point of a small synthetic mesh must lead back to that point;
 // strains that no triangle gives must not be placed anywhere. Run: node --test tests/js/strain_locate.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { locateStrainPoint, modesDocument, CHOSEN_POINT } from '../../www/views/wing.js';
+import { locateStrainPoint, modesDocument, CHOSEN_POINT } from '../../www/modesdoc.js';
 
 // A 2 × 1 mm rectangle of two triangles (nodes in m, a little camber in z), two modes.
 const nodes = Float64Array.from([0, 0, 0, 2e-3, 0, 1e-5, 2e-3, -1e-3, 2e-5, 0, -1e-3, 0]);
