@@ -20,8 +20,11 @@
 // decodeShare returns the v1 shape whatever version it read (`v` says which), so callers need
 // not know the versions. shareLink picks the finest rounding that keeps the whole link within
 // MAX_LINK characters, and says so plainly when even the coarsest does not fit.
+// A sampled angle's series is the one DFT of www/fourier.js (the core's, see there).
 // Uses the browser's CompressionStream / DecompressionStream (also in node ≥ 18). Pure apart
 // from those streams; unit-tested in tests/js/share.test.mjs.
+
+import { sampledSeries, seriesSamples } from './fourier.js';
 
 /** The fragment version this lab writes. */
 export const SHARE_VERSION = 2;
@@ -36,9 +39,6 @@ export const MAX_LINK = 2000;
 export const OUTLINE_DECIMALS = 4;
 /** Decimals (of rad) tried for a sampled angle's Fourier coefficients, finest first. */
 export const ANGLE_DECIMALS = [6, 5, 4];
-/** The core's default harmonic cap for sampled angles (src/kinematics.rs DEFAULT_SAMPLED_MAX_HARMONIC;
- * tests/js/wasm.test.mjs checks it against wasm limits().default_sampled_max_harmonic). */
-export const DEFAULT_SAMPLED_MAX_HARMONIC = 24;
 const MAX_SAMPLES = 100000;
 const MAX_HARMONIC = 256;
 /** Short keys of v2; a state passed to encodeShare must not use them for anything else. */
@@ -132,51 +132,6 @@ export function unpackOutline(o) {
     pts.push([x / k, y / k]);
   }
   return pts;
-}
-
-/**
- * The Fourier series the core makes of N samples over one period (src/kinematics.rs
- * `Angle::series`): [mean, s1, c1, …, sH, cH] with H = min(N/2, maxHarmonic ?? 64).
- * @param {ArrayLike<number>} values
- * @param {number | null | undefined} maxHarmonic
- */
-export function sampledSeries(values, maxHarmonic) {
-  const n = values.length;
-  let mean = 0;
-  for (let j = 0; j < n; j++) mean += values[j];
-  mean /= n;
-  const hmax = Math.min(Math.floor(n / 2), maxHarmonic ?? DEFAULT_SAMPLED_MAX_HARMONIC);
-  const out = [mean];
-  for (let h = 1; h <= hmax; h++) {
-    let cs = 0, sn = 0;
-    for (let j = 0; j < n; j++) {
-      const th = (2 * Math.PI * ((h * j) % n)) / n;
-      cs += values[j] * Math.cos(th);
-      sn += values[j] * Math.sin(th);
-    }
-    const w = n % 2 === 0 && h === n / 2 ? 1 / n : 2 / n;
-    out.push(w * sn, w * cs);
-  }
-  return out;
-}
-
-/**
- * N samples over one period of the series [mean, s1, c1, …] (t_j = j T / N).
- * @param {number[]} series
- * @param {number} n
- */
-export function seriesSamples(series, n) {
-  const hmax = (series.length - 1) / 2;
-  const out = new Array(n);
-  for (let j = 0; j < n; j++) {
-    let v = series[0];
-    for (let h = 1; h <= hmax; h++) {
-      const th = (2 * Math.PI * ((h * j) % n)) / n;
-      v += series[2 * h - 1] * Math.sin(th) + series[2 * h] * Math.cos(th);
-    }
-    out[j] = v;
-  }
-  return out;
 }
 
 /**

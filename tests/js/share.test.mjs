@@ -5,9 +5,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  encodeShare, decodeShare, fragmentValue, checkPoints, shareLink, sampledSeries, packOutline, unpackOutline,
-  SHARE_VERSION, MAX_LINK, MAX_FRAGMENT, DEFAULT_SAMPLED_MAX_HARMONIC,
+  encodeShare, decodeShare, fragmentValue, checkPoints, shareLink, packOutline, unpackOutline,
+  SHARE_VERSION, MAX_LINK, MAX_FRAGMENT,
 } from '../../www/share.js';
+import { sampledSeries, DEFAULT_SAMPLED_MAX_HARMONIC } from '../../www/fourier.js';
 import { defaults, toQuery } from '../../www/state.js';
 
 /** Deterministic pseudo-random numbers in [0, 1). */

@@ -100,9 +100,9 @@ test('analyze on the real wasm: stiffness_force and the angles on sim.t', async 
   assert.ok(Math.abs(r.angles.gamma[0]) < 1e-12 && Math.abs(r.angles.alpha[25]) > 0);
 });
 
-test('share.js samples a measured angle with the core’s default harmonic cap, and a typical table runs in the lab’s budget', async () => {
+test('the share links’ DFT (fourier.js) samples a measured angle with the core’s default harmonic cap, and a typical table runs in the lab’s budget', async () => {
   const wb = await wbPromise;
-  const { DEFAULT_SAMPLED_MAX_HARMONIC } = await import('../../www/share.js');
+  const { DEFAULT_SAMPLED_MAX_HARMONIC } = await import('../../www/fourier.js');
   assert.equal(DEFAULT_SAMPLED_MAX_HARMONIC, wb.limits().default_sampled_max_harmonic);
   // A 200-sample, one-period table at 25 Hz with a little measurement noise (deterministic):
   // with the default cap it runs under the browser's work budget (at 64 harmonics it was refused).

@@ -8,7 +8,7 @@
 // carries them in its #s= fragment. "Use the sliders" goes back to the sliders' stroke.
 import { el, activeIn } from '../dom.js';
 import { fmt, errorText } from '../format.js';
-import { DEFAULT_SAMPLED_MAX_HARMONIC } from '../share.js';
+import { DEFAULT_SAMPLED_MAX_HARMONIC } from '../fourier.js';
 
 export const title = 'Kinematics';
 
