@@ -314,7 +314,7 @@ export function mount(ctx) {
     get point() { return point; },
     choose,
     destroy: () => {
-      unsubs.forEach((f) => f());
+      for (const f of unsubs) f();
       clearTimeout(timer);
       observers.disconnect();
       plots.destroy();

@@ -275,5 +275,5 @@ export function mount(ctx) {
       };
     },
   });
-  return { main, overview: ov, resetWindow, destroy: () => { unsub.forEach((f) => f()); main.destroy(); ov.destroy(); } };
+  return { main, overview: ov, resetWindow, destroy: () => { for (const f of unsub) f(); main.destroy(); ov.destroy(); } };
 }

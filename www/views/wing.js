@@ -232,7 +232,7 @@ export function mount(ctx) {
     const src = s.wing ? `${s.wing.label} (${s.wing.source === 'import' ? 'imported modes' : 'own outline'})` : customWing(s) ? `${(builtins().find((b) => b.id === s.outline) || { label: s.outline }).label}` : 'the default synthetic Manduca-like wing';
     inUse.append(el('p', { class: 'wl-note', text: `In use: ${src}; ${fe.modes.length} modes, ${fe.n_nodes} nodes, element size ${fmt(fe.mesh_size_mm, 3)} mm${s.strain_point ? `, chosen strain point (${fmt(s.strain_point[0], 4)}, ${fmt(s.strain_point[1], 4)}) mm` : ''}${fe.strain_point_mm ? `, ${s.strain_point ? 'the wing’s own ' : ''}strain point (${fmt(fe.strain_point_mm[0], 4)}, ${fmt(fe.strain_point_mm[1], 4)}) mm` : ''}.` }));
     const ol = el('ol', { class: 'wl-wing-freqs', 'aria-label': 'Natural frequencies of the wing in use' });
-    fe.modes.forEach((m, k) => ol.append(el('li', { 'data-field': `wing-freq-${k}`, text: `${fmt(m.freq_hz, 4)} Hz${fe.kinds && fe.kinds[k] ? ` (${fe.kinds[k]})` : ''}` })));
+    fe.modes.forEach((m, k) => { ol.append(el('li', { 'data-field': `wing-freq-${k}`, text: `${fmt(m.freq_hz, 4)} Hz${fe.kinds && fe.kinds[k] ? ` (${fe.kinds[k]})` : ''}` })); });
     inUse.append(ol);
   };
 
@@ -287,7 +287,7 @@ export function mount(ctx) {
     destroy() {
       clearInterval(whenReady);
       if (job) clearInterval(job.timer);
-      unsub.forEach((f) => f());
+      for (const f of unsub) f();
     },
   };
 }
