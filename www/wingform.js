@@ -5,12 +5,6 @@
 // halfway to the next one, the label of an edited outline). No DOM; unit-tested in
 // tests/js/wingform.test.mjs.
 
-/** The paper's two materials, offered until the wasm's materialPresets() is there. */
-export const FALLBACK_PRESETS = [
-  { id: 'paper-frequencies', label: 'Paper, frequencies (E = 13.11 GPa)', e_pa: 1.311e10, rho: 860, nu: 0.3, thickness_um: 81 },
-  { id: 'paper-as-printed', label: 'Paper, as printed (E = 10 MPa)', e_pa: 1e7, rho: 860, nu: 0.3, thickness_um: 81 },
-];
-
 /** The parameters a material preset sets. */
 export const MATERIAL_KEYS = ['e_pa', 'rho', 'nu', 'thickness_um'];
 

@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { WING } from '../../www/state.js';
-import { FALLBACK_PRESETS, SHOW, clean, readWingValue, matchingPreset, outlineBox, insertMidpoint, editedLabel } from '../../www/wingform.js';
+import { SHOW, clean, readWingValue, matchingPreset, outlineBox, insertMidpoint, editedLabel } from '../../www/wingform.js';
 import { looksLikeModes, feFromModesDocument } from '../../www/modesdoc.js';
 
 const row = (key) => WING.find((w) => w.key === key);
@@ -30,11 +30,15 @@ test('a typed wing value is read in the core’s unit (E typed in GPa), and refu
 });
 
 test('the preset that matches the material parameters, to 1e-9 relative; none for a custom material', () => {
-  const p = FALLBACK_PRESETS[0];
+  const PRESETS = [
+    { id: 'a', label: 'A', e_pa: 1.311e10, rho: 860, nu: 0.3, thickness_um: 81 },
+    { id: 'b', label: 'B', e_pa: 1e7, rho: 860, nu: 0.3, thickness_um: 81 },
+  ];
+  const p = PRESETS[0];
   const params = { e_pa: p.e_pa * (1 + 1e-12), rho: p.rho, nu: p.nu, thickness_um: p.thickness_um, camber: 0.3 };
-  assert.equal(matchingPreset(FALLBACK_PRESETS, params), p);
-  assert.equal(matchingPreset(FALLBACK_PRESETS, { ...params, rho: p.rho + 1 }), undefined);
-  assert.equal(matchingPreset(FALLBACK_PRESETS, { ...params, e_pa: FALLBACK_PRESETS[1].e_pa }), FALLBACK_PRESETS[1]);
+  assert.equal(matchingPreset(PRESETS, params), p);
+  assert.equal(matchingPreset(PRESETS, { ...params, rho: p.rho + 1 }), undefined);
+  assert.equal(matchingPreset(PRESETS, { ...params, e_pa: PRESETS[1].e_pa }), PRESETS[1]);
 });
 
 test('the outline’s drawing box: bounds in SVG coordinates (y down) with a 6 % margin', () => {

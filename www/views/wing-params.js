@@ -5,7 +5,7 @@
 import { WING } from '../state.js';
 import { el, activeIn } from '../dom.js';
 import { fmt } from '../format.js';
-import { FALLBACK_PRESETS, MATERIAL_KEYS, SHOW, LABEL, clean, readWingValue, matchingPreset } from '../wingform.js';
+import { MATERIAL_KEYS, SHOW, LABEL, clean, readWingValue, matchingPreset } from '../wingform.js';
 
 /**
  * @param {import('../lab.js').ViewContext} ctx
@@ -14,10 +14,8 @@ import { FALLBACK_PRESETS, MATERIAL_KEYS, SHOW, LABEL, clean, readWingValue, mat
  */
 export function wingParams(ctx, form, on) {
   const { store, engine, id } = ctx;
-  const presets = () => {
-    const p = engine.ready ? engine.materialPresets() : [];
-    return p.length ? p : FALLBACK_PRESETS;
-  };
+  // The core's material presets; none until the wasm has loaded (views/wing.js refills the menu then).
+  const presets = () => (engine.ready ? engine.materialPresets() : []);
   const presetSel = el('select', { id: id('wing-preset'), 'data-wing': 'preset' });
   const fillPresets = () => {
     presetSel.replaceChildren(el('option', { value: '', text: 'Custom (as set below)' }));

@@ -280,6 +280,7 @@ export function mount(ctx) {
     if (!engine.ready) return;
     clearInterval(whenReady);
     if (!form.dirty) init();
+    else params.fillPresets();
   }, 100);
   return {
     compute,
