@@ -9,7 +9,7 @@
 // found by a small scanner: an `fn` item's body runs from its first `{` to the matching `}`,
 // skipping braces inside strings, chars and comments. Vendored and generated files are skipped.
 import { readFileSync, readdirSync, statSync } from 'node:fs';
-import { join, relative } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parse } from 'acorn';
 
@@ -51,7 +51,17 @@ export function jsFunctions(text) {
   const out = [];
   const FN = new Set(['FunctionDeclaration', 'FunctionExpression', 'ArrowFunctionExpression']);
   // The statement that holds a function (for `const f = () => …` the comment sits above it).
-  const HOLDERS = new Set(['VariableDeclaration', 'ExportNamedDeclaration', 'ExportDefaultDeclaration', 'Property', 'MethodDefinition', 'PropertyDefinition', 'ExpressionStatement', 'AssignmentExpression', 'VariableDeclarator']);
+  const HOLDERS = new Set([
+    'VariableDeclaration',
+    'ExportNamedDeclaration',
+    'ExportDefaultDeclaration',
+    'Property',
+    'MethodDefinition',
+    'PropertyDefinition',
+    'ExpressionStatement',
+    'AssignmentExpression',
+    'VariableDeclarator',
+  ]);
   const visit = (node, parents, stack) => {
     if (!node || typeof node.type !== 'string') return;
     let inner = stack;
@@ -62,9 +72,19 @@ export function jsFunctions(text) {
         const p = parents[k];
         anchorLine = Math.min(anchorLine, p.loc.start.line);
         if (!name && p.type === 'VariableDeclarator' && p.id.type === 'Identifier') name = p.id.name;
-        if (!name && (p.type === 'Property' || p.type === 'MethodDefinition' || p.type === 'PropertyDefinition') && p.key?.type === 'Identifier') name = p.key.name;
+        if (
+          !name &&
+          (p.type === 'Property' || p.type === 'MethodDefinition' || p.type === 'PropertyDefinition') &&
+          p.key?.type === 'Identifier'
+        )
+          name = p.key.name;
       }
-      const entry = { name: name ?? '(anonymous)', line: anchorLine - 1, lines: node.loc.end.line - node.loc.start.line + 1, closure: false };
+      const entry = {
+        name: name ?? '(anonymous)',
+        line: anchorLine - 1,
+        lines: node.loc.end.line - node.loc.start.line + 1,
+        closure: false,
+      };
       for (const outer of stack) outer.closure = true;
       out.push(entry);
       inner = [...stack, entry];
@@ -96,11 +116,24 @@ export function rustFunctions(text) {
     } else if (c === '/' && d === '*') {
       let depth = 0;
       do {
-        if (text[i] === '/' && text[i + 1] === '*') { depth++; masked[i] = masked[i + 1] = ' '; i += 2; }
-        else if (text[i] === '*' && text[i + 1] === '/') { depth--; masked[i] = masked[i + 1] = ' '; i += 2; }
-        else { if (text[i] !== '\n') masked[i] = ' '; i++; }
+        if (text[i] === '/' && text[i + 1] === '*') {
+          depth++;
+          masked[i] = masked[i + 1] = ' ';
+          i += 2;
+        } else if (text[i] === '*' && text[i + 1] === '/') {
+          depth--;
+          masked[i] = masked[i + 1] = ' ';
+          i += 2;
+        } else {
+          if (text[i] !== '\n') masked[i] = ' ';
+          i++;
+        }
       } while (i < n && depth > 0);
-    } else if (c === 'r' && (d === '"' || (d === '#' && /^r#+"/.test(text.slice(i, i + 10)))) && !/[A-Za-z0-9_]/.test(text[i - 1] ?? '')) {
+    } else if (
+      c === 'r' &&
+      (d === '"' || (d === '#' && /^r#+"/.test(text.slice(i, i + 10)))) &&
+      !/[A-Za-z0-9_]/.test(text[i - 1] ?? '')
+    ) {
       const hashes = /^r(#*)"/.exec(text.slice(i, i + 10))[1];
       const close = `"${hashes}`;
       const j = text.indexOf(close, i + 2 + hashes.length);
@@ -109,7 +142,9 @@ export function rustFunctions(text) {
     } else if (c === '"') {
       masked[i++] = ' ';
       while (i < n && text[i] !== '"') {
-        if (text[i] === '\\') { masked[i++] = ' '; }
+        if (text[i] === '\\') {
+          masked[i++] = ' ';
+        }
         if (i < n && text[i] !== '\n') masked[i] = ' ';
         i++;
       }
@@ -124,13 +159,17 @@ export function rustFunctions(text) {
   const lineStarts = [0];
   for (let k = 0; k < n; k++) if (text[k] === '\n') lineStarts.push(k + 1);
   const lineOf = (pos) => {
-    let lo = 0, hi = lineStarts.length - 1;
-    while (lo < hi) { const mid = (lo + hi + 1) >> 1; if (lineStarts[mid] <= pos) lo = mid; else hi = mid - 1; }
+    let lo = 0,
+      hi = lineStarts.length - 1;
+    while (lo < hi) {
+      const mid = (lo + hi + 1) >> 1;
+      if (lineStarts[mid] <= pos) lo = mid;
+      else hi = mid - 1;
+    }
     return lo;
   };
   const re = /\bfn\s+([A-Za-z_][A-Za-z0-9_]*)/g;
-  let m;
-  while ((m = re.exec(src))) {
+  for (let m = re.exec(src); m; m = re.exec(src)) {
     // The body: the first `{` after the signature at paren depth 0, unless a `;` comes first.
     let k = m.index + m[0].length;
     let paren = 0;
@@ -140,7 +179,10 @@ export function rustFunctions(text) {
       if (ch === '(' || ch === '<' || ch === '[') paren++;
       else if (ch === ')' || ch === ']' || (ch === '>' && src[k - 1] !== '-' && src[k - 1] !== '=')) paren--;
       else if (ch === ';' && paren <= 0) break;
-      else if (ch === '{' && paren <= 0) { open = k; break; }
+      else if (ch === '{' && paren <= 0) {
+        open = k;
+        break;
+      }
     }
     if (open < 0) continue;
     let depth = 0;
@@ -164,10 +206,13 @@ function main() {
     const count = text.endsWith('\n') ? lines.length - 1 : lines.length;
     if (count > JS_FILE_LINES) problems.push(`${file}: ${count} lines (files in www/ stay under ${JS_FILE_LINES})`);
     for (const f of jsFunctions(text)) {
-      if (listAt !== null && f.lines > listAt) survey.push([f.lines, `${file}:${f.line + 1} ${f.name}${f.closure ? ' (closure)' : ''}`]);
+      if (listAt !== null && f.lines > listAt)
+        survey.push([f.lines, `${file}:${f.line + 1} ${f.name}${f.closure ? ' (closure)' : ''}`]);
       if (excused(lines, f.line)) continue;
-      if (f.closure && f.lines > CLOSURE_LINES) problems.push(`${file}:${f.line + 1}: closure ${f.name} is ${f.lines} lines (at most ${CLOSURE_LINES})`);
-      else if (!f.closure && f.lines > FUNCTION_LINES) problems.push(`${file}:${f.line + 1}: function ${f.name} is ${f.lines} lines (at most ${FUNCTION_LINES})`);
+      if (f.closure && f.lines > CLOSURE_LINES)
+        problems.push(`${file}:${f.line + 1}: closure ${f.name} is ${f.lines} lines (at most ${CLOSURE_LINES})`);
+      else if (!f.closure && f.lines > FUNCTION_LINES)
+        problems.push(`${file}:${f.line + 1}: function ${f.name} is ${f.lines} lines (at most ${FUNCTION_LINES})`);
     }
   }
   for (const file of walk('src', ['.rs'])) {
@@ -175,12 +220,17 @@ function main() {
     const lines = text.split('\n');
     for (const f of rustFunctions(text)) {
       if (listAt !== null && f.lines > listAt) survey.push([f.lines, `${file}:${f.line + 1} fn ${f.name}`]);
-      if (f.lines > FUNCTION_LINES && !excused(lines, f.line)) problems.push(`${file}:${f.line + 1}: fn ${f.name} is ${f.lines} lines (at most ${FUNCTION_LINES})`);
+      if (f.lines > FUNCTION_LINES && !excused(lines, f.line))
+        problems.push(`${file}:${f.line + 1}: fn ${f.name} is ${f.lines} lines (at most ${FUNCTION_LINES})`);
     }
   }
-  if (listAt !== null) for (const [, s] of survey.sort((a, b) => b[0] - a[0])) console.log(`${s} — ${survey.find((x) => x[1] === s)[0]} lines`);
+  if (listAt !== null)
+    for (const [, s] of survey.sort((a, b) => b[0] - a[0]))
+      console.log(`${s} — ${survey.find((x) => x[1] === s)[0]} lines`);
   if (problems.length) {
-    console.error(`code-shape: ${problems.length} over the limits (a \`// long: <reason>\` comment directly above excuses a function):`);
+    console.error(
+      `code-shape: ${problems.length} over the limits (a \`// long: <reason>\` comment directly above excuses a function):`,
+    );
     for (const p of problems) console.error(`  ${p}`);
     process.exit(1);
   }

@@ -22,7 +22,12 @@ import { chromium } from 'playwright-core';
 import { setup, openPage, waitRenders, OUT, CHROMIUM, ARGS } from '../tests/e2e/helpers.mjs';
 
 /** Chromium flags under which WebGPU renders on SwiftShader (TOOLCHAIN.md; other subsets draw blank). */
-export const WEBGPU_FLAGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader', '--use-angle=swiftshader'];
+export const WEBGPU_FLAGS = [
+  '--enable-unsafe-webgpu',
+  '--enable-features=Vulkan',
+  '--use-vulkan=swiftshader',
+  '--use-angle=swiftshader',
+];
 
 const pct = (xs, p) => {
   if (!xs.length) return NaN;
@@ -31,7 +36,11 @@ const pct = (xs, p) => {
 };
 const r1 = (x) => (Number.isFinite(x) ? Math.round(x * 10) / 10 : null);
 const stats = (xs) => ({ median: r1(pct(xs, 0.5)), p90: r1(pct(xs, 0.9)), n: xs.length });
-const load = () => os.loadavg().map((x) => x.toFixed(2)).join(' ');
+const load = () =>
+  os
+    .loadavg()
+    .map((x) => x.toFixed(2))
+    .join(' ');
 
 /**
  * CPU time (ms, user + system, all threads) of Chromium's processes under `rootPid`, by kind
@@ -58,7 +67,9 @@ export function cpuByProcess(rootPid) {
       info.set(Number(d), { cpu, kind: type ? type[1] : 'browser' });
       if (!kids.has(ppid)) kids.set(ppid, []);
       kids.get(ppid).push(Number(d));
-    } catch { /* gone */ }
+    } catch {
+      /* gone */
+    }
   }
   const walk = (pid) => {
     const i = info.get(pid);
@@ -96,16 +107,23 @@ export async function measure3d(target, opts = {}) {
       await page.goto(opts.url);
       await waitRenders(page, 1);
     }
-    await page.waitForFunction(() => {
-      const b = __wl.q('[data-wing3d]');
-      return b && (b.dataset.state === 'unavailable' || (b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0));
-    }, null, { timeout: 120000 });
+    await page.waitForFunction(
+      () => {
+        const b = __wl.q('[data-wing3d]');
+        return (
+          b && (b.dataset.state === 'unavailable' || (b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0))
+        );
+      },
+      null,
+      { timeout: 120000 },
+    );
     const info = await page.evaluate(() => {
       const b = __wl.q('[data-wing3d]');
       const c = __wl.q('canvas.wl-w3-canvas');
       const r = c ? c.getBoundingClientRect() : null;
       return {
-        state: b.dataset.state, backend: b.dataset.backend || null,
+        state: b.dataset.state,
+        backend: b.dataset.backend || null,
         css: r ? [Math.round(r.width), Math.round(r.height)] : null,
         backing: c ? [c.width, c.height] : null,
         dpr: devicePixelRatio,
@@ -124,12 +142,21 @@ export async function measure3d(target, opts = {}) {
       const raw = w.__perf3dRaf || window.requestAnimationFrame.bind(window);
       w.__perf3dRaf = raw;
       const js = new Map();
-      window.requestAnimationFrame = (cb) => raw((ts) => {
-        const t0 = performance.now();
-        try { cb(ts); } finally { js.set(ts, (js.get(ts) || 0) + performance.now() - t0); }
-      });
+      window.requestAnimationFrame = (cb) =>
+        raw((ts) => {
+          const t0 = performance.now();
+          try {
+            cb(ts);
+          } finally {
+            js.set(ts, (js.get(ts) || 0) + performance.now() - t0);
+          }
+        });
       w.__perf3d = { ts: [], js, on: true };
-      const loop = (ts) => { if (!w.__perf3d.on) return; w.__perf3d.ts.push(ts); raw(loop); };
+      const loop = (ts) => {
+        if (!w.__perf3d.on) return;
+        w.__perf3d.ts.push(ts);
+        raw(loop);
+      };
       raw(loop);
     });
     const f0 = await page.evaluate(() => Number(__wl.q('[data-wing3d]').dataset.frames || 0));
@@ -146,8 +173,12 @@ export async function measure3d(target, opts = {}) {
       await page.evaluate(() => {
         const w = /** @type {any} */ (window);
         w.__perf3dKeys = { downs: [], ends: [] };
-        __wl.q('input[type=range][data-key="gamma0"]').addEventListener('keydown', (e) => w.__perf3dKeys.downs.push(e.timeStamp));
-        document.querySelector('wing-lab').addEventListener('wl-rendered', (e) => w.__perf3dKeys.ends.push(e.detail.end));
+        __wl
+          .q('input[type=range][data-key="gamma0"]')
+          .addEventListener('keydown', (e) => w.__perf3dKeys.downs.push(e.timeStamp));
+        document
+          .querySelector('wing-lab')
+          .addEventListener('wl-rendered', (e) => w.__perf3dKeys.ends.push(e.detail.end));
       });
       await page.focus('wing-lab input[type=range][data-key="gamma0"]');
       for (let i = 0; i < opts.sliders; i++) {
@@ -196,18 +227,27 @@ export async function measure3d(target, opts = {}) {
 }
 
 function table(rows) {
-  const head = '| backend | canvas CSS px → backing px (DPR) | rAF interval median / p90 (ms) | fps (median) | wing frames/s | JS per frame median / p90 (ms) | CPU ms per frame: renderer / GPU process / browser | ReadPixels warnings | load |';
+  const head =
+    '| backend | canvas CSS px → backing px (DPR) | rAF interval median / p90 (ms) | fps (median) | wing frames/s | JS per frame median / p90 (ms) | CPU ms per frame: renderer / GPU process / browser | ReadPixels warnings | load |';
   const lines = [head, '|---|---|---|---|---|---|---|---|---|'];
   for (const r of rows) {
-    if (!r.raf_interval_ms) { lines.push(`| ${r.backend || r.state} | – | – | – | – | – | – | – | ${r.load} |`); continue; }
-    lines.push(`| ${r.backend} | ${r.css.join('×')} → ${r.backing.join('×')} (${r.dpr}) | ${r.raf_interval_ms.median} / ${r.raf_interval_ms.p90} | ${r.fps_median} | ${r.wing_frames_per_s} | ${r.js_per_frame_ms.median} / ${r.js_per_frame_ms.p90} | ${r.cpu_ms_per_frame.renderer} / ${r.cpu_ms_per_frame['gpu-process']} / ${r.cpu_ms_per_frame.browser} | ${r.readpixels_warnings} | ${r.load} |`);
+    if (!r.raf_interval_ms) {
+      lines.push(`| ${r.backend || r.state} | – | – | – | – | – | – | – | ${r.load} |`);
+      continue;
+    }
+    lines.push(
+      `| ${r.backend} | ${r.css.join('×')} → ${r.backing.join('×')} (${r.dpr}) | ${r.raf_interval_ms.median} / ${r.raf_interval_ms.p90} | ${r.fps_median} | ${r.wing_frames_per_s} | ${r.js_per_frame_ms.median} / ${r.js_per_frame_ms.p90} | ${r.cpu_ms_per_frame.renderer} / ${r.cpu_ms_per_frame['gpu-process']} / ${r.cpu_ms_per_frame.browser} | ${r.readpixels_warnings} | ${r.load} |`,
+    );
   }
   return lines.join('\n');
 }
 
 async function main() {
   const argv = process.argv.slice(2);
-  const arg = (k, d) => { const i = argv.indexOf(k); return i >= 0 ? argv[i + 1] : d; };
+  const arg = (k, d) => {
+    const i = argv.indexOf(k);
+    return i >= 0 ? argv[i + 1] : d;
+  };
   const seconds = Number(arg('--seconds', '5'));
   const only = arg('--only', null);
   const [vw, vh] = arg('--viewport', '1280x800').split('x').map(Number);
@@ -218,12 +258,30 @@ async function main() {
   const rows = [];
   try {
     if (!only || only === 'webgl2') {
-      rows.push({ flags: 'default', ...(await measure3d(env.browser, { url: env.url + query, setup: setupJs, seconds, viewport: { width: vw, height: vh }, sliders })) });
+      rows.push({
+        flags: 'default',
+        ...(await measure3d(env.browser, {
+          url: env.url + query,
+          setup: setupJs,
+          seconds,
+          viewport: { width: vw, height: vh },
+          sliders,
+        })),
+      });
     }
     if (!only || only === 'webgpu') {
       const b = await chromium.launch({ executablePath: CHROMIUM, args: [...ARGS, ...WEBGPU_FLAGS], headless: true });
       try {
-        rows.push({ flags: 'webgpu', ...(await measure3d(b, { url: env.url + query, setup: setupJs, seconds, viewport: { width: vw, height: vh }, sliders })) });
+        rows.push({
+          flags: 'webgpu',
+          ...(await measure3d(b, {
+            url: env.url + query,
+            setup: setupJs,
+            seconds,
+            viewport: { width: vw, height: vh },
+            sliders,
+          })),
+        });
       } finally {
         await b.close();
       }

@@ -39,7 +39,9 @@ const pct = (xs, p) => {
 const r1 = (x) => Math.round(x * 10) / 10;
 
 const env = await setup();
-const log = (...a) => { if (process.env.PERF_DEBUG) console.error(...a); };
+const log = (...a) => {
+  if (process.env.PERF_DEBUG) console.error(...a);
+};
 const result = {};
 try {
   // Load-to-interactive.
@@ -60,7 +62,9 @@ try {
   if (!process.argv.includes('--latency-only')) {
     // Legacy figure (docs/lab.md): γ0 keydown → redraw finished, 40 presses.
     await page.focus('wing-lab input[type=range][data-key="gamma0"]');
-    const lat = [], comp = [], draw = [];
+    const lat = [],
+      comp = [],
+      draw = [];
     await page.evaluate(() => {
       const lab = document.querySelector('wing-lab');
       const input = __wl.q('input[type=range][data-key="gamma0"]');
@@ -145,7 +149,14 @@ try {
       if (i === 139) prev = (t1 - prev) / 119;
     }
     times.sort((a, b) => a - b);
-    const out = { backend: view.backend(), triangles: view.triangles(), size: '1280x720', frame_ms_median: Math.round(times[60] * 10) / 10, frame_ms_p90: Math.round(times[108] * 10) / 10, rAF_interval_ms: Math.round(prev * 10) / 10 };
+    const out = {
+      backend: view.backend(),
+      triangles: view.triangles(),
+      size: '1280x720',
+      frame_ms_median: Math.round(times[60] * 10) / 10,
+      frame_ms_p90: Math.round(times[108] * 10) / 10,
+      rAF_interval_ms: Math.round(prev * 10) / 10,
+    };
     view.free();
     c.remove();
     return out;
@@ -172,13 +183,23 @@ try {
     const shot = await openPage(env.browser, env.url, { width: 1280, height: 800 });
     await shot.page.goto(env.url);
     await waitRenders(shot.page, 1);
-    await shot.page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0, null, { timeout: 90000 });
+    await shot.page.waitForFunction(
+      () => __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0,
+      null,
+      { timeout: 90000 },
+    );
     await shot.page.waitForTimeout(400);
     await shot.page.mouse.move(1200, 780);
     await shot.page.screenshot({ path: path.join(ROOT, 'docs', 'lab.png') });
     // docs/lab_wing3d.png: the 3-D panel, FE wing mode set, mid-run.
     await shot.page.selectOption('wing-lab select[data-key="modes"]', 'fe');
-    await shot.page.waitForFunction(() => document.querySelector('wing-lab').fe && /mm/.test(__wl.q('.wl-w3-defl').textContent), null, { timeout: 90000 });
+    await shot.page.waitForFunction(
+      () => document.querySelector('wing-lab').fe && /mm/.test(__wl.q('.wl-w3-defl').textContent),
+      null,
+      {
+        timeout: 90000,
+      },
+    );
     await shot.page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.5125));
     await shot.page.waitForTimeout(300);
     await shot.page.locator('section.wl-wing3d').screenshot({ path: path.join(ROOT, 'docs', 'lab_wing3d.png') });
@@ -186,7 +207,11 @@ try {
     const phone = await openPage(env.browser, env.url, { width: 390, height: 844 });
     await phone.page.goto(env.url);
     await waitRenders(phone.page, 1);
-    await phone.page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0, null, { timeout: 90000 });
+    await phone.page.waitForFunction(
+      () => __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0,
+      null,
+      { timeout: 90000 },
+    );
     await phone.page.waitForTimeout(400);
     await phone.page.screenshot({ path: path.join(ROOT, 'docs', 'lab_phone.png') });
     result.screenshot = ['docs/lab.png', 'docs/lab_wing3d.png', 'docs/lab_phone.png'];
@@ -197,7 +222,11 @@ try {
     // The lab's 3-D view playing at the default layout (WebGL2 with this browser's flags):
     // rAF intervals, JS and CPU per frame (scripts/perf-3d.mjs; run it alone for WebGPU too).
     await context.close();
-    result.lab_3d_webgl2 = await measure3d(env.browser, { url: env.url, seconds: 5, viewport: { width: 1280, height: 800 } });
+    result.lab_3d_webgl2 = await measure3d(env.browser, {
+      url: env.url,
+      seconds: 5,
+      viewport: { width: 1280, height: 800 },
+    });
     log('lab 3-D view playing (WebGL2):', JSON.stringify(result.lab_3d_webgl2));
   } else {
     await context.close();
@@ -215,7 +244,10 @@ fs.writeFileSync(path.join(OUT, 'perf.json'), JSON.stringify(result, null, 2));
 console.log(JSON.stringify(result, null, 2));
 
 function machine() {
-  return `${os.cpus().length} cores, load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')} (1, 5, 15 min)`;
+  return `${os.cpus().length} cores, load average ${os
+    .loadavg()
+    .map((x) => x.toFixed(2))
+    .join(' ')} (1, 5, 15 min)`;
 }
 
 /**
@@ -244,7 +276,16 @@ async function sliderLatency(env) {
     const { page, context } = await openPage(env.browser, env.url + sc.query, { width: 1280, height: 800 });
     await page.goto(env.url + sc.query);
     await waitRenders(page, 1);
-    await page.waitForFunction(() => __wl.q('[data-wing3d]') && __wl.q('[data-wing3d]').dataset.state === 'ready' && Number(__wl.q('[data-wing3d]').dataset.frames) > 0, null, { timeout: 90000 }).catch(() => {});
+    await page
+      .waitForFunction(
+        () =>
+          __wl.q('[data-wing3d]') &&
+          __wl.q('[data-wing3d]').dataset.state === 'ready' &&
+          Number(__wl.q('[data-wing3d]').dataset.frames) > 0,
+        null,
+        { timeout: 90000 },
+      )
+      .catch(() => {});
     if (sc.play) await page.evaluate(() => __wl.lab().store.set({ playing: true }));
     await page.evaluate(() => {
       const lab = __wl.lab();
@@ -252,24 +293,45 @@ async function sliderLatency(env) {
       w.__lat = { downs: [], events: [], long: [], renders: [] };
       window.addEventListener('keydown', (e) => w.__lat.downs.push(e.timeStamp), true);
       lab.addEventListener('wl-rendered', (e) => w.__lat.renders.push(e.detail));
-      new PerformanceObserver((l) => { for (const x of l.getEntries()) if (x.name === 'keydown') w.__lat.events.push({ start: x.startTime, duration: x.duration }); })
-        .observe(/** @type {any} */ ({ type: 'event', durationThreshold: 16, buffered: false }));
-      new PerformanceObserver((l) => { for (const x of l.getEntries()) w.__lat.long.push({ start: x.startTime, duration: x.duration }); })
-        .observe({ type: 'longtask', buffered: false });
+      new PerformanceObserver((l) => {
+        for (const x of l.getEntries())
+          if (x.name === 'keydown') w.__lat.events.push({ start: x.startTime, duration: x.duration });
+      }).observe(/** @type {any} */ ({ type: 'event', durationThreshold: 16, buffered: false }));
+      new PerformanceObserver((l) => {
+        for (const x of l.getEntries()) w.__lat.long.push({ start: x.startTime, duration: x.duration });
+      }).observe({ type: 'longtask', buffered: false });
     });
     for (const key of only) {
       const sel = `wing-lab input[type=range][data-key="${key}"]`;
       await page.focus(sel);
-      const atMax = await page.evaluate((k) => { const r = __wl.q(`input[type=range][data-key="${k}"]`); return Number(r.value) >= Number(r.max) - 1e-9; }, key);
-      await page.evaluate(() => { const w = /** @type {any} */ (window); w.__lat.downs = []; w.__lat.events = []; w.__lat.long = []; w.__lat.renders = []; });
+      const atMax = await page.evaluate((k) => {
+        const r = __wl.q(`input[type=range][data-key="${k}"]`);
+        return Number(r.value) >= Number(r.max) - 1e-9;
+      }, key);
+      await page.evaluate(() => {
+        const w = /** @type {any} */ (window);
+        w.__lat.downs = [];
+        w.__lat.events = [];
+        w.__lat.long = [];
+        w.__lat.renders = [];
+      });
       const t0 = await page.evaluate(() => performance.now());
       const perPress = [];
       for (let i = 0; i < STEPS; i++) {
         const before = await page.evaluate(() => /** @type {any} */ (window).__lat.renders.length);
-        const up = (i < STEPS / 2) !== atMax;
+        const up = i < STEPS / 2 !== atMax;
         await page.keyboard.press(up ? 'ArrowRight' : 'ArrowLeft');
-        await page.waitForFunction((n) => /** @type {any} */ (window).__lat.renders.length > n, before, { timeout: 3000 }).catch(() => {});
-        const r = await page.evaluate((n) => { const w = /** @type {any} */ (window); return { down: w.__lat.downs[w.__lat.downs.length - 1], render: w.__lat.renders[w.__lat.renders.length - 1], fresh: w.__lat.renders.length > n }; }, before);
+        await page
+          .waitForFunction((n) => /** @type {any} */ (window).__lat.renders.length > n, before, { timeout: 3000 })
+          .catch(() => {});
+        const r = await page.evaluate((n) => {
+          const w = /** @type {any} */ (window);
+          return {
+            down: w.__lat.downs[w.__lat.downs.length - 1],
+            render: w.__lat.renders[w.__lat.renders.length - 1],
+            fresh: w.__lat.renders.length > n,
+          };
+        }, before);
         perPress.push(r);
         await page.waitForTimeout(GAP);
       }
@@ -287,7 +349,12 @@ async function sliderLatency(env) {
         scenario: sc.name,
         slider: key,
         presses: perPress.length,
-        keydown_to_paint_ms: { median: r1(median(paint)), p90: r1(pct(paint, 0.9)), max: r1(Math.max(...paint)), under_16: paint.filter((_, i) => !lat.events.find((x) => Math.abs(x.start - perPress[i].down) < 1)).length },
+        keydown_to_paint_ms: {
+          median: r1(median(paint)),
+          p90: r1(pct(paint, 0.9)),
+          max: r1(Math.max(...paint)),
+          under_16: paint.filter((_, i) => !lat.events.find((x) => Math.abs(x.start - perPress[i].down) < 1)).length,
+        },
         long_tasks: { count: long.length, longest_ms: long.length ? r1(Math.max(...long.map((x) => x.duration))) : 0 },
         compute_ms: compute.length ? { median: r1(median(compute)), p90: r1(pct(compute, 0.9)) } : null,
         keydown_to_plots_ms: plots.length ? { median: r1(median(plots)), p90: r1(pct(plots, 0.9)) } : null,
@@ -309,8 +376,13 @@ function latencyTable(l) {
     '|---|---|---|---|---|---|---|',
   ];
   for (const r of l.rows) {
-    lines.push(`| ${r.scenario} | ${r.slider} | ${r.keydown_to_paint_ms.median} | ${r.keydown_to_paint_ms.p90} | ${r.long_tasks.count} (${r.long_tasks.longest_ms}) | ${r.compute_ms ? `${r.compute_ms.median} / ${r.compute_ms.p90}` : '–'} | ${r.keydown_to_plots_ms ? `${r.keydown_to_plots_ms.median} / ${r.keydown_to_plots_ms.p90}` : '–'} |`);
+    lines.push(
+      `| ${r.scenario} | ${r.slider} | ${r.keydown_to_paint_ms.median} | ${r.keydown_to_paint_ms.p90} | ${r.long_tasks.count} (${r.long_tasks.longest_ms}) | ${r.compute_ms ? `${r.compute_ms.median} / ${r.compute_ms.p90}` : '–'} | ${r.keydown_to_plots_ms ? `${r.keydown_to_plots_ms.median} / ${r.keydown_to_plots_ms.p90}` : '–'} |`,
+    );
   }
-  lines.push('', 'keydown→paint: Event Timing duration (8 ms granularity; a press with no entry, i.e. under 16 ms, counts as 16).');
+  lines.push(
+    '',
+    'keydown→paint: Event Timing duration (8 ms granularity; a press with no entry, i.e. under 16 ms, counts as 16).',
+  );
   return lines.join('\n') + '\n';
 }

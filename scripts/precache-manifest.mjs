@@ -11,7 +11,15 @@ import fs from 'node:fs';
 import path from 'node:path';
 
 export const MANIFEST = 'precache.json';
-const SKIP_NAMES = new Set(['sw.js', MANIFEST, 'serve.mjs', 'serve-lib.mjs', 'README.txt', '.gitignore', 'package.json']);
+const SKIP_NAMES = new Set([
+  'sw.js',
+  MANIFEST,
+  'serve.mjs',
+  'serve-lib.mjs',
+  'README.txt',
+  '.gitignore',
+  'package.json',
+]);
 const SKIP_ENDINGS = ['.d.ts', '.map', '.tmp'];
 
 /**
@@ -27,7 +35,8 @@ export function precacheFiles(dir) {
       const r = rel ? `${rel}/${ent.name}` : ent.name;
       if (ent.name.startsWith('.')) continue;
       if (ent.isDirectory()) walk(r);
-      else if (ent.isFile() && !SKIP_NAMES.has(ent.name) && !SKIP_ENDINGS.some((e) => ent.name.endsWith(e))) out.push(r);
+      else if (ent.isFile() && !SKIP_NAMES.has(ent.name) && !SKIP_ENDINGS.some((e) => ent.name.endsWith(e)))
+        out.push(r);
     }
   };
   walk('');

@@ -103,6 +103,8 @@ if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.me
   startServer(root, port, { cors })
     .catch(() => startServer(root, 0, { cors }))
     .then(({ url }) => {
-      console.log(`wingbeat lab: ${url}  (embed demo: ${url}embed-demo.html${cors ? '; CORS: any origin' : ''}; Ctrl-C stops)`);
+      console.log(
+        `wingbeat lab: ${url}  (embed demo: ${url}embed-demo.html${cors ? '; CORS: any origin' : ''}; Ctrl-C stops)`,
+      );
     });
 }

@@ -55,7 +55,8 @@ function argmax(y, i0, i1) {
  */
 export function beatWindow(t, env, period, { beats = 3 } = {}) {
   const n = t.length;
-  const t0 = t[0], t1 = t[n - 1];
+  const t0 = t[0],
+    t1 = t[n - 1];
   const dur = t1 - t0;
   if (!period || !(period > 0) || period * (beats + 1) > dur || !env || env.length !== n) {
     return { x0: t0, x1: t1, mark: null, measured: null };
@@ -101,7 +102,8 @@ export function smooth(env, width) {
   const out = new Float64Array(n);
   const h = Math.floor(w / 2);
   for (let i = 0; i < n; i++) {
-    const a = Math.max(0, i - h), b = Math.min(n, i - h + w);
+    const a = Math.max(0, i - h),
+      b = Math.min(n, i - h + w);
     out[i] = (c[b] - c[a]) / (b - a);
   }
   return out;
@@ -127,7 +129,8 @@ export function smooth(env, width) {
  */
 export function beatFate(info, growthRate, duration, { floor = 0.05 } = {}) {
   if (info.period == null) return { kind: 'none', tau: null, goneAt: null, floor };
-  if (!info.stable || !(growthRate < 0) || !Number.isFinite(growthRate)) return { kind: 'steady', tau: null, goneAt: null, floor };
+  if (!info.stable || !(growthRate < 0) || !Number.isFinite(growthRate))
+    return { kind: 'steady', tau: null, goneAt: null, floor };
   const tau = -1 / growthRate;
   const goneAt = tau * Math.log(1 / floor);
   if (goneAt <= info.period) return { kind: 'gone', tau, goneAt, floor };
@@ -144,7 +147,8 @@ export function beatFate(info, growthRate, duration, { floor = 0.05 } = {}) {
  * @param {number} b
  */
 export function modulation(t, env, a, b) {
-  let mx = -Infinity, mn = Infinity;
+  let mx = -Infinity,
+    mn = Infinity;
   for (let i = 0; i < t.length; i++) {
     if (t[i] < a || t[i] > b) continue;
     if (env[i] > mx) mx = env[i];

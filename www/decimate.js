@@ -26,11 +26,20 @@ export function decimate(x, ys, buckets) {
     xo[2 * j + 1] = x[Math.min(n - 1, (lo + hi) >> 1)];
     for (let k = 0; k < ys.length; k++) {
       const y = ys[k];
-      let mn = y[lo], mx = y[lo], imn = lo, imx = lo;
+      let mn = y[lo],
+        mx = y[lo],
+        imn = lo,
+        imx = lo;
       for (let i = lo + 1; i < hi; i++) {
         const v = y[i];
-        if (v < mn) { mn = v; imn = i; }
-        if (v > mx) { mx = v; imx = i; }
+        if (v < mn) {
+          mn = v;
+          imn = i;
+        }
+        if (v > mx) {
+          mx = v;
+          imx = i;
+        }
       }
       yo[k][2 * j] = imn <= imx ? mn : mx;
       yo[k][2 * j + 1] = imn <= imx ? mx : mn;

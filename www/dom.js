@@ -24,7 +24,11 @@ export function el(tag, props = {}, ...children) {
     else if (k === 'text') e.textContent = v;
     else if (k === 'rich') e.append(rich(v));
     else if (k === 'style' && typeof v === 'string') e.style.cssText = v;
-    else if (k.startsWith('aria-') || k.startsWith('data-') || ['role', 'for', 'hidden', 'tabindex', 'title', 'scope', 'colspan'].includes(k)) {
+    else if (
+      k.startsWith('aria-') ||
+      k.startsWith('data-') ||
+      ['role', 'for', 'hidden', 'tabindex', 'title', 'scope', 'colspan'].includes(k)
+    ) {
       if (v !== false && v != null) e.setAttribute(k, v === true ? '' : String(v));
     } else asProps[k] = v;
   }
@@ -83,20 +87,31 @@ export const STYLESHEETS = ['vendor/uPlot.min.css', 'style.css'];
  * @returns {Promise<void>}
  */
 export function shadowStyles(root) {
-  const BASE = ':host { display: block; } :host([hidden]) { display: none; } .wl-root[data-css=loading] { visibility: hidden; }';
+  const BASE =
+    ':host { display: block; } :host([hidden]) { display: none; } .wl-root[data-css=loading] { visibility: hidden; }';
   // A constructed sheet (CSSOM) is not an inline <style>, so a page's CSP needs no 'unsafe-inline'.
-  if (!baseSheet && typeof CSSStyleSheet === 'function' && 'replaceSync' in CSSStyleSheet.prototype && 'adoptedStyleSheets' in root) {
+  if (
+    !baseSheet &&
+    typeof CSSStyleSheet === 'function' &&
+    'replaceSync' in CSSStyleSheet.prototype &&
+    'adoptedStyleSheets' in root
+  ) {
     baseSheet = new CSSStyleSheet();
     baseSheet.replaceSync(BASE);
   }
   if (baseSheet) root.adoptedStyleSheets = [baseSheet];
   else root.append(el('style', { text: BASE }));
-  return Promise.all(STYLESHEETS.map((href) => new Promise((resolve) => {
-    const link = el('link', { rel: 'stylesheet', href: new URL(href, HERE).href });
-    link.addEventListener('load', resolve, { once: true });
-    link.addEventListener('error', resolve, { once: true });
-    root.append(link);
-  }))).then(() => undefined);
+  return Promise.all(
+    STYLESHEETS.map(
+      (href) =>
+        new Promise((resolve) => {
+          const link = el('link', { rel: 'stylesheet', href: new URL(href, HERE).href });
+          link.addEventListener('load', resolve, { once: true });
+          link.addEventListener('error', resolve, { once: true });
+          root.append(link);
+        }),
+    ),
+  ).then(() => undefined);
 }
 
 /**

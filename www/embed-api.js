@@ -92,7 +92,12 @@ export function startEmbedApi(labEl, opts = {}) {
     const html = document.documentElement;
     // The <html> box is as tall as the content (height: auto); scrollHeight would never shrink
     // below the frame's own height. Body margins are 0 in embed mode (page.css).
-    const h = Math.ceil(Math.max(html.getBoundingClientRect().height, document.body ? document.body.getBoundingClientRect().bottom + window.scrollY : 0));
+    const h = Math.ceil(
+      Math.max(
+        html.getBoundingClientRect().height,
+        document.body ? document.body.getBoundingClientRect().bottom + window.scrollY : 0,
+      ),
+    );
     if (h > 0 && h !== lastHeight) {
       lastHeight = h;
       post({ type: `${PREFIX}height`, height: h }, broadcastOrigin);
@@ -137,7 +142,9 @@ export function startEmbedApi(labEl, opts = {}) {
           feff: fmt(f.effective_freq_hz, 6),
           mod: fmt(f.max_modulus, 8),
           beat: f.beat_period_s == null ? '— (none)' : `${fmt(f.beat_period_s, 4)} (n = ${f.beat_harmonic})`,
-          stable: f.stable ? `stable (growth ${fmt(f.growth_rate_per_s, 2)} 1/s)` : `UNSTABLE (growth ${fmt(f.growth_rate_per_s, 3)} 1/s)`,
+          stable: f.stable
+            ? `stable (growth ${fmt(f.growth_rate_per_s, 2)} 1/s)`
+            : `UNSTABLE (growth ${fmt(f.growth_rate_per_s, 3)} 1/s)`,
         },
       };
     });
@@ -161,7 +168,8 @@ export function startEmbedApi(labEl, opts = {}) {
   };
 
   /** A key of the parameters that decide the computation (panels and exp left out). */
-  const computeKey = (/** @type {import('./state.js').Params} */ p) => toQuery({ ...p, panels: PANELS.slice(), exp: '', screen: '' });
+  const computeKey = (/** @type {import('./state.js').Params} */ p) =>
+    toQuery({ ...p, panels: PANELS.slice(), exp: '', screen: '' });
 
   /** Whether the latest result belongs to the current parameters. */
   const current = () => {
@@ -172,23 +180,29 @@ export function startEmbedApi(labEl, opts = {}) {
   };
 
   /** Resolves once the result matches the parameters (or rejects after a timeout). */
-  const settled = () => new Promise((resolve, reject) => {
-    if (current()) return resolve(undefined);
-    const done = () => {
-      if (!current()) return;
-      clearTimeout(timer);
-      lab.removeEventListener('wl-rendered', done);
-      resolve(undefined);
-    };
-    const timer = setTimeout(() => {
-      lab.removeEventListener('wl-rendered', done);
-      const err = (lab.shadowRoot || lab).querySelector('.wl-error:not([hidden])');
-      reject(new Error(err && err.textContent ? err.textContent : `no result within ${SETTLE_TIMEOUT_MS / 1000} s`));
-    }, SETTLE_TIMEOUT_MS);
-    lab.addEventListener('wl-rendered', done);
-  });
+  const settled = () =>
+    new Promise((resolve, reject) => {
+      if (current()) return resolve(undefined);
+      const done = () => {
+        if (!current()) return;
+        clearTimeout(timer);
+        lab.removeEventListener('wl-rendered', done);
+        resolve(undefined);
+      };
+      const timer = setTimeout(() => {
+        lab.removeEventListener('wl-rendered', done);
+        const err = (lab.shadowRoot || lab).querySelector('.wl-error:not([hidden])');
+        reject(new Error(err && err.textContent ? err.textContent : `no result within ${SETTLE_TIMEOUT_MS / 1000} s`));
+      }, SETTLE_TIMEOUT_MS);
+      lab.addEventListener('wl-rendered', done);
+    });
 
-  const stateMsg = (/** @type {string} */ type, /** @type {unknown} */ id) => ({ type: `${PREFIX}${type}`, id, params: params(), results: results() });
+  const stateMsg = (/** @type {string} */ type, /** @type {unknown} */ id) => ({
+    type: `${PREFIX}${type}`,
+    id,
+    params: params(),
+    results: results(),
+  });
 
   // After every recompute: results to the subscribers.
   const onRendered = () => {
@@ -221,15 +235,25 @@ export function startEmbedApi(labEl, opts = {}) {
     const into = /** @type {Record<string, unknown>} */ (/** @type {unknown} */ (parsed.state));
     for (const [key] of pairs) if (!parsed.rejected.some((r) => r.key === short(key))) patch[key] = into[key];
     // exp opens a guided experiment with its parameters, as its chip does (values set with it win).
-    if (typeof patch.exp === 'string' && patch.exp) Object.assign(patch, experimentPatch(patch.exp, Object.keys(patch)));
+    if (typeof patch.exp === 'string' && patch.exp)
+      Object.assign(patch, experimentPatch(patch.exp, Object.keys(patch)));
     // The selected mode must exist in the mode set it will be used with.
     if ('mode' in patch || 'modes' in patch) {
       const st = store();
       const s = st ? st.get() : null;
       const modesSet = /** @type {string} */ ('modes' in patch ? patch.modes : s ? s.modes : 'paper');
-      const n = modesSet === 'fe' ? (s && s.fe ? s.fe.modes.length : Number('n_modes' in patch ? patch.n_modes : s ? s.n_modes : 2)) : 2;
+      const n =
+        modesSet === 'fe'
+          ? s && s.fe
+            ? s.fe.modes.length
+            : Number('n_modes' in patch ? patch.n_modes : s ? s.n_modes : 2)
+          : 2;
       const mode = Number('mode' in patch ? patch.mode : s ? s.mode : 1);
-      if (mode > n) errors.push({ field: 'mode', message: `mode: expected 1 to ${n} (the modes of the ${modesSet === 'fe' ? 'FE wing' : 'paper table'})` });
+      if (mode > n)
+        errors.push({
+          field: 'mode',
+          message: `mode: expected 1 to ${n} (the modes of the ${modesSet === 'fe' ? 'FE wing' : 'paper table'})`,
+        });
     }
     return { patch, errors };
   };
@@ -247,8 +271,11 @@ export function startEmbedApi(labEl, opts = {}) {
     const to = e.origin && e.origin !== 'null' ? e.origin : '*';
     const env = checkEnvelope(d);
     const id = env.id;
-    const fail = (/** @type {string} */ code, /** @type {string} */ message, /** @type {Record<string, unknown>} */ more = {}) =>
-      post({ type: `${PREFIX}error`, id, request: shortKey(d.type), code, message, ...more }, to);
+    const fail = (
+      /** @type {string} */ code,
+      /** @type {string} */ message,
+      /** @type {Record<string, unknown>} */ more = {},
+    ) => post({ type: `${PREFIX}error`, id, request: shortKey(d.type), code, message, ...more }, to);
     if (env.error) return fail(env.error.code, env.error.message, { field: env.error.field, ...env.error.more });
     const st = store();
     switch (d.type) {
@@ -257,7 +284,10 @@ export function startEmbedApi(labEl, opts = {}) {
         try {
           await settled();
         } catch (err) {
-          return fail('no-result', `no result for the current parameters: ${err instanceof Error ? err.message : String(err)}`);
+          return fail(
+            'no-result',
+            `no result for the current parameters: ${err instanceof Error ? err.message : String(err)}`,
+          );
         }
         return post(stateMsg('state', id), to);
       case `${PREFIX}set`: {
@@ -272,7 +302,10 @@ export function startEmbedApi(labEl, opts = {}) {
           try {
             await settled();
           } catch (err) {
-            return fail('no-result', `the parameters were set but gave no result: ${err instanceof Error ? err.message : String(err)}`);
+            return fail(
+              'no-result',
+              `the parameters were set but gave no result: ${err instanceof Error ? err.message : String(err)}`,
+            );
           }
         }
         return post(stateMsg('state', id), to);
@@ -290,7 +323,10 @@ export function startEmbedApi(labEl, opts = {}) {
         subscribers.delete(to);
         return post({ type: `${PREFIX}unsubscribed`, id }, to);
       default:
-        return fail('unknown-type', `type: unknown message type ${JSON.stringify(String(d.type).slice(0, 40))}; this lab knows ${['set', 'get', 'subscribe', 'unsubscribe'].map((t) => PREFIX + t).join(', ')}`);
+        return fail(
+          'unknown-type',
+          `type: unknown message type ${JSON.stringify(String(d.type).slice(0, 40))}; this lab knows ${['set', 'get', 'subscribe', 'unsubscribe'].map((t) => PREFIX + t).join(', ')}`,
+        );
     }
   };
   addEventListener('message', onMessage);
@@ -299,7 +335,9 @@ export function startEmbedApi(labEl, opts = {}) {
   // Tell the parent the API is listening (with the parameter names it accepts).
   post({ type: `${PREFIX}ready`, params: params(), accepts: acceptedKeys() }, broadcastOrigin);
 
-  return () => cleanups.forEach((f) => f());
+  return () => {
+    for (const f of cleanups) f();
+  };
 }
 
 /** @param {string} key */
@@ -337,16 +375,42 @@ function kindOf(v) {
  */
 export function checkEnvelope(d) {
   const rawId = d.id;
-  const idOk = rawId === undefined || rawId === null || (typeof rawId === 'number' && Number.isFinite(rawId)) ||
+  const idOk =
+    rawId === undefined ||
+    rawId === null ||
+    (typeof rawId === 'number' && Number.isFinite(rawId)) ||
     (typeof rawId === 'string' && rawId.length <= MAX_ID_CHARS);
   const id = idOk && rawId !== undefined ? rawId : null;
   if (d.version !== API_VERSION) {
     const v = d.version;
-    const got = typeof v === 'number' || typeof v === 'boolean' ? String(v) : typeof v === 'string' ? JSON.stringify(shortKey(v)) : v === undefined ? 'none' : kindOf(v);
-    return { id, error: { code: 'bad-version', field: 'version', message: `version: this lab speaks version ${API_VERSION} of the wingbeat message API; got ${got}`, more: { supported: [API_VERSION] } } };
+    const got =
+      typeof v === 'number' || typeof v === 'boolean'
+        ? String(v)
+        : typeof v === 'string'
+          ? JSON.stringify(shortKey(v))
+          : v === undefined
+            ? 'none'
+            : kindOf(v);
+    return {
+      id,
+      error: {
+        code: 'bad-version',
+        field: 'version',
+        message: `version: this lab speaks version ${API_VERSION} of the wingbeat message API; got ${got}`,
+        more: { supported: [API_VERSION] },
+      },
+    };
   }
   if (!idOk) {
-    return { id: null, error: { code: 'bad-id', field: 'id', message: `id: expected a finite number or a string of at most ${MAX_ID_CHARS} characters; got ${kindOf(rawId)}`, more: {} } };
+    return {
+      id: null,
+      error: {
+        code: 'bad-id',
+        field: 'id',
+        message: `id: expected a finite number or a string of at most ${MAX_ID_CHARS} characters; got ${kindOf(rawId)}`,
+        more: {},
+      },
+    };
   }
   return { id, error: null };
 }
@@ -367,28 +431,55 @@ export function paramPairs(raw) {
   const pairs = [];
   const proto = raw && typeof raw === 'object' ? Object.getPrototypeOf(raw) : undefined;
   if (!raw || typeof raw !== 'object' || (proto !== Object.prototype && proto !== null)) {
-    return { pairs, errors: [{ field: 'params', message: `params: expected an object such as { "gamma0": 0.1 }; got ${kindOf(raw)}` }], fatal: true };
+    return {
+      pairs,
+      errors: [
+        { field: 'params', message: `params: expected an object such as { "gamma0": 0.1 }; got ${kindOf(raw)}` },
+      ],
+      fatal: true,
+    };
   }
   let n = 0;
   for (const k in raw) if (Object.hasOwn(raw, k) && ++n > MAX_KEYS) break;
   if (n === 0 || n > MAX_KEYS) {
-    return { pairs, errors: [{ field: 'params', message: `params: expected 1 to ${MAX_KEYS} parameters; got ${n > MAX_KEYS ? 'more' : 'none'}` }], fatal: true };
+    return {
+      pairs,
+      errors: [
+        {
+          field: 'params',
+          message: `params: expected 1 to ${MAX_KEYS} parameters; got ${n > MAX_KEYS ? 'more' : 'none'}`,
+        },
+      ],
+      fatal: true,
+    };
   }
   const obj = /** @type {Record<string, unknown>} */ (raw);
   for (const key of Object.keys(obj)) {
     const v = obj[key];
     const field = short(key);
     if (Object.hasOwn(NOT_SETTABLE, key)) {
-      errors.push({ field, message: `${field}: not settable by message (${NOT_SETTABLE[/** @type {keyof typeof NOT_SETTABLE} */ (key)]})` });
+      errors.push({
+        field,
+        message: `${field}: not settable by message (${NOT_SETTABLE[/** @type {keyof typeof NOT_SETTABLE} */ (key)]})`,
+      });
     } else if (typeof v === 'number' && Number.isFinite(v)) {
       pairs.push([key, String(v)]);
     } else if (typeof v === 'string' && v.length <= MAX_VALUE_CHARS) {
       pairs.push([key, v]);
-    } else if (key === 'panels' && Array.isArray(v) && v.length <= 2 * PANELS.length && v.every((x) => typeof x === 'string' && x.length <= 40)) {
+    } else if (
+      key === 'panels' &&
+      Array.isArray(v) &&
+      v.length <= 2 * PANELS.length &&
+      v.every((x) => typeof x === 'string' && x.length <= 40)
+    ) {
       pairs.push([key, v.join(',')]);
     } else {
-      const want = typeof v === 'number' ? 'a finite number' : typeof v === 'string' ? `text of at most ${MAX_VALUE_CHARS} characters` :
-        `a number or a string${key === 'panels' ? ` (or a list of at most ${2 * PANELS.length} panel names)` : ''}`;
+      const want =
+        typeof v === 'number'
+          ? 'a finite number'
+          : typeof v === 'string'
+            ? `text of at most ${MAX_VALUE_CHARS} characters`
+            : `a number or a string${key === 'panels' ? ` (or a list of at most ${2 * PANELS.length} panel names)` : ''}`;
       errors.push({ field, message: `${field}: expected ${want}; got ${kindOf(v)}` });
     }
   }

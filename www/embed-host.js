@@ -23,8 +23,14 @@
   /** @param {MessageEvent} e @param {HTMLIFrameElement} frame */
   function fromLab(e, frame) {
     var d = e.data;
-    return e.source === frame.contentWindow && e.origin === originOf(frame) &&
-      !!d && typeof d === 'object' && d.version === 1 && typeof d.type === 'string';
+    return (
+      e.source === frame.contentWindow &&
+      e.origin === originOf(frame) &&
+      !!d &&
+      typeof d === 'object' &&
+      d.version === 1 &&
+      typeof d.type === 'string'
+    );
   }
 
   // 1. Auto-height for every iframe[data-wingbeat].
@@ -58,34 +64,62 @@
     });
     /** @param {string} type @param {Record<string, unknown>} [more] */
     function request(type, more) {
-      var id = 'h' + (++seq);
+      var id = 'h' + ++seq;
       var target = originOf(frame);
       return new Promise(function (resolve, reject) {
         var msg = Object.assign({ type: 'wingbeat:' + type, version: 1, id: id }, more || {});
         var w = frame.contentWindow;
-        if (!w) { reject({ type: 'wingbeat:error', code: 'no-frame', message: 'the iframe has no window' }); return; }
+        if (!w) {
+          reject({ type: 'wingbeat:error', code: 'no-frame', message: 'the iframe has no window' });
+          return;
+        }
         // A request posted while the lab is still starting can be missed: it is sent again once
         // after 3 s (the same id; every request is idempotent). The lab answers within 30 s
         // (else 'no-result'), so silence for 40 s means no lab listens: a 'timeout' error.
-        var resend = setTimeout(function () { var again = frame.contentWindow; if (again) again.postMessage(msg, target === 'null' ? '*' : target); }, 3000);
+        var resend = setTimeout(function () {
+          var again = frame.contentWindow;
+          if (again) again.postMessage(msg, target === 'null' ? '*' : target);
+        }, 3000);
         var give = setTimeout(function () {
           delete waiting[id];
-          reject({ type: 'wingbeat:error', code: 'timeout', message: 'no reply from the lab within 40 s (is the frame loaded, and is this origin allowed?)' });
+          reject({
+            type: 'wingbeat:error',
+            code: 'timeout',
+            message: 'no reply from the lab within 40 s (is the frame loaded, and is this origin allowed?)',
+          });
         }, 40000);
         waiting[id] = {
-          resolve: function (d) { clearTimeout(resend); clearTimeout(give); resolve(d); },
-          reject: function (d) { clearTimeout(resend); clearTimeout(give); reject(d); },
+          resolve: function (d) {
+            clearTimeout(resend);
+            clearTimeout(give);
+            resolve(d);
+          },
+          reject: function (d) {
+            clearTimeout(resend);
+            clearTimeout(give);
+            reject(d);
+          },
         };
         w.postMessage(msg, target === 'null' ? '*' : target);
       });
     }
     return {
       /** @param {Record<string, number | string | string[]>} params */
-      set: function (params) { return request('set', { params: params }); },
-      get: function () { return request('get'); },
+      set: function (params) {
+        return request('set', { params: params });
+      },
+      get: function () {
+        return request('get');
+      },
       /** @param {(msg: any) => void} fn */
-      subscribe: function (fn) { onResult = fn; return request('subscribe'); },
-      unsubscribe: function () { onResult = null; return request('unsubscribe'); },
+      subscribe: function (fn) {
+        onResult = fn;
+        return request('subscribe');
+      },
+      unsubscribe: function () {
+        onResult = null;
+        return request('unsubscribe');
+      },
     };
   }
   /** @type {any} */ (window).wingbeatLab = wingbeatLab;

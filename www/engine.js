@@ -83,7 +83,11 @@ export function plainWingInput(params, points) {
 }
 
 /** The live result of a wasm analysis, with its angles. */
-function liveResult(/** @type {ReturnType<typeof liveAsk>} */ ask, /** @type {Analysis} */ a, /** @type {number} */ ms) {
+function liveResult(
+  /** @type {ReturnType<typeof liveAsk>} */ ask,
+  /** @type {Analysis} */ a,
+  /** @type {number} */ ms,
+) {
   /** @type {LiveResult} */
   const res = { cfg: ask.cfg, k: ask.k, params: ask.params, analysis: a, angles: a.angles, compute_ms: ms };
   return res;
@@ -136,7 +140,9 @@ export function createEngine(deps = {}) {
     initial: deps.feInput || FE_LAB_INPUT,
     solve: (input, onProgress) => jobs.run(JOB.fe, { input, opts: { json: true } }, onProgress),
   });
-  const modesAt = createPointStrains((f, p) => need().modalStrainAt(f.nodes, f.triangles, f.strain_nodes, f.modes.length, p));
+  const modesAt = createPointStrains((f, p) =>
+    need().modalStrainAt(f.nodes, f.triangles, f.strain_nodes, f.modes.length, p),
+  );
 
   const engine = {
     /** Resolves to the wasm module once loaded (and remembers its default config). */
@@ -243,7 +249,10 @@ export function createEngine(deps = {}) {
       return need().checkPlanform(points);
     },
     /** Measured kinematics from CSV text (wasm `kinematicsFromCsv`). */
-    kinematicsFromCsv(/** @type {string} */ text, /** @type {import('./pkg/wingbeat.js').CsvKinematicsOptions} */ opts) {
+    kinematicsFromCsv(
+      /** @type {string} */ text,
+      /** @type {import('./pkg/wingbeat.js').CsvKinematicsOptions} */ opts,
+    ) {
       return need().kinematicsFromCsv(text, opts);
     },
     /**

@@ -95,9 +95,10 @@ export function measureBeat(env, fs, flapHz, from = 0, to = 1) {
       armed = false;
     }
   }
-  const period_s = ups.length >= 2 && mx - mn > 1e-12 * Math.max(Math.abs(mx), 1e-300)
-    ? (ups[ups.length - 1] - ups[0]) / (ups.length - 1)
-    : null;
+  const period_s =
+    ups.length >= 2 && mx - mn > 1e-12 * Math.max(Math.abs(mx), 1e-300)
+      ? (ups[ups.length - 1] - ups[0]) / (ups.length - 1)
+      : null;
   return { modulation_index, period_s, crossings: ups.length };
 }
 
@@ -154,17 +155,20 @@ function coriolisBeat(a, k) {
 }
 
 function beatLines(b, duration) {
-  return `f_{eff} = ${fmt(b.feff, 4)} Hz and the Coriolis force drives at 2 f_d = ${fmt(2 * b.fd, 4)} Hz, so the envelope should repeat every ` +
-    `T_{beat} = 1/|${fmt(b.feff, 4)} − ${fmt(2 * b.fd, 4)}| = ${fmt(b.predicted, 3)} s (${fmt(duration / b.predicted, 3)} beats in the ${fmt(duration, 3)} s run).`;
+  return (
+    `f_{eff} = ${fmt(b.feff, 4)} Hz and the Coriolis force drives at 2 f_d = ${fmt(2 * b.fd, 4)} Hz, so the envelope should repeat every ` +
+    `T_{beat} = 1/|${fmt(b.feff, 4)} − ${fmt(2 * b.fd, 4)}| = ${fmt(b.predicted, 3)} s (${fmt(duration / b.predicted, 3)} beats in the ${fmt(duration, 3)} s run).`
+  );
 }
 
 function beatCheck(b, tol) {
   const holds = b.measured != null && relErr(b.measured, b.predicted) <= tol;
   return {
     id: 'beat-period',
-    label: b.measured == null
-      ? 'Beat period measured from the envelope: no full beat in this run'
-      : `Beat period measured from the envelope: ${fmt(b.measured, 4)} s (Floquet ${fmt(b.predicted, 4)} s, ${fmt(100 * relErr(b.measured, b.predicted), 2)} % apart; allowed ${fmt(100 * tol, 2)} %)`,
+    label:
+      b.measured == null
+        ? 'Beat period measured from the envelope: no full beat in this run'
+        : `Beat period measured from the envelope: ${fmt(b.measured, 4)} s (Floquet ${fmt(b.predicted, 4)} s, ${fmt(100 * relErr(b.measured, b.predicted), 2)} % apart; allowed ${fmt(100 * tol, 2)} %)`,
     holds,
     value: b.measured,
     expected: b.predicted,
@@ -185,9 +189,7 @@ export const EXPERIMENTS = [
       const k = ctx.mode ?? 0;
       const b = coriolisBeat(a, k);
       const dur = a.sim.t[a.sim.t.length - 1];
-      const lines = [
-        `Floquet theory, ${modeName(a, k)}: the flapping softens the wing, ` + beatLines(b, dur),
-      ];
+      const lines = [`Floquet theory, ${modeName(a, k)}: the flapping softens the wing, ` + beatLines(b, dur)];
       const checks = [beatCheck(b, 0.02)];
       return { lines, checks, values: { feff: b.feff, fd: b.fd, predicted_s: b.predicted, measured_s: b.measured } };
     },
@@ -211,8 +213,20 @@ export const EXPERIMENTS = [
         `What is left is the Euler (${fmt(c.euler, 3)} %) and centrifugal (${fmt(c.centrifugal, 3)} %) response of ${modeName(a, k)}: no Coriolis beat, so nothing here could tell the insect that its body turned.`,
       ];
       const checks = [
-        { id: 'coriolis-zero', label: `Coriolis response identically zero in every mode (max |q| = ${peaks.map((p) => fmt(p, 3)).join(', ')})`, holds: peaks.every((p) => p === 0), value: Math.max(...peaks), expected: 0 },
-        { id: 'envelope-zero', label: `Coriolis envelope identically zero (max ${fmt(envPeak, 3)})`, holds: envPeak === 0, value: envPeak, expected: 0 },
+        {
+          id: 'coriolis-zero',
+          label: `Coriolis response identically zero in every mode (max |q| = ${peaks.map((p) => fmt(p, 3)).join(', ')})`,
+          holds: peaks.every((p) => p === 0),
+          value: Math.max(...peaks),
+          expected: 0,
+        },
+        {
+          id: 'envelope-zero',
+          label: `Coriolis envelope identically zero (max ${fmt(envPeak, 3)})`,
+          holds: envPeak === 0,
+          value: envPeak,
+          expected: 0,
+        },
       ];
       return { lines, checks, values: { coriolis_peak: Math.max(...peaks), envelope_peak: envPeak } };
     },
@@ -237,14 +251,26 @@ export const EXPERIMENTS = [
       const early = measureBeat(env, fs, fd, 0, 0.1);
       const late = measureBeat(env, fs, fd, 0.8, 1);
       const ratio = late.modulation_index > 0 ? early.modulation_index / late.modulation_index : Infinity;
-      const decay = Math.exp(-0.7 * dur / tau);
+      const decay = Math.exp((-0.7 * dur) / tau);
       const lines = [
         `With ζ = ${fmt(zeta, 3)} the free vibration at f_{eff} = ${fmt(m.floquet.effective_freq_hz, 4)} Hz decays as exp(−ζ ω_${k + 1} t), time constant 1/(ζ·2π·${fmt(m.freq_hz, 4)} Hz) = ${fmt(tau, 3)} s; by the last fifth of the ${fmt(dur, 3)} s run it is down to ${fmt(decay, 2)} of its start, so the beat should vanish and only the forced vibration at 2 f_d = ${fmt(2 * fd, 4)} Hz stay.`,
         `Envelope modulation index (max − min)/(max + min): ${fmt(early.modulation_index, 3)} in the first tenth, ${fmt(late.modulation_index, 2)} in the last fifth — ${Number.isFinite(ratio) ? fmt(ratio, 3) + '×' : 'infinitely'} lower.`,
       ];
       const checks = [
-        { id: 'modulation-drop', label: `Beat modulation falls at least 10× (measured ${Number.isFinite(ratio) ? fmt(ratio, 3) : '∞'}×)`, holds: ratio >= 10, value: ratio, expected: 10 },
-        { id: 'stable', label: `Floquet: stable, growth rate ${fmt(m.floquet.growth_rate_per_s, 3)} 1/s (−ζω = ${fmt(-zeta * omega, 3)} 1/s)`, holds: m.floquet.stable && m.floquet.growth_rate_per_s < 0, value: m.floquet.growth_rate_per_s, expected: -zeta * omega },
+        {
+          id: 'modulation-drop',
+          label: `Beat modulation falls at least 10× (measured ${Number.isFinite(ratio) ? fmt(ratio, 3) : '∞'}×)`,
+          holds: ratio >= 10,
+          value: ratio,
+          expected: 10,
+        },
+        {
+          id: 'stable',
+          label: `Floquet: stable, growth rate ${fmt(m.floquet.growth_rate_per_s, 3)} 1/s (−ζω = ${fmt(-zeta * omega, 3)} 1/s)`,
+          holds: m.floquet.stable && m.floquet.growth_rate_per_s < 0,
+          value: m.floquet.growth_rate_per_s,
+          expected: -zeta * omega,
+        },
       ];
       return { lines, checks, values: { early: early.modulation_index, late: late.modulation_index, ratio, tau } };
     },
@@ -271,14 +297,28 @@ export const EXPERIMENTS = [
         const sm = s.modes[k];
         const cor = Array.from(sm.coriolis);
         const vals = Array.from(s.values);
-        lines.push(`The sweep over γ_0 = ${fmt(vals[0], 3)} … ${fmt(vals[vals.length - 1], 3)} rad gives the Coriolis share ${cor.map((v) => fmt(v, 3)).join(', ')} %.`);
+        lines.push(
+          `The sweep over γ_0 = ${fmt(vals[0], 3)} … ${fmt(vals[vals.length - 1], 3)} rad gives the Coriolis share ${cor.map((v) => fmt(v, 3)).join(', ')} %.`,
+        );
         let rising = true;
         for (let i = 1; i < cor.length; i++) if (!(cor[i] >= cor[i - 1] - 1e-9)) rising = false;
-        checks.push({ id: 'share-rises', label: `Coriolis share rises with γ_0 over the sweep (${fmt(cor[0], 3)} → ${fmt(cor[cor.length - 1], 3)} %)`, holds: rising && cor[cor.length - 1] > cor[0], value: cor[cor.length - 1] - cor[0], expected: 0 });
+        checks.push({
+          id: 'share-rises',
+          label: `Coriolis share rises with γ_0 over the sweep (${fmt(cor[0], 3)} → ${fmt(cor[cor.length - 1], 3)} %)`,
+          holds: rising && cor[cor.length - 1] > cor[0],
+          value: cor[cor.length - 1] - cor[0],
+          expected: 0,
+        });
         if (g != null) {
           const j = vals.findIndex((v) => Math.abs(v - g) < 1e-9);
           if (j >= 0) {
-            checks.push({ id: 'share-matches', label: `Sweep at γ_0 = ${fmt(g, 3)} rad equals this run (${fmt(cor[j], 6)} vs ${fmt(m.contribution_percent.coriolis, 6)} %)`, holds: Math.abs(cor[j] - m.contribution_percent.coriolis) < 1e-6, value: cor[j], expected: m.contribution_percent.coriolis });
+            checks.push({
+              id: 'share-matches',
+              label: `Sweep at γ_0 = ${fmt(g, 3)} rad equals this run (${fmt(cor[j], 6)} vs ${fmt(m.contribution_percent.coriolis, 6)} %)`,
+              holds: Math.abs(cor[j] - m.contribution_percent.coriolis) < 1e-6,
+              value: cor[j],
+              expected: m.contribution_percent.coriolis,
+            });
           }
         }
       } else {
@@ -305,8 +345,16 @@ export const EXPERIMENTS = [
       const checks = [];
       const r = ctx.study;
       if (r && r.coriolis_percent) {
-        lines.push(`Over ${r.n_q}×${r.n_qdot} starts spanning the forced response’s own range (q_0 from ${fmt(r.q0[0], 3)} to ${fmt(r.q0[r.q0.length - 1], 3)} ${UNITS.q.label}, “${r.attribution}” attribution) the share runs from ${fmt(r.min_percent, 3)} % to ${fmt(r.max_percent, 3)} %; ${fmt(100 * r.fraction_above_60, 3)} % of the starts give more than 60 % (the paper: most of them).`);
-        checks.push({ id: 'rest-inside', label: `The share from rest (${fmt(rest, 4)} %) lies inside the map’s range ${fmt(r.min_percent, 3)}–${fmt(r.max_percent, 3)} %`, holds: rest >= r.min_percent - 1e-9 && rest <= r.max_percent + 1e-9, value: rest, expected: [r.min_percent, r.max_percent] });
+        lines.push(
+          `Over ${r.n_q}×${r.n_qdot} starts spanning the forced response’s own range (q_0 from ${fmt(r.q0[0], 3)} to ${fmt(r.q0[r.q0.length - 1], 3)} ${UNITS.q.label}, “${r.attribution}” attribution) the share runs from ${fmt(r.min_percent, 3)} % to ${fmt(r.max_percent, 3)} %; ${fmt(100 * r.fraction_above_60, 3)} % of the starts give more than 60 % (the paper: most of them).`,
+        );
+        checks.push({
+          id: 'rest-inside',
+          label: `The share from rest (${fmt(rest, 4)} %) lies inside the map’s range ${fmt(r.min_percent, 3)}–${fmt(r.max_percent, 3)} %`,
+          holds: rest >= r.min_percent - 1e-9 && rest <= r.max_percent + 1e-9,
+          value: rest,
+          expected: [r.min_percent, r.max_percent],
+        });
       } else {
         lines.push('The initial-condition map is computing in the worker…');
       }
@@ -328,10 +376,20 @@ export const EXPERIMENTS = [
       const dur = a.sim.t[a.sim.t.length - 1];
       const n = Math.max(1, Math.round(b.feff / b.fd));
       const lines = [
-        `f_d = ${fmt(b.fd, 4)} Hz is close to f_{eff}/2 (f_${k + 1}/2 = ${fmt(m.freq_hz / 2, 4)} Hz unsoftened): the Coriolis force’s line at 2 f_d sits ${fmt(Math.abs(b.feff - 2 * b.fd), 3)} Hz from the effective natural frequency. ` + beatLines(b, dur),
+        `f_d = ${fmt(b.fd, 4)} Hz is close to f_{eff}/2 (f_${k + 1}/2 = ${fmt(m.freq_hz / 2, 4)} Hz unsoftened): the Coriolis force’s line at 2 f_d sits ${fmt(Math.abs(b.feff - 2 * b.fd), 3)} Hz from the effective natural frequency. ` +
+          beatLines(b, dur),
         `The nearer n·f_d comes to f_{eff}, the longer and larger the beat; at f_{eff} = n·f_d exactly the response would grow without bound (here n = ${n}: ${n}·f_d = ${fmt(n * b.fd, 4)} Hz). Max |λ| = ${fmt(m.floquet.max_modulus, 6)}: ${m.floquet.stable ? 'still stable' : 'unstable'}.`,
       ];
-      const checks = [beatCheck(b, 0.03), { id: 'stable', label: `Still Floquet-stable (max |λ| = ${fmt(m.floquet.max_modulus, 8)})`, holds: m.floquet.max_modulus <= 1 + 1e-9, value: m.floquet.max_modulus, expected: 1 }];
+      const checks = [
+        beatCheck(b, 0.03),
+        {
+          id: 'stable',
+          label: `Still Floquet-stable (max |λ| = ${fmt(m.floquet.max_modulus, 8)})`,
+          holds: m.floquet.max_modulus <= 1 + 1e-9,
+          value: m.floquet.max_modulus,
+          expected: 1,
+        },
+      ];
       const r = ctx.study;
       if (r && r.flap_hz && r.modes) lines.push(resonanceSummary(r).sentence);
       return { lines, checks, values: { feff: b.feff, predicted_s: b.predicted, measured_s: b.measured } };
@@ -359,8 +417,20 @@ export const EXPERIMENTS = [
         `Here f_{eff}/f_d = ${fmt(ratio, 4)}: the mode sits in an instability tongue near f_{eff} = ${Math.round(ratio)}·f_d. Measured from the peaks of q_{total} over the second half of the run: σ = ${fmt(measured, 4)} 1/s.`,
       ];
       const checks = [
-        { id: 'unstable', label: `max |λ| = ${fmt(f.max_modulus, 8)} > 1 (unstable)`, holds: f.max_modulus > 1 && !f.stable, value: f.max_modulus, expected: 1 },
-        { id: 'growth', label: `Response grows at the Floquet rate (measured ${fmt(measured, 4)} 1/s vs ${fmt(sigma, 4)} 1/s, within 15 %)`, holds: measured != null && relErr(measured, sigma) <= 0.15, value: measured, expected: sigma },
+        {
+          id: 'unstable',
+          label: `max |λ| = ${fmt(f.max_modulus, 8)} > 1 (unstable)`,
+          holds: f.max_modulus > 1 && !f.stable,
+          value: f.max_modulus,
+          expected: 1,
+        },
+        {
+          id: 'growth',
+          label: `Response grows at the Floquet rate (measured ${fmt(measured, 4)} 1/s vs ${fmt(sigma, 4)} 1/s, within 15 %)`,
+          holds: measured != null && relErr(measured, sigma) <= 0.15,
+          value: measured,
+          expected: sigma,
+        },
       ];
       const r = ctx.study;
       if (r && r.flap_hz && r.modes) lines.push(resonanceSummary(r).sentence);
@@ -383,7 +453,13 @@ export const EXPERIMENTS = [
         `The model predicts that a body rotation ω_b adds Coriolis and centrifugal forcing to every mode of the flapping wing: the frame's rate becomes Ω = R^T ω_b + Ω_{wing}, so the rotation-induced strain Δε grows in proportion to ω_b for small rates and its detectability D = E_Δ/(ρ^2E_F + σ^2) with ω_b^2. Without rotation the ${modeName(a, k)} already carries a Coriolis share of ${fmt(cor, 3)} % of its response at f_d = ${fmt(fd, 4)} Hz (from the yaw of the stroke); the rotation signal rides on these same forces, so it appears at the flap harmonics n·f_d and near the modes' natural frequencies.`,
       ];
       const checks = [
-        { id: 'coriolis-present', label: `The flapping wing already feels a Coriolis force (share ${fmt(cor, 3)} % > 0), the channel through which body rotation reaches the strain`, holds: cor > 0, value: cor, expected: 0 },
+        {
+          id: 'coriolis-present',
+          label: `The flapping wing already feels a Coriolis force (share ${fmt(cor, 3)} % > 0), the channel through which body rotation reaches the strain`,
+          holds: cor > 0,
+          value: cor,
+          expected: 0,
+        },
       ];
       return { lines, checks, values: { coriolis_percent: cor } };
     },
@@ -520,7 +596,10 @@ export function resonanceSummary(r, row = 0) {
     const feff = sl(m.effective_freq_hz);
     const mod = sl(m.max_modulus);
     const stable = sl(m.stable);
-    const unstable = bands(fd, stable.map((s) => !s));
+    const unstable = bands(
+      fd,
+      stable.map((s) => !s),
+    );
     let im = 0;
     for (let i = 1; i < nx; i++) if (mod[i] > mod[im]) im = i;
     return {

@@ -9,10 +9,22 @@ import { parseRich, plain, fmt, fmtRich } from './format.js';
 /** CSV text from named columns (header "name (unit)"), `#` comment lines first. */
 export function toCSV(columns, comments = []) {
   const lines = comments.map((c) => `# ${c}`);
-  lines.push(columns.map((c) => (c.unit ? `${c.name} (${c.unit})` : c.name)).map(csvCell).join(','));
+  lines.push(
+    columns
+      .map((c) => (c.unit ? `${c.name} (${c.unit})` : c.name))
+      .map(csvCell)
+      .join(','),
+  );
   const n = Math.max(...columns.map((c) => c.values.length));
   for (let i = 0; i < n; i++) {
-    lines.push(columns.map((c) => { const v = c.values[i]; return v == null || Number.isNaN(v) ? '' : String(v); }).join(','));
+    lines.push(
+      columns
+        .map((c) => {
+          const v = c.values[i];
+          return v == null || Number.isNaN(v) ? '' : String(v);
+        })
+        .join(','),
+    );
   }
   return lines.join('\n') + '\n';
 }
@@ -41,7 +53,8 @@ export function niceTicks(lo, hi, count = 6) {
   const mag = 10 ** Math.floor(Math.log10(raw));
   const step = [1, 2, 2.5, 5, 10].map((m) => m * mag).find((s) => s >= raw) || 10 * mag;
   const out = [];
-  for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step) out.push(Math.abs(v) < step * 1e-9 ? 0 : Number(v.toPrecision(12)));
+  for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step)
+    out.push(Math.abs(v) < step * 1e-9 ? 0 : Number(v.toPrecision(12)));
   return out;
 }
 
@@ -51,7 +64,7 @@ export function niceTicks(lo, hi, count = 6) {
  * (labels that fit nowhere get row -1 and should be left out).
  */
 export function placeLabels(items, { gap = 4, maxRows = 3 } = {}) {
-  const order = items.map((it, i) => i).sort((a, b) => items[a].x - items[b].x);
+  const order = items.map((_it, i) => i).sort((a, b) => items[a].x - items[b].x);
   const ends = [];
   const rows = new Array(items.length).fill(-1);
   for (const i of order) {
@@ -92,8 +105,15 @@ export function canvasPainter(ctx) {
   const font = (size, weight = 'normal') => `${weight} ${size}px ${FONT}`;
   return {
     rect(x, y, w, h, fill, stroke) {
-      if (fill) { ctx.fillStyle = fill; ctx.fillRect(x, y, w, h); }
-      if (stroke) { ctx.strokeStyle = stroke; ctx.lineWidth = 1; ctx.strokeRect(x + 0.5, y + 0.5, w, h); }
+      if (fill) {
+        ctx.fillStyle = fill;
+        ctx.fillRect(x, y, w, h);
+      }
+      if (stroke) {
+        ctx.strokeStyle = stroke;
+        ctx.lineWidth = 1;
+        ctx.strokeRect(x + 0.5, y + 0.5, w, h);
+      }
     },
     line(pts, color, width = 1, dash = /** @type {number[] | null} */ (null), alpha = 1) {
       if (pts.length < 4) return;
@@ -106,8 +126,12 @@ export function canvasPainter(ctx) {
       ctx.beginPath();
       let pen = false;
       for (let i = 0; i < pts.length; i += 2) {
-        const x = pts[i], y = pts[i + 1];
-        if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
+        const x = pts[i],
+          y = pts[i + 1];
+        if (!Number.isFinite(x) || !Number.isFinite(y)) {
+          pen = false;
+          continue;
+        }
         if (pen) ctx.lineTo(x, y);
         else ctx.moveTo(x, y);
         pen = true;
@@ -121,7 +145,12 @@ export function canvasPainter(ctx) {
      * @param {string} s rich markup
      * @param {{ size?: number, weight?: string, color?: string, align?: 'left' | 'center' | 'right', baseline?: CanvasTextBaseline, rotate?: number }} [o]
      */
-    text(x, y, s, { size = 12, weight = 'normal', color = '#222', align = 'left', baseline = 'alphabetic', rotate = 0 } = {}) {
+    text(
+      x,
+      y,
+      s,
+      { size = 12, weight = 'normal', color = '#222', align = 'left', baseline = 'alphabetic', rotate = 0 } = {},
+    ) {
       ctx.save();
       ctx.translate(x, y);
       if (rotate) ctx.rotate(rotate);
@@ -162,31 +191,53 @@ const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replac
 export function svgPainter(width, height, measureFn = null) {
   /** @type {string[]} */
   const parts = [];
-  const measure = (s, size = 12) => (measureFn ? measureFn(s, size) : parseRich(s).reduce((w, r) => w + approxWidth(r.text, r.kind !== 'normal' ? size * 0.72 : size), 0));
+  const measure = (s, size = 12) =>
+    measureFn
+      ? measureFn(s, size)
+      : parseRich(s).reduce((w, r) => w + approxWidth(r.text, r.kind !== 'normal' ? size * 0.72 : size), 0);
   return {
     rect(x, y, w, h, fill, stroke) {
-      parts.push(`<rect x="${x}" y="${y}" width="${w}" height="${h}" fill="${fill || 'none'}"${stroke ? ` stroke="${stroke}"` : ''}/>`);
+      parts.push(
+        `<rect x="${x}" y="${y}" width="${w}" height="${h}" fill="${fill || 'none'}"${stroke ? ` stroke="${stroke}"` : ''}/>`,
+      );
     },
     line(pts, color, width = 1, dash = /** @type {number[] | null} */ (null), alpha = 1) {
       let d = '';
       let pen = false;
       for (let i = 0; i < pts.length; i += 2) {
-        const x = pts[i], y = pts[i + 1];
-        if (!Number.isFinite(x) || !Number.isFinite(y)) { pen = false; continue; }
+        const x = pts[i],
+          y = pts[i + 1];
+        if (!Number.isFinite(x) || !Number.isFinite(y)) {
+          pen = false;
+          continue;
+        }
         d += `${pen ? 'L' : 'M'}${x.toFixed(2)} ${y.toFixed(2)}`;
         pen = true;
       }
       if (!d) return;
-      parts.push(`<path d="${d}" fill="none" stroke="${color}" stroke-width="${width}"${dash ? ` stroke-dasharray="${dash.join(' ')}"` : ''}${alpha < 1 ? ` stroke-opacity="${alpha}"` : ''} stroke-linejoin="round"/>`);
+      parts.push(
+        `<path d="${d}" fill="none" stroke="${color}" stroke-width="${width}"${dash ? ` stroke-dasharray="${dash.join(' ')}"` : ''}${alpha < 1 ? ` stroke-opacity="${alpha}"` : ''} stroke-linejoin="round"/>`,
+      );
     },
-    text(x, y, s, { size = 12, weight = 'normal', color = '#222', align = 'left', baseline = 'alphabetic', rotate = 0 } = {}) {
+    text(
+      x,
+      y,
+      s,
+      { size = 12, weight = 'normal', color = '#222', align = 'left', baseline = 'alphabetic', rotate = 0 } = {},
+    ) {
       const anchor = align === 'center' ? 'middle' : align === 'right' ? 'end' : 'start';
       const base = baseline === 'top' ? 'hanging' : baseline === 'middle' ? 'middle' : 'auto';
       const spans = parseRich(s)
-        .map((r) => (r.kind === 'normal' ? `<tspan>${esc(r.text)}</tspan>` : `<tspan baseline-shift="${r.kind === 'sub' ? 'sub' : 'super'}" font-size="${Math.round(size * 0.72)}">${esc(r.text)}</tspan>`))
+        .map((r) =>
+          r.kind === 'normal'
+            ? `<tspan>${esc(r.text)}</tspan>`
+            : `<tspan baseline-shift="${r.kind === 'sub' ? 'sub' : 'super'}" font-size="${Math.round(size * 0.72)}">${esc(r.text)}</tspan>`,
+        )
         .join('');
       const tr = rotate ? ` transform="rotate(${(rotate * 180) / Math.PI} ${x} ${y})"` : '';
-      parts.push(`<text x="${x}" y="${y}" font-size="${size}" font-weight="${weight}" fill="${color}" text-anchor="${anchor}" dominant-baseline="${base}"${tr}>${spans}</text>`);
+      parts.push(
+        `<text x="${x}" y="${y}" font-size="${size}" font-weight="${weight}" fill="${color}" text-anchor="${anchor}" dominant-baseline="${base}"${tr}>${spans}</text>`,
+      );
     },
     measure,
     toString() {
@@ -220,12 +271,16 @@ export function drawFigure(p, fig, width, height) {
   // Legend block at the bottom: swatch + label, wrapped in rows.
   const sw = 14;
   const legendItems = [];
-  let lx = 16, rowsH = 0;
+  let lx = 16,
+    rowsH = 0;
   const legendW = width - 32;
   const itemW = inLegend.map((s) => sw + 6 + p.measure(s.label, 12) + 18);
   let row = 0;
   inLegend.forEach((s, i) => {
-    if (lx + itemW[i] > 16 + legendW && lx > 16) { row++; lx = 16; }
+    if (lx + itemW[i] > 16 + legendW && lx > 16) {
+      row++;
+      lx = 16;
+    }
     legendItems.push({ s, x: lx, row });
     lx += itemW[i];
   });
@@ -237,15 +292,22 @@ export function drawFigure(p, fig, width, height) {
   plot.height = Math.max(60, bottom - 44 - plot.top);
   // Axis titles (horizontal, above each y axis: never clipped, never rotated).
   p.text(plot.left - 70, plot.top - 10, fig.yLabel || '', { size: 12, color: '#222' });
-  if (hasY2) p.text(plot.left + plot.width + 70, plot.top - 10, fig.y2Label || '', { size: 12, color: '#222', align: 'right' });
-  p.text(plot.left + plot.width, plot.top + plot.height + 36, fig.xLabel || '', { size: 12, color: '#222', align: 'right' });
+  if (hasY2)
+    p.text(plot.left + plot.width + 70, plot.top - 10, fig.y2Label || '', { size: 12, color: '#222', align: 'right' });
+  p.text(plot.left + plot.width, plot.top + plot.height + 36, fig.xLabel || '', {
+    size: 12,
+    color: '#222',
+    align: 'right',
+  });
   // Scales.
   const x = fig.x;
   let [x0, x1] = fig.xRange || [x[0], x[x.length - 1]];
   if (!(x1 > x0)) x1 = x0 + 1;
-  const i0 = lowerBound(x, x0), i1 = Math.min(x.length, lowerBound(x, x1) + 1);
+  const i0 = lowerBound(x, x0),
+    i1 = Math.min(x.length, lowerBound(x, x1) + 1);
   const range = (scale) => {
-    let lo = Infinity, hi = -Infinity;
+    let lo = Infinity,
+      hi = -Infinity;
     for (const s of visible) {
       if ((s.scale || 'y') !== scale) continue;
       for (let i = i0; i < i1; i++) {
@@ -261,7 +323,10 @@ export function drawFigure(p, fig, width, height) {
       lo = Math.floor(Math.max(lo, hi - 14));
       return [lo, Math.max(hi, lo + 1)];
     }
-    if (hi === lo) { hi += Math.abs(hi) || 1; lo -= Math.abs(lo) || 1; }
+    if (hi === lo) {
+      hi += Math.abs(hi) || 1;
+      lo -= Math.abs(lo) || 1;
+    }
     const pad = 0.05 * (hi - lo);
     return [lo - pad, hi + pad];
   };
@@ -270,7 +335,8 @@ export function drawFigure(p, fig, width, height) {
   const Y = (v, sc = 'y') => plot.top + plot.height - ((v - ys[sc][0]) / (ys[sc][1] - ys[sc][0])) * plot.height;
   // Bands (e.g. the marked beat) under everything.
   for (const b of fig.bands || []) {
-    const bx0 = Math.max(plot.left, X(b.x0)), bx1 = Math.min(plot.left + plot.width, X(b.x1));
+    const bx0 = Math.max(plot.left, X(b.x0)),
+      bx1 = Math.min(plot.left + plot.width, X(b.x1));
     if (bx1 > bx0) p.rect(bx0, plot.top, bx1 - bx0, plot.height, b.fill || 'rgba(122,60,194,0.10)');
   }
   // Grid, ticks, labels.
@@ -283,7 +349,9 @@ export function drawFigure(p, fig, width, height) {
   for (const sc of hasY2 ? ['y', 'y2'] : ['y']) {
     const [lo, hi] = ys[sc];
     const log = fig.log && fig.log[sc];
-    const ticks = log ? niceTicks(lo, hi, 6).filter(Number.isInteger) : niceTicks(lo, hi, Math.max(3, Math.round(plot.height / 60)));
+    const ticks = log
+      ? niceTicks(lo, hi, 6).filter(Number.isInteger)
+      : niceTicks(lo, hi, Math.max(3, Math.round(plot.height / 60)));
     for (const v of ticks) {
       const py = Y(v, sc);
       if (sc === 'y') p.line([plot.left, py, plot.left + plot.width, py], '#e6e6e6', 1);
@@ -299,16 +367,34 @@ export function drawFigure(p, fig, width, height) {
     const cols = Math.max(1, Math.round(plot.width * 2));
     const step = Math.max(1, Math.floor((i1 - i0) / cols));
     for (let i = i0; i < i1; i += step) {
-      let mn = Infinity, mx = -Infinity, imn = i, imx = i;
+      let mn = Infinity,
+        mx = -Infinity,
+        imn = i,
+        imx = i;
       for (let j = i; j < Math.min(i1, i + step); j++) {
         const v = s.y[j];
         if (v == null || !Number.isFinite(v)) continue;
-        if (v < mn) { mn = v; imn = j; }
-        if (v > mx) { mx = v; imx = j; }
+        if (v < mn) {
+          mn = v;
+          imn = j;
+        }
+        if (v > mx) {
+          mx = v;
+          imx = j;
+        }
       }
-      if (!Number.isFinite(mn)) { pts.push(NaN, NaN); continue; }
-      const first = imn <= imx ? mn : mx, second = imn <= imx ? mx : mn;
-      pts.push(X(x[Math.min(imn, imx)]), clampY(Y(first, sc), plot), X(x[Math.max(imn, imx)]), clampY(Y(second, sc), plot));
+      if (!Number.isFinite(mn)) {
+        pts.push(NaN, NaN);
+        continue;
+      }
+      const first = imn <= imx ? mn : mx,
+        second = imn <= imx ? mx : mn;
+      pts.push(
+        X(x[Math.min(imn, imx)]),
+        clampY(Y(first, sc), plot),
+        X(x[Math.max(imn, imx)]),
+        clampY(Y(second, sc), plot),
+      );
     }
     p.line(pts, s.color, s.width || 1.3, s.dash || null);
   }
@@ -318,14 +404,21 @@ export function drawFigure(p, fig, width, height) {
   marks.forEach((m, i) => {
     const px = X(m.x);
     p.line([px, plot.top, px, plot.top + plot.height], m.color || '#888', 1, m.dash || null);
-    if (m.label && rows[i] >= 0) p.text(px + 3, plot.top + 13 + rows[i] * 14, m.label, { size: 11, color: m.color || '#555' });
+    if (m.label && rows[i] >= 0)
+      p.text(px + 3, plot.top + 13 + rows[i] * 14, m.label, { size: 11, color: m.color || '#555' });
   });
   for (const b of fig.bands || []) {
     if (!b.label) continue;
-    const bx0 = X(b.x0), bx1 = X(b.x1);
+    const bx0 = X(b.x0),
+      bx1 = X(b.x1);
     const by = plot.top + plot.height - 12;
     p.line([bx0, by - 5, bx0, by, bx1, by, bx1, by - 5], b.color || '#7a3cc2', 1.5);
-    p.text((bx0 + bx1) / 2, by - 8, b.label, { size: 12, weight: 'bold', align: 'center', color: b.color || '#7a3cc2' });
+    p.text((bx0 + bx1) / 2, by - 8, b.label, {
+      size: 12,
+      weight: 'bold',
+      align: 'center',
+      color: b.color || '#7a3cc2',
+    });
   }
   // Legend.
   const legend = [];
@@ -349,7 +442,8 @@ function clampY(v, plot) {
 }
 
 function lowerBound(x, v) {
-  let lo = 0, hi = x.length;
+  let lo = 0,
+    hi = x.length;
   while (lo < hi) {
     const mid = (lo + hi) >> 1;
     if (x[mid] < v) lo = mid + 1;
@@ -405,7 +499,10 @@ export function figurePNG(fig, width = 900, height = 560, scale = 2) {
 export function tablePNG(title, params, rows, scale = 2) {
   const probe = canvasPainter(context2d(document.createElement('canvas')));
   const cols = rows[0].length;
-  const widths = Array.from({ length: cols }, (_, j) => Math.max(...rows.map((r) => probe.measure(plain(String(r[j])), 12))) + 18);
+  const widths = Array.from(
+    { length: cols },
+    (_, j) => Math.max(...rows.map((r) => probe.measure(plain(String(r[j])), 12))) + 18,
+  );
   const width = Math.max(520, 32 + widths.reduce((a, b) => a + b, 0));
   const paramLines = wrap(probe, params, width - 32, 12);
   const height = 60 + paramLines.length * 16 + rows.length * 20 + 10;
@@ -418,7 +515,10 @@ export function tablePNG(title, params, rows, scale = 2) {
   p.rect(0, 0, width, height, '#fff');
   p.text(16, 26, title, { size: 17, weight: 'bold', color: '#111' });
   let y = 46;
-  for (const l of paramLines) { p.text(16, y, l, { size: 12, color: '#444' }); y += 16; }
+  for (const l of paramLines) {
+    p.text(16, y, l, { size: 12, color: '#444' });
+    y += 16;
+  }
   y += 8;
   rows.forEach((r, i) => {
     let x = 16;

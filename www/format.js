@@ -38,7 +38,22 @@ export function fmtRich(v, digits = 3) {
   return `${m[1]}×10^{${Number(m[2])}}`.replace('-', '−');
 }
 
-const SUP = { '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹', '-': '⁻', '−': '⁻', '+': '⁺', '½': '½' };
+const SUP = {
+  0: '⁰',
+  1: '¹',
+  2: '²',
+  3: '³',
+  4: '⁴',
+  5: '⁵',
+  6: '⁶',
+  7: '⁷',
+  8: '⁸',
+  9: '⁹',
+  '-': '⁻',
+  '−': '⁻',
+  '+': '⁺',
+  '½': '½',
+};
 
 /**
  * Splits rich markup into runs: [{ text, kind: 'normal' | 'sub' | 'sup' }]. `_` and `^` take
@@ -84,7 +99,8 @@ export function parseRich(s) {
 export function plain(s) {
   return parseRich(s)
     .map((r) => {
-      if (r.kind === 'sup') return [...r.text].every((ch) => SUP[ch]) ? [...r.text].map((ch) => SUP[ch]).join('') : r.text;
+      if (r.kind === 'sup')
+        return [...r.text].every((ch) => SUP[ch]) ? [...r.text].map((ch) => SUP[ch]).join('') : r.text;
       return r.text;
     })
     .join('');

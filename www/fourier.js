@@ -27,7 +27,8 @@ export function sampledSeries(values, maxHarmonic) {
   const hmax = Math.min(Math.floor(n / 2), maxHarmonic ?? DEFAULT_SAMPLED_MAX_HARMONIC);
   const out = [mean];
   for (let h = 1; h <= hmax; h++) {
-    let cs = 0, sn = 0;
+    let cs = 0,
+      sn = 0;
     for (let j = 0; j < n; j++) {
       const th = (2 * Math.PI * ((h * j) % n)) / n;
       cs += values[j] * Math.cos(th);

@@ -15,11 +15,16 @@ export function hull2(xs, ys) {
     /** @type {number[]} */
     const ext = [];
     for (let d = 0; d < 16; d++) {
-      const c = Math.cos((Math.PI * d) / 8), sn = Math.sin((Math.PI * d) / 8);
-      let best = 0, bv = -Infinity;
+      const c = Math.cos((Math.PI * d) / 8),
+        sn = Math.sin((Math.PI * d) / 8);
+      let best = 0,
+        bv = -Infinity;
       for (let i = 0; i < n; i++) {
         const v = c * xs[i] + sn * ys[i];
-        if (v > bv) { bv = v; best = i; }
+        if (v > bv) {
+          bv = v;
+          best = i;
+        }
       }
       if (ext[ext.length - 1] !== best && ext[0] !== best) ext.push(best);
     }
@@ -32,8 +37,12 @@ export function hull2(xs, ys) {
       for (let i = 0; i < n; i++) {
         let inside = true;
         for (let j = 0; j < m; j++) {
-          const a = ext[j], b = ext[(j + 1) % m];
-          if ((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) <= 0) { inside = false; break; }
+          const a = ext[j],
+            b = ext[(j + 1) % m];
+          if ((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) <= 0) {
+            inside = false;
+            break;
+          }
         }
         if (!inside) kept.push(i);
       }
@@ -41,7 +50,8 @@ export function hull2(xs, ys) {
   }
   const idx = (cand || Array.from({ length: n }, (_, i) => i)).sort((a, b) => xs[a] - xs[b] || ys[a] - ys[b]);
   const cross = (o, a, b) => (xs[a] - xs[o]) * (ys[b] - ys[o]) - (ys[a] - ys[o]) * (xs[b] - xs[o]);
-  const lower = [], upper = [];
+  const lower = [],
+    upper = [];
   for (const i of idx) {
     while (lower.length >= 2 && cross(lower[lower.length - 2], lower[lower.length - 1], i) <= 0) lower.pop();
     lower.push(i);

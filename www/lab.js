@@ -87,10 +87,46 @@ export { loadWasm } from './engine.js';
 /** @typedef {import('./lab/types.js').ViewContext} ViewContext */
 /** @typedef {import('./lab/types.js').View} View */
 
-const VIEWS = { controls, numbers, time, spectrum, strain, studies, wing3d, report, experiments, resonance, wing, kinematics, modeshape, sensing };
+const VIEWS = {
+  controls,
+  numbers,
+  time,
+  spectrum,
+  strain,
+  studies,
+  wing3d,
+  report,
+  experiments,
+  resonance,
+  wing,
+  kinematics,
+  modeshape,
+  sensing,
+};
 /** DOM (= tab) order of the panels; layout.js places them so that it is also the visual order. */
-export const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'sensing', 'studies', 'resonance', 'report'];
-const PARAM_KEYS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'planform'];
+export const LAYOUT = [
+  'wing3d',
+  'controls',
+  'time',
+  'experiments',
+  'wing',
+  'kinematics',
+  'spectrum',
+  'numbers',
+  'modeshape',
+  'strain',
+  'sensing',
+  'studies',
+  'resonance',
+  'report',
+];
+const PARAM_KEYS = [
+  ...NUMERIC.map((p) => p.key),
+  ...ENUMS.map((e) => e.key),
+  ...WING.map((w) => w.key),
+  'outline',
+  'planform',
+];
 const EVENT = { bubbles: true, composed: true };
 let instances = 0;
 /** Labs built so far on this page: the second one on is "lab 2", … in its sections' names. */
@@ -122,7 +158,9 @@ export class WingLab extends HTMLElement {
   gridCols = '';
   gridAreas = '';
 
-  static get observedAttributes() { return ['embed', 'layout', ...LIVE_ATTRS]; }
+  static get observedAttributes() {
+    return ['embed', 'layout', ...LIVE_ATTRS];
+  }
 
   constructor() {
     super();
@@ -158,24 +196,62 @@ export class WingLab extends HTMLElement {
   }
 
   // ---------- test and embedding hooks ----------
-  get state() { return this.store ? paramsOf(this.store.get()) : defaults(); }
-  get analysis() { const r = this.store && this.store.get().result; return r ? r.analysis : undefined; }
-  get plots() { const o = {}; for (const [k, p] of Object.entries(this.plotReg)) o[k] = p.u; return o; }
-  get studies() { return this.views.studies ? this.views.studies.studies : {}; }
-  get wing3d() { return this.views.wing3d; }
-  get timeCursor() { return this.store ? this.store.get().t3d : null; }
-  get fe() { return this.engine ? this.engine.fe : null; }
-  config() { return this.engine.config(this.state); }
-  modeIndex() { return Number(this.state.mode) - 1; }
+  get state() {
+    return this.store ? paramsOf(this.store.get()) : defaults();
+  }
+  get analysis() {
+    const r = this.store && this.store.get().result;
+    return r ? r.analysis : undefined;
+  }
+  get plots() {
+    const o = {};
+    for (const [k, p] of Object.entries(this.plotReg)) o[k] = p.u;
+    return o;
+  }
+  get studies() {
+    return this.views.studies ? this.views.studies.studies : {};
+  }
+  get wing3d() {
+    return this.views.wing3d;
+  }
+  get timeCursor() {
+    return this.store ? this.store.get().t3d : null;
+  }
+  get fe() {
+    return this.engine ? this.engine.fe : null;
+  }
+  config() {
+    return this.engine.config(this.state);
+  }
+  modeIndex() {
+    return Number(this.state.mode) - 1;
+  }
 
   connectedCallback() {
     if (this.built) return;
     this.built = true;
     if (!this.ordinal) this.ordinal = ++labsBuilt;
     const syncUrl = this.hasAttribute('sync-url');
-    const attrs = /** @type {[string, string][]} */ ([...this.attributes].filter((a) => !a.name.startsWith('aria-') && !a.name.startsWith('data-')).map((a) => [a.name, a.value]));
+    const attrs = /** @type {[string, string][]} */ (
+      [...this.attributes]
+        .filter((a) => !a.name.startsWith('aria-') && !a.name.startsWith('data-'))
+        .map((a) => [a.name, a.value])
+    );
     const { params, rejected } = initialState({ attrs, search: syncUrl ? location.search : null });
-    this.store = createStore({ ...params, screen: params.screen || '', result: null, fe: null, t3d: null, playing: false, timing: null, status: 'loading wasm…', wing: null, kin: null, strain_point: null, strain_map: null });
+    this.store = createStore({
+      ...params,
+      screen: params.screen || '',
+      result: null,
+      fe: null,
+      t3d: null,
+      playing: false,
+      timing: null,
+      status: 'loading wasm…',
+      wing: null,
+      kin: null,
+      strain_point: null,
+      strain_map: null,
+    });
     this.engine = createEngine();
     this.draws = createDraws({
       store: this.store,
@@ -183,10 +259,18 @@ export class WingLab extends HTMLElement {
       live: () => !!this.built,
       rendered: (r, t1) => this.finishRender(r, t1),
     });
-    this.url = createUrlSync({ store: this.store, engine: this.engine, notice: (t) => this.notice(t), params: () => this.state });
+    this.url = createUrlSync({
+      store: this.store,
+      engine: this.engine,
+      notice: (t) => this.notice(t),
+      params: () => this.state,
+    });
     this.build();
     if (rejected.length) {
-      this.notice(`Ignored ${rejected.length} invalid parameter(s), using defaults instead: ` + rejected.map((r) => `${r.key} (${r.why})`).join('; '));
+      this.notice(
+        `Ignored ${rejected.length} invalid parameter(s), using defaults instead: ` +
+          rejected.map((r) => `${r.key} (${r.why})`).join('; '),
+      );
     }
     this.subscribe();
     this.engine
@@ -198,7 +282,9 @@ export class WingLab extends HTMLElement {
         this.render();
         // The live worker starts when someone is about to use the lab (focus or pointer inside
         // it, or the first parameter change), so it is ready before the first key press.
-        const warm = () => { if (this.built) this.engine.warmLive(); };
+        const warm = () => {
+          if (this.built) this.engine.warmLive();
+        };
         this.root.addEventListener('focusin', warm, { once: true });
         this.root.addEventListener('pointerdown', warm, { once: true });
         if (this.store.get().panels.includes('wing3d')) this.views.wing3d.startWhenVisible();
@@ -218,18 +304,32 @@ export class WingLab extends HTMLElement {
       this.store.subscribe(['panels', 'screen'], () => this.applyPanels()),
       this.store.subscribe(['exp', 'screen'], (st, changed) => {
         // Choosing an experiment (chip, attribute, message) opens its screen.
-        if (st.exp && changed.includes('exp') && !changed.includes('screen') && EXPERIMENT_SCREEN[st.exp]) this.store.set({ screen: EXPERIMENT_SCREEN[st.exp] });
+        if (st.exp && changed.includes('exp') && !changed.includes('screen') && EXPERIMENT_SCREEN[st.exp])
+          this.store.set({ screen: EXPERIMENT_SCREEN[st.exp] });
         if (syncUrl()) this.url.scheduleQuery();
       }),
-      this.store.subscribe(['body_rate', 'body_axis'], () => { if (syncUrl()) this.url.scheduleQuery(); }),
-      this.store.subscribe(WING_KEYS, () => { this.wantWing(); this.schedule(); }),
+      this.store.subscribe(['body_rate', 'body_axis'], () => {
+        if (syncUrl()) this.url.scheduleQuery();
+      }),
+      this.store.subscribe(WING_KEYS, () => {
+        this.wantWing();
+        this.schedule();
+      }),
       this.store.subscribe(['modes', 'mode'], (st) => {
         const n = st.modes === 'fe' ? (st.fe ? st.fe.modes.length : 8) : 2;
         if (Number(st.mode) > n) this.store.set({ mode: '1' });
       }),
-      this.store.subscribe(['kin'], (st) => { this.engine.setKinematics(st.kin ? st.kin.kinematics : null); this.schedule(); }),
-      this.store.subscribe(['strain_point'], (st) => { this.engine.setStrainPoint(st.strain_point); this.schedule(); }),
-      this.store.subscribe(['wing', 'kin', 'strain_point'], () => { if (syncUrl()) this.url.scheduleFragment(); }),
+      this.store.subscribe(['kin'], (st) => {
+        this.engine.setKinematics(st.kin ? st.kin.kinematics : null);
+        this.schedule();
+      }),
+      this.store.subscribe(['strain_point'], (st) => {
+        this.engine.setStrainPoint(st.strain_point);
+        this.schedule();
+      }),
+      this.store.subscribe(['wing', 'kin', 'strain_point'], () => {
+        if (syncUrl()) this.url.scheduleFragment();
+      }),
     );
   }
 
@@ -239,7 +339,7 @@ export class WingLab extends HTMLElement {
     this.shownScreen = undefined;
     this.shownPanels = null;
     for (const v of Object.values(this.views)) if (v && v.destroy) v.destroy();
-    this.unsub.forEach((f) => f());
+    for (const f of this.unsub) f();
     if (this.ro) this.ro.disconnect();
     this.ro = null;
     this.grid = null;
@@ -271,7 +371,11 @@ export class WingLab extends HTMLElement {
       return;
     }
     // exp= opens the experiment with its parameters (as its chip does); removed, it closes it.
-    this.store.set(name === 'exp' && state.exp ? /** @type {Partial<LabState>} */ (experimentPatch(state.exp)) : { [name]: state[name] });
+    this.store.set(
+      name === 'exp' && state.exp
+        ? /** @type {Partial<LabState>} */ (experimentPatch(state.exp))
+        : { [name]: state[name] },
+    );
   }
 
   // ---------- DOM ----------
@@ -292,8 +396,12 @@ export class WingLab extends HTMLElement {
       uid: this.uid,
       id,
       toCSV,
-      registerPlot: (name, plot) => { this.plotReg[name] = plot; },
-      registerExport: (name, reg) => { this.exportsReg[name] = reg; },
+      registerPlot: (name, plot) => {
+        this.plotReg[name] = plot;
+      },
+      registerExport: (name, reg) => {
+        this.exportsReg[name] = reg;
+      },
       exportButtons: (name, label, kinds) => this.exportButtons(name, label, kinds),
       emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail, ...EVENT })),
       notice: (t) => this.notice(t),
@@ -305,7 +413,9 @@ export class WingLab extends HTMLElement {
     const labName = this.labName();
     for (const name of LAYOUT) {
       const view = VIEWS[name];
-      const named = labName ? { 'aria-label': `${plain(view.title)} — ${labName}` } : { 'aria-labelledby': id(`h-${name}`) };
+      const named = labName
+        ? { 'aria-label': `${plain(view.title)} — ${labName}` }
+        : { 'aria-labelledby': id(`h-${name}`) };
       const sec = el('section', { class: `wl-panel wl-${name}`, 'data-panel': name, ...named });
       const head = el('div', { class: 'wl-head' }, el('h2', { id: id(`h-${name}`), text: view.title }));
       sec.append(head);
@@ -319,7 +429,9 @@ export class WingLab extends HTMLElement {
     const shadow = /** @type {ShadowRoot} */ (this.shadowRoot);
     // Invisible (not unstyled) until style.css and uPlot's sheet have loaded: no flash.
     this.root.dataset.css = 'loading';
-    shadowStyles(shadow).then(() => { delete this.root.dataset.css; });
+    shadowStyles(shadow).then(() => {
+      delete this.root.dataset.css;
+    });
     shadow.append(this.root);
     this.applyPanels();
     // Layout follows the element's own width (not the viewport) and the panels shown.
@@ -372,7 +484,10 @@ export class WingLab extends HTMLElement {
 
   /** Downloads panel `name`'s export of `kind` (csv | png | svg); a notice when there is nothing yet. */
   async export(/** @type {string} */ name, /** @type {string} */ kind, label = name) {
-    const done = await exportPanel(this.exportsReg[name], name, kind, label, { notice: (t) => this.notice(t), describe: () => describe(this.store.get()) });
+    const done = await exportPanel(this.exportsReg[name], name, kind, label, {
+      notice: (t) => this.notice(t),
+      describe: () => describe(this.store.get()),
+    });
     if (done) this.lastExport = done;
   }
 
@@ -396,7 +511,11 @@ export class WingLab extends HTMLElement {
       if (was && !sec.hidden) this.draws.flush(name);
     }
     // The nav belongs to the whole lab: an author's own panel choice (panels=) is one page.
-    this.nav.select(r.id, LAYOUT.every((p) => st.panels.includes(p)), this.grid);
+    this.nav.select(
+      r.id,
+      LAYOUT.every((p) => st.panels.includes(p)),
+      this.grid,
+    );
     this.dataset.screen = r.id;
     // Views that show less on a focused screen (folded options) than on the full page.
     if (before !== r.id) for (const v of Object.values(this.views)) if (v && v.setScreen) v.setScreen(r.id);
@@ -404,7 +523,7 @@ export class WingLab extends HTMLElement {
     if (before !== undefined && before !== r.id) {
       // Focus that was in a panel now hidden goes to the selected tab (never lost to <body>).
       const tab = this.nav.tabs[r.id];
-      if (focused && focused !== tab && !(/** @type {HTMLElement} */ (focused)).checkVisibility?.()) tab.focus();
+      if (focused && focused !== tab && !(/** @type {HTMLElement} */ (focused).checkVisibility?.())) tab.focus();
       this.dispatchEvent(new CustomEvent('wl-screen', { detail: { screen: r.id, panels: r.shown.slice() }, ...EVENT }));
     }
   }
@@ -421,8 +540,12 @@ export class WingLab extends HTMLElement {
   }
 
   /** The screen shown (www/screens.js id). */
-  get screen() { return this.shownScreen || ''; }
-  set screen(v) { this.showScreen(String(v)); }
+  get screen() {
+    return this.shownScreen || '';
+  }
+  set screen(v) {
+    this.showScreen(String(v));
+  }
 
   /** Opens the screen that holds a panel (e.g. a guided experiment's "Go to" button). */
   showPanel(/** @type {string} */ name) {
@@ -498,12 +621,15 @@ export class WingLab extends HTMLElement {
     if (!this.feRunning) {
       this.feRunning = true;
       this.engine.ensureFe().then(
-        (fe) => { this.feRunning = false; this.feReady(fe); },
+        (fe) => {
+          this.feRunning = false;
+          this.feReady(fe);
+        },
         (e) => {
           this.feRunning = false;
           // The lab stays usable: the previous wing (or, with none yet, the paper table's
           // modes) goes on, with the reason shown until the wing changes.
-          this.wingError = `The FE wing could not be computed: ${errorText(e).replace(/\.?$/, ".")}${this.engine.fe ? ' The previous wing stays in use.' : ' Showing the paper table’s modes meanwhile.'}`;
+          this.wingError = `The FE wing could not be computed: ${errorText(e).replace(/\.?$/, '.')}${this.engine.fe ? ' The previous wing stays in use.' : ' Showing the paper table’s modes meanwhile.'}`;
           this.error(this.wingError);
           this.schedule();
         },
@@ -526,8 +652,12 @@ export class WingLab extends HTMLElement {
     }
     const engine = this.engine;
     req.then(
-      (r) => { if (r && this.engine === engine && this.built) this.publish(r); },
-      (e) => { if (this.engine === engine && this.built) this.error(`Computation rejected: ${errorText(e)}`); },
+      (r) => {
+        if (r && this.engine === engine && this.built) this.publish(r);
+      },
+      (e) => {
+        if (this.engine === engine && this.built) this.error(`Computation rejected: ${errorText(e)}`);
+      },
     );
   }
 
@@ -562,7 +692,9 @@ export class WingLab extends HTMLElement {
         this.engine.modalStrainAt(s.strain_point);
       } catch {
         patch.strain_point = null;
-        this.notice(`The chosen strain point (${s.strain_point.join(', ')}) mm is not on this wing; using the wing's own strain point.`);
+        this.notice(
+          `The chosen strain point (${s.strain_point.join(', ')}) mm is not on this wing; using the wing's own strain point.`,
+        );
       }
     }
     this.store.set(patch);

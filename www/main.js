@@ -13,7 +13,7 @@
 // `parent_origin=` (the only origin an embedded lab talks to) is read here; it and `offline=`
 // (offline.js) are taken out of the address before lab.js reads the query: they are page
 // settings, not lab parameters.
-(function () {
+(() => {
   // Absolute URLs for the imports: in a frame sandboxed without allow-same-origin this script
   // counts as cross-origin and a relative import() would resolve against about:blank.
   const script = /** @type {HTMLScriptElement | null} */ (document.currentScript);
@@ -32,7 +32,8 @@
   if (query.has('parent_origin')) {
     const raw = query.get('parent_origin') || '';
     parentOrigin = originOf(raw);
-    if (!parentOrigin) parentOriginError = `parent_origin: expected an origin such as https://course.example (scheme, host, optional port; nothing else), got ${JSON.stringify(raw.length > 60 ? raw.slice(0, 60) + '…' : raw)}`;
+    if (!parentOrigin)
+      parentOriginError = `parent_origin: expected an origin such as https://course.example (scheme, host, optional port; nothing else), got ${JSON.stringify(raw.length > 60 ? raw.slice(0, 60) + '…' : raw)}`;
   }
   // Page settings, not lab parameters: out of the address before lab.js reads it (the lab would
   // call them unknown). offline.js reads `offline=` from the navigation entry's URL.
@@ -63,7 +64,14 @@
     // offline.js may be missing (a trimmed copy of the site): the page works without it.
     import(here('offline.js')).then((m) => m.registerOffline()).catch(() => {});
   };
-  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', () => { start(); }, { once: true });
+  if (document.readyState === 'loading')
+    document.addEventListener(
+      'DOMContentLoaded',
+      () => {
+        start();
+      },
+      { once: true },
+    );
   else start();
 
   /**

@@ -37,7 +37,10 @@ export function modesDocument(text, strains) {
   const doc = JSON.parse(text);
   doc.modes.forEach((m, k) => {
     const rest = (m.strains || []).filter((p) => p.point !== CHOSEN_POINT);
-    m.strains = [{ point: CHOSEN_POINT, eps_x: strains[k].eps_x, eps_y: strains[k].eps_y, gamma_xy: strains[k].gamma_xy }, ...rest];
+    m.strains = [
+      { point: CHOSEN_POINT, eps_x: strains[k].eps_x, eps_y: strains[k].eps_y, gamma_xy: strains[k].gamma_xy },
+      ...rest,
+    ];
   });
   return JSON.stringify(doc);
 }
@@ -68,15 +71,30 @@ export function locateStrainPoint(nodes, triangles, strainNodes, target) {
   let best = null;
   let bestRes = Infinity;
   for (let t = 0; t + 2 < triangles.length; t += 3) {
-    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
-    let uu = 0, uv = 0, vv = 0, ur = 0, vr = 0;
+    const a = triangles[t],
+      b = triangles[t + 1],
+      c = triangles[t + 2];
+    let uu = 0,
+      uv = 0,
+      vv = 0,
+      ur = 0,
+      vr = 0;
     for (let j = 0; j < tv.length; j++) {
-      const s0 = sv(a, j), u = sv(b, j) - s0, v = sv(c, j) - s0, r = tv[j] - s0;
-      uu += u * u; uv += u * v; vv += v * v; ur += u * r; vr += v * r;
+      const s0 = sv(a, j),
+        u = sv(b, j) - s0,
+        v = sv(c, j) - s0,
+        r = tv[j] - s0;
+      uu += u * u;
+      uv += u * v;
+      vv += v * v;
+      ur += u * r;
+      vr += v * r;
     }
     const det = uu * vv - uv * uv;
     if (!(Math.abs(det) > 1e-300)) continue;
-    const l1 = (vv * ur - uv * vr) / det, l2 = (uu * vr - uv * ur) / det, l0 = 1 - l1 - l2;
+    const l1 = (vv * ur - uv * vr) / det,
+      l2 = (uu * vr - uv * ur) / det,
+      l0 = 1 - l1 - l2;
     const tol = 1e-9;
     if (l0 < -tol || l1 < -tol || l2 < -tol) continue;
     let res = 0;
@@ -105,7 +123,10 @@ export function locateStrainPoint(nodes, triangles, strainNodes, target) {
  */
 export function feFromModesDocument(r, text) {
   const f = r.fe;
-  if (!f || !f.nodes) throw new Error('the document has no FE mesh (nodes, triangles, shapes); the lab needs the full `wingbeat modes` output');
+  if (!f || !f.nodes)
+    throw new Error(
+      'the document has no FE mesh (nodes, triangles, shapes); the lab needs the full `wingbeat modes` output',
+    );
   const F = (a) => (a instanceof Float64Array ? a : Float64Array.from(a));
   /** @type {any} */
   const fe = {

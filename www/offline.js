@@ -80,7 +80,9 @@ export async function registerOffline() {
     const swUrl = new URL('./sw.js', import.meta.url);
     if (swUrl.origin !== location.origin) return;
     const scope = new URL('./', swUrl).href;
-    const nav = /** @type {PerformanceNavigationTiming | undefined} */ (performance.getEntriesByType?.('navigation')[0]);
+    const nav = /** @type {PerformanceNavigationTiming | undefined} */ (
+      performance.getEntriesByType?.('navigation')[0]
+    );
     const metaEl = document.querySelector('meta[name="wingbeat-offline"]');
     const why = offlineOptOut({
       urls: [location.href, ...(nav && nav.name ? [nav.name] : [])],
@@ -92,7 +94,8 @@ export async function registerOffline() {
       if (reg && reg.scope === scope) {
         await reg.unregister();
         if (typeof caches !== 'undefined') {
-          for (const name of await caches.keys()) if (name.startsWith(`${CACHE_PREFIX}${scope}:`)) await caches.delete(name);
+          for (const name of await caches.keys())
+            if (name.startsWith(`${CACHE_PREFIX}${scope}:`)) await caches.delete(name);
         }
       }
       return;

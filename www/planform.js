@@ -19,12 +19,24 @@ export const KEY_STEP_MM = 0.5;
  */
 export function planformFrame(nodes, widthCss, pad) {
   const n = Math.floor(nodes.length / 3);
-  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  let x0 = Infinity,
+    x1 = -Infinity,
+    y0 = Infinity,
+    y1 = -Infinity;
   for (let i = 0; i < n; i++) {
-    const x = nodes[3 * i] * 1e3, y = nodes[3 * i + 1] * 1e3;
-    x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+    const x = nodes[3 * i] * 1e3,
+      y = nodes[3 * i + 1] * 1e3;
+    x0 = Math.min(x0, x);
+    x1 = Math.max(x1, x);
+    y0 = Math.min(y0, y);
+    y1 = Math.max(y1, y);
   }
-  if (!(n > 0)) { x0 = 0; x1 = 1; y0 = 0; y1 = 1; }
+  if (!(n > 0)) {
+    x0 = 0;
+    x1 = 1;
+    y0 = 0;
+    y1 = 1;
+  }
   const cssW = Math.max(200, Math.min(720, widthCss));
   const k = (cssW - 2 * pad) / Math.max(1e-9, x1 - x0);
   const cssH = Math.round(Math.min(360, (y1 - y0) * k + 2 * pad));
@@ -40,7 +52,11 @@ export function planformFrame(nodes, widthCss, pad) {
  * @param {number} pad
  */
 export function fitPlanform(canvas, nodes, pad) {
-  const { cssW, cssH, frame } = planformFrame(nodes, canvas.parentElement ? canvas.parentElement.clientWidth : 600, pad);
+  const { cssW, cssH, frame } = planformFrame(
+    nodes,
+    canvas.parentElement ? canvas.parentElement.clientWidth : 600,
+    pad,
+  );
   const dpr = Math.min(2, globalThis.devicePixelRatio || 1);
   canvas.style.width = `${cssW}px`;
   canvas.style.height = `${cssH}px`;
@@ -68,7 +84,9 @@ export function fillPlanform(c2, nodes, triangles, frame, rgbOf) {
   const py = (/** @type {number} */ i) => (frame.y1 - nodes[3 * i + 1] * 1e3) * frame.k;
   c2.lineWidth = 0.6;
   for (let t = 0; t + 2 < triangles.length; t += 3) {
-    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+    const a = triangles[t],
+      b = triangles[t + 1],
+      c = triangles[t + 2];
     const rgb = rgbOf(a, b, c);
     c2.fillStyle = `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;
     c2.strokeStyle = c2.fillStyle;

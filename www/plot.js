@@ -34,12 +34,12 @@ export function log10OrNull(v) {
 }
 
 /**
- * @param {uPlot} u
+ * @param {uPlot} _u
  * @param {number | null} min
  * @param {number | null} max
  * @returns {uPlot.Range.MinMax}
  */
-function logRange(u, min, max) {
+function logRange(_u, min, max) {
   if (min == null || max == null || !Number.isFinite(max)) return [-12, 0];
   const hi = Math.ceil(max + 1e-9);
   let lo = Math.floor(Math.max(min, hi - 14));
@@ -73,9 +73,12 @@ export function linePlot(parent, spec) {
   const id = `wl-plot-${++plotIds}`;
   const box = el('div', { class: 'wl-plot', 'data-plot': spec.name });
   const ytitle = el('span', { class: 'wl-ytitle', rich: spec.yLabel || '' });
-  const titles = el('div', { class: 'wl-axis-titles' },
+  const titles = el(
+    'div',
+    { class: 'wl-axis-titles' },
     ytitle,
-    spec.y2Label ? el('span', { class: 'wl-y2title', rich: spec.y2Label }) : null);
+    spec.y2Label ? el('span', { class: 'wl-y2title', rich: spec.y2Label }) : null,
+  );
   const stage = el('div', { class: 'wl-uplot' });
   const xtitle = el('div', { class: 'wl-xtitle', rich: `${spec.xLabel} (${spec.xUnit})` });
   const summary = srOnly('p', { id: `${id}-sum` });
@@ -84,7 +87,9 @@ export function linePlot(parent, spec) {
   const width = Math.max(260, box.clientWidth || 600);
   const dpr = () => (typeof devicePixelRatio === 'number' ? devicePixelRatio : 1);
   /** @type {uPlot.Axis[]} */
-  const axes = [{ stroke: '#333', grid: { stroke: '#ececec' }, size: 34, values: (u, vals) => vals.map((v) => fmt(v, 4)) }];
+  const axes = [
+    { stroke: '#333', grid: { stroke: '#ececec' }, size: 34, values: (_u, vals) => vals.map((v) => fmt(v, 4)) },
+  ];
   /** @type {Record<string, uPlot.Scale>} */
   const scales = { x: { time: false } };
   const hasY2 = spec.series.some((s) => s.scale === 'y2');
@@ -104,7 +109,9 @@ export function linePlot(parent, spec) {
         return Math.ceil(Math.max(...vals.map((v) => self.ctx.measureText(String(v)).width)) / r) + 16;
       },
       font: '11px system-ui, sans-serif',
-      values: log ? (u, vals) => vals.map((v) => (Number.isInteger(v) ? plain(`10^{${v}}`.replace('-', '−')) : '')) : (u, vals) => vals.map((v) => plain(fmtRich(v, 2))),
+      values: log
+        ? (_u, vals) => vals.map((v) => (Number.isInteger(v) ? plain(`10^{${v}}`.replace('-', '−')) : ''))
+        : (_u, vals) => vals.map((v) => plain(fmtRich(v, 2))),
       incrs: log ? [1, 2, 3, 5, 10] : undefined,
     });
   }
@@ -122,18 +129,34 @@ export function linePlot(parent, spec) {
     })),
   ];
   // Legend: toggle buttons with live values (keyboard-reachable; uPlot's own legend is off).
-  const legend = el('div', { class: 'wl-legend', role: 'group', 'aria-label': `${plain(spec.title || spec.name)}: series shown (press to hide or show)` });
+  const legend = el('div', {
+    class: 'wl-legend',
+    role: 'group',
+    'aria-label': `${plain(spec.title || spec.name)}: series shown (press to hide or show)`,
+  });
   /** @type {(HTMLElement | null)[]} */
   const values = [];
   /** @type {(HTMLButtonElement | null)[]} */
   const buttons = [];
   spec.series.forEach((s, i) => {
-    if (s.legend === false) { values.push(null); buttons.push(null); return; }
+    if (s.legend === false) {
+      values.push(null);
+      buttons.push(null);
+      return;
+    }
     const val = el('span', { class: 'wl-legend-val' });
-    const b = el('button', { type: 'button', class: 'wl-legend-item', 'aria-pressed': String(s.show !== false), 'data-series': String(i + 1) },
+    const b = el(
+      'button',
+      {
+        type: 'button',
+        class: 'wl-legend-item',
+        'aria-pressed': String(s.show !== false),
+        'data-series': String(i + 1),
+      },
       el('span', { class: 'wl-swatch', style: `background:${s.color}`, 'aria-hidden': 'true' }),
       el('span', { class: 'wl-legend-label', rich: s.label }),
-      val);
+      val,
+    );
     b.addEventListener('click', () => {
       const show = !u.series[i + 1].show;
       u.setSeries(i + 1, { show });
@@ -166,7 +189,8 @@ export function linePlot(parent, spec) {
           const ctx = u.ctx;
           const { top, height: h, left, width: w } = u.bbox;
           for (const b of spec.bands()) {
-            const x0 = Math.max(left, u.valToPos(b.x0, 'x', true)), x1 = Math.min(left + w, u.valToPos(b.x1, 'x', true));
+            const x0 = Math.max(left, u.valToPos(b.x0, 'x', true)),
+              x1 = Math.min(left + w, u.valToPos(b.x1, 'x', true));
             if (!(x1 > x0)) continue;
             ctx.fillStyle = b.fill || 'rgba(122,60,194,0.10)';
             ctx.fillRect(x0, top, x1 - x0, h);
@@ -182,9 +206,14 @@ export function linePlot(parent, spec) {
           ctx.font = `${Math.round(11 * r)}px system-ui, sans-serif`;
           ctx.textBaseline = 'top';
           ctx.textAlign = 'left';
-          const marks = (spec.markers ? spec.markers() : []).map((m) => ({ ...m, px: u.valToPos(m.x, 'x', true) })).filter((m) => m.px >= left && m.px <= left + w);
+          const marks = (spec.markers ? spec.markers() : [])
+            .map((m) => ({ ...m, px: u.valToPos(m.x, 'x', true) }))
+            .filter((m) => m.px >= left && m.px <= left + w);
           const pt = canvasPainter(ctx);
-          const rows = placeLabels(marks.map((m) => ({ x: m.px + 3 * r, width: m.label ? pt.measure(m.label, 11 * r) : 0 })), { gap: 4 * r, maxRows: 3 });
+          const rows = placeLabels(
+            marks.map((m) => ({ x: m.px + 3 * r, width: m.label ? pt.measure(m.label, 11 * r) : 0 })),
+            { gap: 4 * r, maxRows: 3 },
+          );
           marks.forEach((m, i) => {
             ctx.strokeStyle = m.color || '#999';
             ctx.lineWidth = (m.width || 1) * r;
@@ -205,13 +234,17 @@ export function linePlot(parent, spec) {
           if (spec.bands) {
             for (const b of spec.bands()) {
               if (!b.label) continue;
-              const x0 = u.valToPos(b.x0, 'x', true), x1 = u.valToPos(b.x1, 'x', true);
+              const x0 = u.valToPos(b.x0, 'x', true),
+                x1 = u.valToPos(b.x1, 'x', true);
               if (x1 < left || x0 > left + w) continue;
               const y = top + h - 10 * r;
               ctx.strokeStyle = b.color || '#7a3cc2';
               ctx.lineWidth = 2 * r;
               ctx.beginPath();
-              ctx.moveTo(x0, y - 6 * r); ctx.lineTo(x0, y); ctx.lineTo(x1, y); ctx.lineTo(x1, y - 6 * r);
+              ctx.moveTo(x0, y - 6 * r);
+              ctx.lineTo(x0, y);
+              ctx.lineTo(x1, y);
+              ctx.lineTo(x1, y - 6 * r);
               ctx.stroke();
               const tw = pt.measure(b.label, 12 * r, 'bold');
               const cx = Math.min(left + w - tw / 2 - 2, Math.max(left + tw / 2 + 2, (x0 + x1) / 2));
@@ -226,12 +259,14 @@ export function linePlot(parent, spec) {
       setCursor: [
         (u) => {
           const i = u.cursor.idx;
-          xval.textContent = i == null ? '' : `${spec.xLabel.replace(/_/g, '')} = ${fmt(u.data[0][i], 5)} ${spec.xUnit}`;
+          xval.textContent =
+            i == null ? '' : `${spec.xLabel.replace(/_/g, '')} = ${fmt(u.data[0][i], 5)} ${spec.xUnit}`;
           spec.series.forEach((s, k) => {
             const v = values[k];
             if (!v) return;
             const y = i == null ? null : u.data[k + 1][i];
-            v.textContent = y == null || !Number.isFinite(y) ? '' : ` ${fmt(spec.log && spec.log[s.scale || 'y'] ? 10 ** y : y, 3)}`;
+            v.textContent =
+              y == null || !Number.isFinite(y) ? '' : ` ${fmt(spec.log && spec.log[s.scale || 'y'] ? 10 ** y : y, 3)}`;
           });
         },
       ],
@@ -248,14 +283,18 @@ export function linePlot(parent, spec) {
   if (spec.keys !== false) {
     u.over.tabIndex = 0;
     u.over.setAttribute('role', 'group');
-    u.over.setAttribute('aria-label', `${plain(spec.ariaLabel || spec.name)}. Keys: left and right arrows pan, plus and minus zoom, 0 resets.`);
+    u.over.setAttribute(
+      'aria-label',
+      `${plain(spec.ariaLabel || spec.name)}. Keys: left and right arrows pan, plus and minus zoom, 0 resets.`,
+    );
     u.over.setAttribute('aria-describedby', summary.id);
     u.over.addEventListener('keydown', (e) => {
       const x = u.scales.x;
       if (x.min == null || x.max == null) return;
       const span = x.max - x.min;
       const data = u.data[0];
-      const lo = data[0], hi = data[data.length - 1];
+      const lo = data[0],
+        hi = data[data.length - 1];
       /** @type {number[] | null} */
       let a = null;
       if (e.key === 'ArrowLeft') a = [x.min - 0.25 * span, x.max - 0.25 * span];
@@ -273,8 +312,14 @@ export function linePlot(parent, spec) {
       if (spec.onUser) spec.onUser('key');
       let [m0, m1] = a;
       const w = Math.min(m1 - m0, hi - lo);
-      if (m0 < lo) { m0 = lo; m1 = lo + w; }
-      if (m1 > hi) { m1 = hi; m0 = hi - w; }
+      if (m0 < lo) {
+        m0 = lo;
+        m1 = lo + w;
+      }
+      if (m1 > hi) {
+        m1 = hi;
+        m0 = hi - w;
+      }
       u.setScale('x', { min: m0, max: m1 });
     });
   }
@@ -328,7 +373,16 @@ export function linePlot(parent, spec) {
     },
     /** The visible series for an export figure (full data of the current x window). */
     exportSeries(data = u.data) {
-      return spec.series.map((s, i) => ({ label: s.label, color: s.color, dash: s.dash, width: (s.width ?? 1.25) + 0.2, scale: s.scale || 'y', y: data[i + 1], show: u.series[i + 1].show, legend: s.legend !== false }));
+      return spec.series.map((s, i) => ({
+        label: s.label,
+        color: s.color,
+        dash: s.dash,
+        width: (s.width ?? 1.25) + 0.2,
+        scale: s.scale || 'y',
+        y: data[i + 1],
+        show: u.series[i + 1].show,
+        legend: s.legend !== false,
+      }));
     },
     xWindow() {
       return [u.scales.x.min, u.scales.x.max];
@@ -342,8 +396,15 @@ export function linePlot(parent, spec) {
 
 /** A canvas heat map with axes and a colour bar (the initial-condition map). */
 const VIRIDIS = [
-  [68, 1, 84], [71, 44, 122], [59, 81, 139], [44, 113, 142], [33, 144, 141],
-  [39, 173, 129], [92, 200, 99], [170, 220, 50], [253, 231, 37],
+  [68, 1, 84],
+  [71, 44, 122],
+  [59, 81, 139],
+  [44, 113, 142],
+  [33, 144, 141],
+  [39, 173, 129],
+  [92, 200, 99],
+  [170, 220, 50],
+  [253, 231, 37],
 ];
 export function viridis(t) {
   const x = Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0)) * (VIRIDIS.length - 1);
@@ -358,7 +419,10 @@ export function drawHeatmap(canvas, m) {
   const ctx = context2d(canvas);
   ctx.fillStyle = '#fff';
   ctx.fillRect(0, 0, W, H);
-  const L = 78, R = 90, T = 12, B = 46;
+  const L = 78,
+    R = 90,
+    T = 12,
+    B = 46;
   const pw = W - L - R;
   const ph = H - T - B;
   const img = ctx.createImageData(m.nx, m.ny);
@@ -368,7 +432,10 @@ export function drawHeatmap(canvas, m) {
       const v = m.z[j * m.nx + i];
       const [r, g, b] = viridis((v - m.zmin) / span);
       const o = ((m.ny - 1 - j) * m.nx + i) * 4;
-      img.data[o] = r; img.data[o + 1] = g; img.data[o + 2] = b; img.data[o + 3] = 255;
+      img.data[o] = r;
+      img.data[o + 1] = g;
+      img.data[o + 2] = b;
+      img.data[o + 3] = 255;
     }
   }
   const tmp = document.createElement('canvas');

@@ -55,7 +55,11 @@ export function defaultCamera(span) {
 /** The camera after WingView.orbit(dx, dy) (same arithmetic as the renderer). */
 export function orbit(cam, dx, dy) {
   if (!Number.isFinite(dx) || !Number.isFinite(dy)) return cam;
-  return { ...cam, yaw: (cam.yaw - dx * ORBIT_RAD_PER_PX) % TAU, pitch: Math.min(PITCH_LIMIT, Math.max(-PITCH_LIMIT, cam.pitch + dy * ORBIT_RAD_PER_PX)) };
+  return {
+    ...cam,
+    yaw: (cam.yaw - dx * ORBIT_RAD_PER_PX) % TAU,
+    pitch: Math.min(PITCH_LIMIT, Math.max(-PITCH_LIMIT, cam.pitch + dy * ORBIT_RAD_PER_PX)),
+  };
 }
 
 /** The camera after WingView.zoom(factor). */
@@ -67,13 +71,22 @@ export function zoom(cam, f) {
 /** The camera after WingView.key(k); null when the renderer ignores the key. */
 export function key(cam, k) {
   switch (k) {
-    case 'ArrowLeft': return orbit(cam, -12, 0);
-    case 'ArrowRight': return orbit(cam, 12, 0);
-    case 'ArrowUp': return orbit(cam, 0, 12);
-    case 'ArrowDown': return orbit(cam, 0, -12);
-    case '+': case '=': return zoom(cam, 1 / 1.1);
-    case '-': case '_': return zoom(cam, 1.1);
-    default: return null;
+    case 'ArrowLeft':
+      return orbit(cam, -12, 0);
+    case 'ArrowRight':
+      return orbit(cam, 12, 0);
+    case 'ArrowUp':
+      return orbit(cam, 0, 12);
+    case 'ArrowDown':
+      return orbit(cam, 0, -12);
+    case '+':
+    case '=':
+      return zoom(cam, 1 / 1.1);
+    case '-':
+    case '_':
+      return zoom(cam, 1.1);
+    default:
+      return null;
   }
 }
 
@@ -82,12 +95,20 @@ export function key(cam, k) {
  * Applying them with WingView.orbit / zoom reproduces `to` up to float32 rounding.
  */
 export function moveTo(from, to) {
-  return { dx: (from.yaw - to.yaw) / ORBIT_RAD_PER_PX, dy: (to.pitch - from.pitch) / ORBIT_RAD_PER_PX, zoom: to.distance / from.distance };
+  return {
+    dx: (from.yaw - to.yaw) / ORBIT_RAD_PER_PX,
+    dy: (to.pitch - from.pitch) / ORBIT_RAD_PER_PX,
+    zoom: to.distance / from.distance,
+  };
 }
 
 export function eye(cam) {
-  const cp = Math.cos(cam.pitch), sp = Math.sin(cam.pitch), cy = Math.cos(cam.yaw), sy = Math.sin(cam.yaw);
-  const d = cam.distance, t = cam.target;
+  const cp = Math.cos(cam.pitch),
+    sp = Math.sin(cam.pitch),
+    cy = Math.cos(cam.yaw),
+    sy = Math.sin(cam.yaw);
+  const d = cam.distance,
+    t = cam.target;
   return [t[0] + d * cp * cy, t[1] + d * cp * sy, t[2] + d * sp];
 }
 
@@ -106,7 +127,9 @@ export function projector(cam, width, height) {
   const F = 1 / Math.tan(0.5 * cam.fov);
   const aspect = width / Math.max(1, height);
   return (x, y, z) => {
-    const d0 = x - e[0], d1 = y - e[1], d2 = z - e[2];
+    const d0 = x - e[0],
+      d1 = y - e[1],
+      d2 = z - e[2];
     const depth = f[0] * d0 + f[1] * d1 + f[2] * d2;
     if (depth <= 0) return null;
     const nx = ((F / aspect) * (s[0] * d0 + s[1] * d1 + s[2] * d2)) / depth;
@@ -118,11 +141,18 @@ export function projector(cam, width, height) {
 /** R_x(α)·R_y(β)·R_z(γ) applied to p (the renderer's wing rotation). */
 export function rotate(alpha, beta, gamma, p) {
   const [x, y, z] = p;
-  const cg = Math.cos(gamma), sg = Math.sin(gamma);
-  const x1 = cg * x - sg * y, y1 = sg * x + cg * y, z1 = z;
-  const cb = Math.cos(beta), sb = Math.sin(beta);
-  const x2 = cb * x1 + sb * z1, y2 = y1, z2 = -sb * x1 + cb * z1;
-  const ca = Math.cos(alpha), sa = Math.sin(alpha);
+  const cg = Math.cos(gamma),
+    sg = Math.sin(gamma);
+  const x1 = cg * x - sg * y,
+    y1 = sg * x + cg * y,
+    z1 = z;
+  const cb = Math.cos(beta),
+    sb = Math.sin(beta);
+  const x2 = cb * x1 + sb * z1,
+    y2 = y1,
+    z2 = -sb * x1 + cb * z1;
+  const ca = Math.cos(alpha),
+    sa = Math.sin(alpha);
   return [x2, ca * y2 - sa * z2, sa * y2 + ca * z2];
 }
 
@@ -134,7 +164,8 @@ export function rotate(alpha, beta, gamma, p) {
  */
 export function outline(nodes) {
   const n = nodes.length / 3;
-  const xs = new Float64Array(n), ys = new Float64Array(n);
+  const xs = new Float64Array(n),
+    ys = new Float64Array(n);
   let zmax = 0;
   for (let i = 0; i < n; i++) {
     xs[i] = nodes[3 * i];
@@ -143,7 +174,11 @@ export function outline(nodes) {
   }
   const h = hull2(xs, ys);
   const out = new Float64Array(3 * h.length);
-  h.forEach((i, j) => { out[3 * j] = xs[i]; out[3 * j + 1] = ys[i]; out[3 * j + 2] = 0; });
+  h.forEach((i, j) => {
+    out[3 * j] = xs[i];
+    out[3 * j + 1] = ys[i];
+    out[3 * j + 2] = 0;
+  });
   return { nodes: out, zmax };
 }
 
@@ -185,7 +220,10 @@ export function posePoints(nodes, poses, { stride = 1, lift = 0 } = {}) {
 /** Pixel bounding box [x0, y0, x1, y1] of world points; null if any is behind the eye. */
 export function bbox(cam, pts, width, height) {
   const pr = projector(cam, width, height);
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  let x0 = Infinity,
+    y0 = Infinity,
+    x1 = -Infinity,
+    y1 = -Infinity;
   for (let i = 0; i < pts.length; i += 3) {
     const p = pr(pts[i], pts[i + 1], pts[i + 2]);
     if (!p) return null;
@@ -204,9 +242,16 @@ export function bbox(cam, pts, width, height) {
 export function fitDistance(cam, pts, width, height, margin = 0.05) {
   const inside = (d) => {
     const b = bbox({ ...cam, distance: d }, pts, width, height);
-    return b && b[0] >= margin * width && b[2] <= (1 - margin) * width && b[1] >= margin * height && b[3] <= (1 - margin) * height;
+    return (
+      b &&
+      b[0] >= margin * width &&
+      b[2] <= (1 - margin) * width &&
+      b[1] >= margin * height &&
+      b[3] <= (1 - margin) * height
+    );
   };
-  let lo = cam.distance * 0.05, hi = cam.distance;
+  let lo = cam.distance * 0.05,
+    hi = cam.distance;
   let guard = 0;
   while (!inside(hi) && guard++ < 40) hi *= 1.5;
   for (let it = 0; it < 26; it++) {
@@ -230,8 +275,14 @@ export function projectedArea(cam, nodes, triangles, pose, width, height) {
   }
   let area = 0;
   for (let t = 0; t < triangles.length; t += 3) {
-    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
-    const A = 0.5 * Math.abs((P[2 * b] - P[2 * a]) * (P[2 * c + 1] - P[2 * a + 1]) - (P[2 * c] - P[2 * a]) * (P[2 * b + 1] - P[2 * a + 1]));
+    const a = triangles[t],
+      b = triangles[t + 1],
+      c = triangles[t + 2];
+    const A =
+      0.5 *
+      Math.abs(
+        (P[2 * b] - P[2 * a]) * (P[2 * c + 1] - P[2 * a + 1]) - (P[2 * c] - P[2 * a]) * (P[2 * b + 1] - P[2 * a + 1]),
+      );
     if (Number.isFinite(A)) area += A;
   }
   return area;
@@ -292,7 +343,8 @@ export function projectNodes(nodes, shapes, q, exaggeration, ang, cam, width, he
   const m = shapes ? Math.min(q.length, Math.floor(shapes.length / Math.max(1, n))) : 0;
   const pr = projector(cam, width, height);
   const e = eye(cam);
-  const xy = new Float64Array(2 * n), depth = new Float64Array(n);
+  const xy = new Float64Array(2 * n),
+    depth = new Float64Array(n);
   for (let i = 0; i < n; i++) {
     let w = 0;
     for (let k = 0; k < m; k++) w += /** @type {ArrayLike<number>} */ (shapes)[k * n + i] * q[k];
@@ -319,10 +371,19 @@ export function projectNodes(nodes, shapes, q, exaggeration, ang, cam, width, he
  */
 export function pick(nodes, triangles, proj, px, py) {
   const { xy, depth } = proj;
-  let best = -1, bestDepth = Infinity, bw = [0, 0, 0];
+  let best = -1,
+    bestDepth = Infinity,
+    bw = [0, 0, 0];
   for (let t = 0; t + 2 < triangles.length; t += 3) {
-    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
-    const ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1], cx = xy[2 * c], cy = xy[2 * c + 1];
+    const a = triangles[t],
+      b = triangles[t + 1],
+      c = triangles[t + 2];
+    const ax = xy[2 * a],
+      ay = xy[2 * a + 1],
+      bx = xy[2 * b],
+      by = xy[2 * b + 1],
+      cx = xy[2 * c],
+      cy = xy[2 * c + 1];
     const det = (by - cy) * (ax - cx) + (cx - bx) * (ay - cy);
     if (!Number.isFinite(det) || Math.abs(det) < 1e-12) continue;
     const l0 = ((by - cy) * (px - cx) + (cx - bx) * (py - cy)) / det;
@@ -330,11 +391,19 @@ export function pick(nodes, triangles, proj, px, py) {
     const l2 = 1 - l0 - l1;
     if (l0 < -1e-9 || l1 < -1e-9 || l2 < -1e-9) continue;
     const d = l0 * depth[a] + l1 * depth[b] + l2 * depth[c];
-    if (d < bestDepth) { bestDepth = d; best = t; bw = [l0, l1, l2]; }
+    if (d < bestDepth) {
+      bestDepth = d;
+      best = t;
+      bw = [l0, l1, l2];
+    }
   }
   if (best < 0) return null;
   const ids = [triangles[best], triangles[best + 1], triangles[best + 2]];
-  let x = 0, y = 0;
-  ids.forEach((i, j) => { x += bw[j] * nodes[3 * i]; y += bw[j] * nodes[3 * i + 1]; });
+  let x = 0,
+    y = 0;
+  ids.forEach((i, j) => {
+    x += bw[j] * nodes[3 * i];
+    y += bw[j] * nodes[3 * i + 1];
+  });
   return { tri: best / 3, x, y, ids, w: bw };
 }

@@ -18,14 +18,41 @@
  */
 
 /** @type {readonly Screen[]} */
-export const SCREENS = Object.freeze([
-  { id: 'beat', label: 'The beat', panels: ['wing3d', 'controls', 'time', 'experiments'], about: 'the flapping wing in 3-D, the main sliders and the responses with their beat' },
-  { id: 'forces', label: 'Forces', panels: ['controls', 'kinematics', 'spectrum', 'numbers'], about: 'the stroke that drives the wing, the spectra of the force terms and each force’s share of the response' },
-  { id: 'wing', label: 'Your wing', panels: ['wing', 'modeshape', 'strain'], about: 'your own wing outline and material, its mode shapes and the strain' },
-  { id: 'sensing', label: 'Sensing', panels: ['wing3d', 'sensing', 'experiments'], about: 'sensing a body rotation with strain sensors on the wing' },
-  { id: 'research', label: 'Research', panels: ['studies', 'resonance', 'numbers', 'report', 'experiments'], about: 'the paper’s studies (Figs. 6–8), the resonance map and the paper’s claims checked' },
-  { id: 'full', label: 'Full page', panels: null, about: 'every panel on one long page, as for research' },
-].map((s) => Object.freeze({ ...s, panels: s.panels ? Object.freeze(s.panels.slice()) : null })));
+export const SCREENS = Object.freeze(
+  [
+    {
+      id: 'beat',
+      label: 'The beat',
+      panels: ['wing3d', 'controls', 'time', 'experiments'],
+      about: 'the flapping wing in 3-D, the main sliders and the responses with their beat',
+    },
+    {
+      id: 'forces',
+      label: 'Forces',
+      panels: ['controls', 'kinematics', 'spectrum', 'numbers'],
+      about: 'the stroke that drives the wing, the spectra of the force terms and each force’s share of the response',
+    },
+    {
+      id: 'wing',
+      label: 'Your wing',
+      panels: ['wing', 'modeshape', 'strain'],
+      about: 'your own wing outline and material, its mode shapes and the strain',
+    },
+    {
+      id: 'sensing',
+      label: 'Sensing',
+      panels: ['wing3d', 'sensing', 'experiments'],
+      about: 'sensing a body rotation with strain sensors on the wing',
+    },
+    {
+      id: 'research',
+      label: 'Research',
+      panels: ['studies', 'resonance', 'numbers', 'report', 'experiments'],
+      about: 'the paper’s studies (Figs. 6–8), the resonance map and the paper’s claims checked',
+    },
+    { id: 'full', label: 'Full page', panels: null, about: 'every panel on one long page, as for research' },
+  ].map((s) => Object.freeze({ ...s, panels: s.panels ? Object.freeze(s.panels.slice()) : null })),
+);
 
 /** Screen ids, in nav order (`screen=` takes one of them). */
 export const SCREEN_IDS = Object.freeze(SCREENS.map((s) => s.id));

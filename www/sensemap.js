@@ -27,7 +27,7 @@ export function sliderOfRate(rate) {
  */
 export function rateOfSlider(pos, sign = 1) {
   const p = Math.min(RATE_SLIDER.max, Math.max(RATE_SLIDER.min, Number(pos)));
-  const v = Number(Math.pow(10, p).toPrecision(3));
+  const v = Number((10 ** p).toPrecision(3));
   const r = (Number(sign) < 0 ? -1 : 1) * v;
   return Math.min(BODY_RATE.max, Math.max(BODY_RATE.min, r));
 }
@@ -65,7 +65,8 @@ export function mapScale(d, mode = 'relative') {
     hi,
     mode: rel ? 'relative' : 'absolute',
     /** @param {number} v */
-    t: (v) => (Number.isFinite(v) && v > 0 && (!rel || max > 0) ? Math.min(1, Math.max(0, (Math.log10(v) - lo) / (hi - lo))) : 0),
+    t: (v) =>
+      Number.isFinite(v) && v > 0 && (!rel || max > 0) ? Math.min(1, Math.max(0, (Math.log10(v) - lo) / (hi - lo))) : 0,
   };
 }
 
@@ -81,7 +82,8 @@ export function deltaAt(modal, dq) {
   const out = { eps_x: new Float64Array(n), eps_y: new Float64Array(n), gamma_xy: new Float64Array(n) };
   const m = Math.min(modal.length, dq.length);
   for (let k = 0; k < m; k++) {
-    const e = modal[k], q = dq[k];
+    const e = modal[k],
+      q = dq[k];
     for (let i = 0; i < n; i++) {
       out.eps_x[i] += e.eps_x * q[i];
       out.eps_y[i] += e.eps_y * q[i];
@@ -99,7 +101,9 @@ export function deltaAt(modal, dq) {
  */
 export function curveData(r) {
   const n = Math.min(r.pd.length, r.d_prime.length);
-  const k = [], pd = [], share = [];
+  const k = [],
+    pd = [],
+    share = [];
   for (let i = 0; i < n; i++) {
     k.push(i + 1);
     pd.push(r.pd[i]);
@@ -157,7 +161,8 @@ export const COMP_LABEL = Object.freeze({ eps_x: 'ε_x', eps_y: 'ε_y', gamma_xy
  */
 export function rateError(text) {
   const v = Number(text);
-  if (text.trim() === '' || !Number.isFinite(v) || v < BODY_RATE.min || v > BODY_RATE.max) return `ω_b must be a number in [${BODY_RATE.min}, ${BODY_RATE.max}] rad/s.`;
+  if (text.trim() === '' || !Number.isFinite(v) || v < BODY_RATE.min || v > BODY_RATE.max)
+    return `ω_b must be a number in [${BODY_RATE.min}, ${BODY_RATE.max}] rad/s.`;
   return null;
 }
 
@@ -166,7 +171,8 @@ export function rateError(text) {
  * the live result was computed with that wing's modes; else null.
  * @param {any} s store state
  */
-export const senseFe = (s) => (s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null);
+export const senseFe = (s) =>
+  s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null;
 
 /**
  * Largest |v| of a series (0 for an empty one).
@@ -201,7 +207,8 @@ export function spectrumWindow(r, freq) {
  * @param {(v: number, digits: number) => string} fmt number formatter
  */
 export function curveSummary(r, K, fmt) {
-  if (!(r.d_prime_all > 0)) return 'With no body rotation there is nothing to detect: P_d is the false-alarm rate (1 %) at every K.';
+  if (!(r.d_prime_all > 0))
+    return 'With no body rotation there is nothing to detect: P_d is the false-alarm rate (1 %) at every K.';
   const k90 = sensorsFor(r.pd);
   const atK = K ? r.pd[K - 1] : 0;
   return `With K = ${K} sensors, P_d = ${fmt(atK, 3)} (d′ = ${fmt(r.d_prime[K - 1], 3)}); all ${3 * r.n_nodes} candidates together: d′ = ${fmt(r.d_prime_all, 3)}, P_d = ${fmt(r.pd_all, 3)}. ${k90 ? `P_d ≥ 0.9 from K = ${k90}.` : 'P_d stays below 0.9 up to K = ' + r.pd.length + '.'} ${r.k_for_90_percent ? `90 % of the all-sensor d′ needs K = ${r.k_for_90_percent}.` : ''} A lower rate (or more noise) makes detection harder: try 0.001 rad/s.`;
@@ -260,7 +267,14 @@ export function senseMapOf(fe, result, scale, K, cfgJson, show) {
     max: scale.max,
     body_rate: Array.from(result.body_rate),
     cfg_json: cfgJson,
-    sensors: result.sensors.slice(0, K).map((sn) => ({ rank: sn.rank, node: sn.node, component: sn.component, x_mm: sn.x_mm, y_mm: sn.y_mm, label: String(sn.rank) })),
+    sensors: result.sensors.slice(0, K).map((sn) => ({
+      rank: sn.rank,
+      node: sn.node,
+      component: sn.component,
+      x_mm: sn.x_mm,
+      y_mm: sn.y_mm,
+      label: String(sn.rank),
+    })),
     show,
   };
 }
@@ -275,7 +289,9 @@ export function senseCsvColumns(fe, result) {
   const n = result.n_nodes;
   const col = (c) => Float64Array.from({ length: n }, (_, i) => result.d[3 * i + c]);
   const rank = new Float64Array(n);
-  result.sensors.forEach((sn) => { if (!rank[sn.node]) rank[sn.node] = sn.rank; });
+  result.sensors.forEach((sn) => {
+    if (!rank[sn.node]) rank[sn.node] = sn.rank;
+  });
   return [
     { name: 'x', unit: 'mm', values: Float64Array.from({ length: n }, (_, i) => fe.nodes[3 * i] * 1e3) },
     { name: 'y', unit: 'mm', values: Float64Array.from({ length: n }, (_, i) => fe.nodes[3 * i + 1] * 1e3) },

@@ -83,7 +83,10 @@ async function pipe(bytes, stream, limit = Infinity) {
   }
   const out = new Uint8Array(n);
   let o = 0;
-  for (const p of parts) { out.set(p, o); o += p.length; }
+  for (const p of parts) {
+    out.set(p, o);
+    o += p.length;
+  }
   return out;
 }
 
@@ -101,10 +104,13 @@ export function packOutline(pts, u = OUTLINE_DECIMALS) {
   const k = 10 ** u;
   /** @type {number[]} */
   const d = [];
-  let px = 0, py = 0;
+  let px = 0,
+    py = 0;
   for (const p of pts) {
-    const x = Math.round(p[0] * k), y = Math.round(p[1] * k);
-    if (!Number.isSafeInteger(x) || !Number.isSafeInteger(y) || Math.abs(x) > 2 ** 48 || Math.abs(y) > 2 ** 48) return null;
+    const x = Math.round(p[0] * k),
+      y = Math.round(p[1] * k);
+    if (!Number.isSafeInteger(x) || !Number.isSafeInteger(y) || Math.abs(x) > 2 ** 48 || Math.abs(y) > 2 ** 48)
+      return null;
     d.push(x - px, y - py);
     px = x;
     py = y;
@@ -119,12 +125,15 @@ export function packOutline(pts, u = OUTLINE_DECIMALS) {
 export function unpackOutline(o) {
   if (!isObj(o)) throw new Error('o: expected { u, d }');
   const { u, d } = /** @type {{ u: unknown, d: unknown }} */ (o);
-  if (!Number.isInteger(u) || /** @type {number} */ (u) < 0 || /** @type {number} */ (u) > 9) throw new Error('o.u: expected an integer 0 to 9');
-  if (!Array.isArray(d) || d.length % 2 || d.length < 6 || d.length > 4000) throw new Error('o.d: expected 3 to 2000 points as integer pairs');
+  if (!Number.isInteger(u) || /** @type {number} */ (u) < 0 || /** @type {number} */ (u) > 9)
+    throw new Error('o.u: expected an integer 0 to 9');
+  if (!Array.isArray(d) || d.length % 2 || d.length < 6 || d.length > 4000)
+    throw new Error('o.d: expected 3 to 2000 points as integer pairs');
   const k = 10 ** /** @type {number} */ (u);
   /** @type {[number, number][]} */
   const pts = [];
-  let x = 0, y = 0;
+  let x = 0,
+    y = 0;
   for (let i = 0; i < d.length; i += 2) {
     if (!Number.isSafeInteger(d[i]) || !Number.isSafeInteger(d[i + 1])) throw new Error(`o.d[${i}]: expected integers`);
     x += d[i];
@@ -140,7 +149,14 @@ export function unpackOutline(o) {
  * @param {number} e decimals of rad
  */
 function packAngle(a, e) {
-  if (!isObj(a) || a.kind !== 'sampled' || !Array.isArray(a.values) || a.values.length < 3 || a.values.length > MAX_SAMPLES) return a;
+  if (
+    !isObj(a) ||
+    a.kind !== 'sampled' ||
+    !Array.isArray(a.values) ||
+    a.values.length < 3 ||
+    a.values.length > MAX_SAMPLES
+  )
+    return a;
   if (!a.values.every((/** @type {unknown} */ v) => typeof v === 'number' && Number.isFinite(v))) return a;
   const mh = a.max_harmonic == null ? null : Number(a.max_harmonic);
   if (mh != null && !(Number.isInteger(mh) && mh >= 0 && mh <= MAX_HARMONIC)) return a;
@@ -155,13 +171,24 @@ function packAngle(a, e) {
  */
 function unpackAngle(a, field) {
   if (!isObj(a) || !('s' in a)) return a;
-  const s = a.s, c = a.c;
-  if (!Array.isArray(s) || s.length !== 3 || !s.every(Number.isInteger)) throw new Error(`${field}.s: expected [N, H, e] integers`);
+  const s = a.s,
+    c = a.c;
+  if (!Array.isArray(s) || s.length !== 3 || !s.every(Number.isInteger))
+    throw new Error(`${field}.s: expected [N, H, e] integers`);
   const [n, h, e] = s;
-  if (n < 3 || n > MAX_SAMPLES || h < 0 || h > Math.min(Math.floor(n / 2), MAX_HARMONIC) || e < 0 || e > 9) throw new Error(`${field}.s: N, H or e out of range`);
-  if (!Array.isArray(c) || c.length !== 1 + 2 * h || !c.every(Number.isSafeInteger)) throw new Error(`${field}.c: expected ${1 + 2 * h} integers`);
+  if (n < 3 || n > MAX_SAMPLES || h < 0 || h > Math.min(Math.floor(n / 2), MAX_HARMONIC) || e < 0 || e > 9)
+    throw new Error(`${field}.s: N, H or e out of range`);
+  if (!Array.isArray(c) || c.length !== 1 + 2 * h || !c.every(Number.isSafeInteger))
+    throw new Error(`${field}.c: expected ${1 + 2 * h} integers`);
   const k = 10 ** e;
-  return { kind: 'sampled', values: seriesSamples(c.map((v) => v / k), n), max_harmonic: h };
+  return {
+    kind: 'sampled',
+    values: seriesSamples(
+      c.map((v) => v / k),
+      n,
+    ),
+    max_harmonic: h,
+  };
 }
 
 /**
@@ -184,7 +211,13 @@ function packV2(state, { angleDecimals = ANGLE_DECIMALS[0], csv = true } = {}) {
     else if (key === 'kin' && isObj(val) && isObj(val.kinematics) && typeof val.kinematics.flap_freq_hz === 'number') {
       const kk = val.kinematics;
       /** @type {Record<string, any>} */
-      const k = { l: val.label, f: kk.flap_freq_hz, a: packAngle(kk.alpha, angleDecimals), b: packAngle(kk.beta, angleDecimals), g: packAngle(kk.gamma, angleDecimals) };
+      const k = {
+        l: val.label,
+        f: kk.flap_freq_hz,
+        a: packAngle(kk.alpha, angleDecimals),
+        b: packAngle(kk.beta, angleDecimals),
+        g: packAngle(kk.gamma, angleDecimals),
+      };
       if (csv && val.csv) k.c = val.csv;
       out.k = k;
     } else out[key] = val;
@@ -209,7 +242,12 @@ function unpackV2(obj) {
       if (typeof val.f !== 'number') throw new Error('k.f: expected the flap frequency (Hz)');
       out.kin = {
         label: val.l,
-        kinematics: { flap_freq_hz: val.f, alpha: unpackAngle(val.a, 'k.a'), beta: unpackAngle(val.b, 'k.b'), gamma: unpackAngle(val.g, 'k.g') },
+        kinematics: {
+          flap_freq_hz: val.f,
+          alpha: unpackAngle(val.a, 'k.a'),
+          beta: unpackAngle(val.b, 'k.b'),
+          gamma: unpackAngle(val.g, 'k.g'),
+        },
         csv: val.c ?? null,
       };
     } else out[key] = val;
@@ -256,10 +294,13 @@ export async function decodeShare(text) {
   } catch {
     throw new Error('the share fragment does not hold JSON');
   }
-  if (!obj || typeof obj !== 'object' || Array.isArray(obj)) throw new Error('the share fragment does not hold an object');
+  if (!obj || typeof obj !== 'object' || Array.isArray(obj))
+    throw new Error('the share fragment does not hold an object');
   if (obj.v === 1) return obj;
   if (obj.v === 2) return unpackV2(obj);
-  throw new Error(`the share fragment has version ${JSON.stringify(obj.v)}; this lab reads versions ${SHARE_VERSIONS_READ.join(' and ')} (a newer lab wrote it?)`);
+  throw new Error(
+    `the share fragment has version ${JSON.stringify(obj.v)}; this lab reads versions ${SHARE_VERSIONS_READ.join(' and ')} (a newer lab wrote it?)`,
+  );
 }
 
 /**
@@ -292,7 +333,11 @@ async function linkFor(state, base) {
   if (!keys.length) return { hash: '', length: base.length, angleDecimals: null, csv: false, message: '' };
   const kin = /** @type {any} */ (state.kin);
   const hasCsv = !!(kin && kin.csv);
-  const sampled = !!(kin && kin.kinematics && ['alpha', 'beta', 'gamma'].some((a) => kin.kinematics[a] && kin.kinematics[a].kind === 'sampled'));
+  const sampled = !!(
+    kin &&
+    kin.kinematics &&
+    ['alpha', 'beta', 'gamma'].some((a) => kin.kinematics[a] && kin.kinematics[a].kind === 'sampled')
+  );
   /** @type {{ angleDecimals: number, csv: boolean }[]} */
   const tries = [];
   if (hasCsv) tries.push({ angleDecimals: ANGLE_DECIMALS[0], csv: true });
@@ -300,12 +345,30 @@ async function linkFor(state, base) {
   let last = { hash: '', length: 0, angleDecimals: /** @type {number | null} */ (null), csv: false, message: '' };
   for (const t of tries) {
     const hash = `#s=${await encodeShare(state, t)}`;
-    last = { hash, length: base.length + hash.length, angleDecimals: sampled ? t.angleDecimals : null, csv: t.csv, message: '' };
+    last = {
+      hash,
+      length: base.length + hash.length,
+      angleDecimals: sampled ? t.angleDecimals : null,
+      csv: t.csv,
+      message: '',
+    };
     if (last.length <= MAX_LINK) return last;
   }
-  const what = [state.outline ? `an outline of ${/** @type {unknown[]} */ (state.outline).length} points` : '', kin ? 'a kinematics table' : ''].filter(Boolean).join(' and ') || 'the shared state';
+  const what =
+    [
+      state.outline ? `an outline of ${/** @type {unknown[]} */ (state.outline).length} points` : '',
+      kin ? 'a kinematics table' : '',
+    ]
+      .filter(Boolean)
+      .join(' and ') || 'the shared state';
   if (last.hash.length - 3 > MAX_FRAGMENT) {
-    return { hash: '', length: base.length, angleDecimals: null, csv: false, message: `The link cannot carry ${what}: it would be ${last.length} characters, and the lab reads at most ${MAX_FRAGMENT}. The link holds the slider settings only; export the outline or kinematics as a file to share them.` };
+    return {
+      hash: '',
+      length: base.length,
+      angleDecimals: null,
+      csv: false,
+      message: `The link cannot carry ${what}: it would be ${last.length} characters, and the lab reads at most ${MAX_FRAGMENT}. The link holds the slider settings only; export the outline or kinematics as a file to share them.`,
+    };
   }
   last.message = `This link is ${last.length} characters long (it carries ${what}); links over ${MAX_LINK} characters may be cut short by e-mail, chat or a learning platform. It works when copied whole; to be safe, share the outline or kinematics as a file.`;
   return last;
@@ -327,9 +390,11 @@ export function fragmentValue(hash) {
  * @returns {[number, number][]}
  */
 export function checkPoints(pts, field = 'outline') {
-  if (!Array.isArray(pts) || pts.length < 3 || pts.length > 2000) throw new Error(`${field}: expected 3 to 2000 points [x_mm, y_mm]`);
+  if (!Array.isArray(pts) || pts.length < 3 || pts.length > 2000)
+    throw new Error(`${field}: expected 3 to 2000 points [x_mm, y_mm]`);
   return pts.map((p, i) => {
-    if (!Array.isArray(p) || p.length !== 2 || !p.every((v) => typeof v === 'number' && Number.isFinite(v))) throw new Error(`${field}[${i}]: expected [x_mm, y_mm] finite numbers`);
+    if (!Array.isArray(p) || p.length !== 2 || !p.every((v) => typeof v === 'number' && Number.isFinite(v)))
+      throw new Error(`${field}[${i}]: expected [x_mm, y_mm] finite numbers`);
     return /** @type {[number, number]} */ ([p[0], p[1]]);
   });
 }

@@ -43,7 +43,22 @@ export const ENUMS = [
 ];
 
 /** Panels that can be shown; `panels=` picks a subset (comma-separated). */
-export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report', 'experiments', 'resonance', 'wing', 'kinematics', 'modeshape', 'sensing'];
+export const PANELS = [
+  'controls',
+  'numbers',
+  'time',
+  'spectrum',
+  'strain',
+  'studies',
+  'wing3d',
+  'report',
+  'experiments',
+  'resonance',
+  'wing',
+  'kinematics',
+  'modeshape',
+  'sensing',
+];
 
 /**
  * The body rotation that the sensing panel (www/views/sensing.js) detects: a constant body
@@ -53,9 +68,23 @@ export const PANELS = ['controls', 'numbers', 'time', 'spectrum', 'strain', 'stu
  * Written to URLs only when they differ from the default. Only the sensing analysis uses it:
  * the live panels show the paper's fixed body.
  */
-export const BODY_RATE = Object.freeze({ key: 'body_rate', label: 'Body rotation rate ω_b', sym: 'ω_b', unit: 'rad/s', min: -100, max: 100, step: 0.001, def: 1 });
+export const BODY_RATE = Object.freeze({
+  key: 'body_rate',
+  label: 'Body rotation rate ω_b',
+  sym: 'ω_b',
+  unit: 'rad/s',
+  min: -100,
+  max: 100,
+  step: 0.001,
+  def: 1,
+});
 /** The body axis of the rotation: choices and default. */
-export const BODY_AXIS = Object.freeze({ key: 'body_axis', label: 'Rotation axis (body axes)', choices: Object.freeze(['x', 'y', 'z']), def: 'z' });
+export const BODY_AXIS = Object.freeze({
+  key: 'body_axis',
+  label: 'Rotation axis (body axes)',
+  choices: Object.freeze(['x', 'y', 'z']),
+  def: 'z',
+});
 /** What each body axis is, for labels. */
 export const BODY_AXIS_LABELS = Object.freeze({ x: 'x = I (roll)', y: 'y = J (pitch)', z: 'z = K (yaw)' });
 /** The URL keys of the sensing panel. */
@@ -100,12 +129,30 @@ export const FE_LAB_INPUT = Object.freeze({ n_modes: 2, mesh_size_mm: 1.0 });
  */
 export const WING = [
   { key: 'camber', core: 'camber', label: 'Camber (rise / chord)', unit: '', min: 0, max: 0.5, step: 0.01, def: 0.13 },
-  { key: 'clamp', core: 'clamp_mm', label: 'Clamp strip width (0 = root edge)', unit: 'mm', min: 0, max: 1000, step: 0.1, def: 0 },
+  {
+    key: 'clamp',
+    core: 'clamp_mm',
+    label: 'Clamp strip width (0 = root edge)',
+    unit: 'mm',
+    min: 0,
+    max: 1000,
+    step: 0.1,
+    def: 0,
+  },
   { key: 'e_pa', core: 'e_pa', label: 'Young’s modulus E', unit: 'Pa', min: 1e5, max: 1e12, step: 1e5, def: 1.311e10 },
   { key: 'rho', core: 'rho', label: 'Density ρ', unit: 'kg/m³', min: 10, max: 20000, step: 1, def: 860 },
   { key: 'nu', core: 'nu', label: 'Poisson’s ratio ν', unit: '', min: 0, max: 0.49, step: 0.01, def: 0.3 },
   { key: 'thickness_um', core: 'thickness_um', label: 'Thickness', unit: 'µm', min: 1, max: 10000, step: 0.1, def: 81 },
-  { key: 'mesh_mm', core: 'mesh_mm', label: 'Element size (0 = automatic)', unit: 'mm', min: 0, max: 100, step: 0.05, def: 0 },
+  {
+    key: 'mesh_mm',
+    core: 'mesh_mm',
+    label: 'Element size (0 = automatic)',
+    unit: 'mm',
+    min: 0,
+    max: 100,
+    step: 0.05,
+    def: 0,
+  },
   { key: 'n_modes', core: 'n_modes', label: 'Number of modes', unit: '', min: 1, max: 8, step: 1, def: 2 },
 ];
 
@@ -177,7 +224,10 @@ function parseEnum(e, raw) {
 /** @param {unknown} raw */
 function parsePanels(raw) {
   if (typeof raw !== 'string' || raw.length > 200) return null;
-  const list = raw.split(',').map((s) => s.trim()).filter(Boolean);
+  const list = raw
+    .split(',')
+    .map((s) => s.trim())
+    .filter(Boolean);
   if (list.length === 0 || !list.every((p) => PANELS.includes(p))) return null;
   return PANELS.filter((p) => list.includes(p));
 }
@@ -193,11 +243,13 @@ export function expectation(key) {
   if (key === 'exp') return `one of ${EXPERIMENT_IDS.join(', ')}`;
   if (key === 'screen') return `one of ${SCREEN_IDS.join(', ')}`;
   const w = WING.find((q) => q.key === key);
-  if (w) return `${key === 'clamp' ? '"root" or ' : ''}a number in [${w.min}, ${w.max}]${w.unit ? ' ' + w.unit : ''}${key === 'n_modes' ? ' (a whole number)' : ''}`;
+  if (w)
+    return `${key === 'clamp' ? '"root" or ' : ''}a number in [${w.min}, ${w.max}]${w.unit ? ' ' + w.unit : ''}${key === 'n_modes' ? ' (a whole number)' : ''}`;
   if (key === 'outline') return `one of ${OUTLINE_IDS.join(', ')}`;
   if (key === 'body_rate') return `a number in [${BODY_RATE.min}, ${BODY_RATE.max}] ${BODY_RATE.unit}`;
   if (key === 'body_axis') return `one of ${BODY_AXIS.choices.join(', ')}`;
-  if (key === 'planform') return 'a relative same-origin path to a .csv or .json outline (no scheme, no //, at most 200 characters)';
+  if (key === 'planform')
+    return 'a relative same-origin path to a .csv or .json outline (no scheme, no //, at most 200 characters)';
   return 'a known parameter';
 }
 
@@ -213,7 +265,11 @@ export function shortKey(key) {
   if (typeof key !== 'string') return `(a ${typeof key} as a name)`;
   const cps = Array.from(key.slice(0, 82)).slice(0, 41);
   // control characters and lone surrogates (a name cut from a malformed escape) as U+FFFD
-  const text = cps.slice(0, 40).join('').replace(/[\u0000-\u001f\u007f-\u009f\u2028\u2029\uD800-\uDFFF]/gu, '\uFFFD');
+  const text = cps
+    .slice(0, 40)
+    .join('')
+    // biome-ignore lint/suspicious/noControlCharactersInRegex: control characters are what this replaces
+    .replace(/[\u0000-\u001f\u007f-\u009f\u2028\u2029\uD800-\uDFFF]/gu, '\uFFFD');
   return cps.length > 40 ? text + '…' : text;
 }
 
@@ -266,7 +322,8 @@ export function parsePairs(pairs, ignore = []) {
     else if (key === 'embed') v = raw === '0' || raw === '1' ? raw === '1' : null;
     else if (key === 'exp') v = EXPERIMENT_IDS.includes(raw.trim()) ? raw.trim() : null;
     else if (key === 'screen') v = SCREEN_IDS.includes(String(raw).trim()) ? String(raw).trim() : null;
-    else if (WING.some((q) => q.key === key)) v = parseWing(/** @type {WingParam} */ (WING.find((q) => q.key === key)), raw);
+    else if (WING.some((q) => q.key === key))
+      v = parseWing(/** @type {WingParam} */ (WING.find((q) => q.key === key)), raw);
     else if (key === 'outline') v = OUTLINE_IDS.includes(raw.trim()) ? raw.trim() : null;
     else if (key === 'planform') v = safePlanformPath(raw);
     else if (key === 'body_rate') v = parseNumber(/** @type {any} */ (BODY_RATE), raw);
@@ -408,7 +465,9 @@ export function paramsOf(s) {
  */
 export function describe(s) {
   const modes = s.modes === 'fe' ? 'FE wing modes (SI)' : 'paper table modes (paper units)';
-  return `α_0 = ${s.alpha0} rad, β_0 = ${s.beta0} rad, γ_0 = ${s.gamma0} rad, f_d = ${s.flap_hz} Hz, ζ = ${s.zeta}, ` +
+  return (
+    `α_0 = ${s.alpha0} rad, β_0 = ${s.beta0} rad, γ_0 = ${s.gamma0} rad, f_d = ${s.flap_hz} Hz, ζ = ${s.zeta}, ` +
     `phases φ_α = ${s.alpha_phase}, φ_β = ${s.beta_phase}, φ_γ = ${s.gamma_phase} rad, ${s.duration} s at ${SAMPLE_RATE_HZ / 1000} kHz; ` +
-    `mode ${s.mode}, ${modes} — wingbeat lab`;
+    `mode ${s.mode}, ${modes} — wingbeat lab`
+  );
 }

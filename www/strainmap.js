@@ -22,7 +22,8 @@ export function extremeStates(qs, maxSamples = 4000) {
   const n = m ? qs[0].length : 0;
   if (!n) return [];
   if (m === 1) {
-    let lo = 0, hi = 0;
+    let lo = 0,
+      hi = 0;
     for (let i = 1; i < n; i++) {
       if (qs[0][i] < qs[0][lo]) lo = i;
       if (qs[0][i] > qs[0][hi]) hi = i;
@@ -34,7 +35,8 @@ export function extremeStates(qs, maxSamples = 4000) {
   const pick = new Set();
   for (let i = 0; i < n; i += stride) pick.add(i);
   for (const q of qs) {
-    let lo = 0, hi = 0;
+    let lo = 0,
+      hi = 0;
     for (let i = 1; i < n; i++) {
       if (q[i] < q[lo]) lo = i;
       if (q[i] > q[hi]) hi = i;
@@ -68,7 +70,9 @@ export const RANGE_QUANTILE = 0.9;
  * @param {number} i @param {ArrayLike<number>} q @param {Float64Array} out
  */
 function strainAt(strainNodes, nNodes, m, i, q, out) {
-  let ex = 0, ey = 0, g = 0;
+  let ex = 0,
+    ey = 0,
+    g = 0;
   for (let k = 0; k < m; k++) {
     const o = (k * nNodes + i) * 3;
     ex += strainNodes[o] * q[k];
@@ -114,7 +118,9 @@ export function strainRangesAt(strainNodes, nNodes, states, q = RANGE_QUANTILE) 
   for (let i = 0; i < nNodes; i++) {
     for (const q of states) {
       strainAt(strainNodes, nNodes, m, i, q, e);
-      const ex = e[0], ey = e[1], g = e[2];
+      const ex = e[0],
+        ey = e[1],
+        g = e[2];
       const mag = Math.sqrt(ex * ex + ey * ey + 0.5 * g * g);
       if (Math.abs(ex) > mx[0][i]) mx[0][i] = Math.abs(ex);
       if (Math.abs(ey) > mx[1][i]) mx[1][i] = Math.abs(ey);
@@ -157,7 +163,10 @@ export function runRanges(fe, analysis, maxSamples) {
   const qs = analysis.sim.modes.map((/** @type {any} */ m) => m.q.total);
   const n = fe.nodes.length / 3;
   const states = analysis.extreme_samples ? statesAt(qs, analysis.extreme_samples) : extremeStates(qs, maxSamples);
-  return { ranges: strainRangesAt(fe.strain_nodes, n, states, RANGE_QUANTILE), deflection: maxDeflectionAt(fe.shapes, n, states) };
+  return {
+    ranges: strainRangesAt(fe.strain_nodes, n, states, RANGE_QUANTILE),
+    deflection: maxDeflectionAt(fe.shapes, n, states),
+  };
 }
 
 // ---------- colour map and whole-wing strain maps (mode viewer, strain panel, 3-D view) ----------
@@ -179,10 +188,12 @@ export function colourAt(stops, t) {
   if (x <= stops[0]) out = rgb(0);
   else {
     for (let j = 0; j + 1 < n; j++) {
-      const t0 = stops[4 * j], t1 = stops[4 * j + 4];
+      const t0 = stops[4 * j],
+        t1 = stops[4 * j + 4];
       if (x <= t1) {
         const f = t1 > t0 ? (x - t0) / (t1 - t0) : 0;
-        const a = rgb(j), b = rgb(j + 1);
+        const a = rgb(j),
+          b = rgb(j + 1);
         out = [0, 1, 2].map((c) => a[c] + f * (b[c] - a[c]));
         break;
       }
@@ -229,18 +240,24 @@ export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSam
     for (let k = 0; k < m; k++) {
       for (let l = k; l < m; l++) {
         let s = 0;
-        const a = qs[k], b = qs[l];
+        const a = qs[k],
+          b = qs[l];
         for (let t = 0; t < nT; t++) s += a[t] * b[t];
         C[k * m + l] = C[l * m + k] = s / nT;
       }
     }
-    const B = c != null
-      ? (/** @type {number} */ i, /** @type {number} */ j) => strainNodes[i + c] * strainNodes[j + c]
-      : (/** @type {number} */ i, /** @type {number} */ j) => {
-        const ax = strainNodes[i], ay = strainNodes[i + 1], ag = strainNodes[i + 2];
-        const bx = strainNodes[j], by = strainNodes[j + 1], bg = strainNodes[j + 2];
-        return ax * bx - 0.5 * (ax * by + ay * bx) + ay * by + 0.75 * ag * bg;
-      };
+    const B =
+      c != null
+        ? (/** @type {number} */ i, /** @type {number} */ j) => strainNodes[i + c] * strainNodes[j + c]
+        : (/** @type {number} */ i, /** @type {number} */ j) => {
+            const ax = strainNodes[i],
+              ay = strainNodes[i + 1],
+              ag = strainNodes[i + 2];
+            const bx = strainNodes[j],
+              by = strainNodes[j + 1],
+              bg = strainNodes[j + 2];
+            return ax * bx - 0.5 * (ax * by + ay * bx) + ay * by + 0.75 * ag * bg;
+          };
     for (let i = 0; i < nNodes; i++) {
       let s = 0;
       for (let k = 0; k < m; k++) {
@@ -256,7 +273,9 @@ export function strainMapJs(strainNodes, nNodes, qs, { component, stat }, maxSam
     let acc = 0;
     for (const q of states) {
       strainAt(strainNodes, nNodes, m, i, q, e);
-      const ex = e[0], ey = e[1], g = e[2];
+      const ex = e[0],
+        ey = e[1],
+        g = e[2];
       const v = c === 0 ? ex : c === 1 ? ey : c === 2 ? g : vonMisesStrain(ex, ey, g);
       acc = Math.max(acc, Math.abs(v));
     }
@@ -320,7 +339,11 @@ export function strainMap(fe, result, map, strainField = null) {
   /** @type {ArrayLike<number> | null} */
   let field = null;
   if (strainField) {
-    try { field = strainField(fe.strain_nodes, nModes, qs, { component: map.component, stat: map.stat }); } catch { field = null; }
+    try {
+      field = strainField(fe.strain_nodes, nModes, qs, { component: map.component, stat: map.stat });
+    } catch {
+      field = null;
+    }
   }
   if (!field || field.length !== n) field = strainMapJs(fe.strain_nodes, n, qs, map);
   mapCache = { fe, result, key, field: Float64Array.from(field) };

@@ -41,7 +41,16 @@
   const SCOPE = sw.registration.scope;
   const CACHE = `wingbeat:${SCOPE}:${BUILD}`;
   /** Entry files, relative to the scope. Install fails (and is retried) if one of ESSENTIAL fails. */
-  const ESSENTIAL = ['./', 'index.html', 'main.js', 'lab.js', 'worker.js', 'style.css', 'pkg/wingbeat.js', 'pkg/wingbeat_bg.wasm'];
+  const ESSENTIAL = [
+    './',
+    'index.html',
+    'main.js',
+    'lab.js',
+    'worker.js',
+    'style.css',
+    'pkg/wingbeat.js',
+    'pkg/wingbeat_bg.wasm',
+  ];
 
   /** @param {string} href */
   const inScope = (href) => href.startsWith(SCOPE) && !href.endsWith('/sw.js');
@@ -52,10 +61,13 @@
    * is retried on the next visit.
    */
   async function manifest() {
-    const res = await fetch(new Request(new URL(MANIFEST, SCOPE).href, { cache: 'reload', credentials: 'same-origin' }));
+    const res = await fetch(
+      new Request(new URL(MANIFEST, SCOPE).href, { cache: 'reload', credentials: 'same-origin' }),
+    );
     if (!res.ok) throw new Error(`precache: ${MANIFEST}: HTTP ${res.status} (scripts/build-web.sh writes it)`);
     const m = await res.json();
-    if (!m || m.version !== 1 || !Array.isArray(m.files)) throw new Error(`precache: ${MANIFEST}: expected { version: 1, files: [...] }`);
+    if (!m || m.version !== 1 || !Array.isArray(m.files))
+      throw new Error(`precache: ${MANIFEST}: expected { version: 1, files: [...] }`);
     /** @type {string[]} */
     const out = [];
     for (const f of m.files) {
@@ -94,12 +106,14 @@
   });
 
   sw.addEventListener('activate', (e) => {
-    e.waitUntil((async () => {
-      for (const name of await caches.keys()) {
-        if (name.startsWith(`wingbeat:${SCOPE}:`) && name !== CACHE) await caches.delete(name);
-      }
-      await sw.clients.claim();
-    })());
+    e.waitUntil(
+      (async () => {
+        for (const name of await caches.keys()) {
+          if (name.startsWith(`wingbeat:${SCOPE}:`) && name !== CACHE) await caches.delete(name);
+        }
+        await sw.clients.claim();
+      })(),
+    );
   });
 
   /**
@@ -125,7 +139,10 @@
     // The copy is used (and refreshed) only while it exists: after an opt-out deleted it
     // (offline.js), the page this worker still controls must not bring it back.
     /** @type {Promise<Cache | null>} */
-    const cache = caches.has(CACHE).then((has) => (has ? caches.open(CACHE) : null), () => null);
+    const cache = caches.has(CACHE).then(
+      (has) => (has ? caches.open(CACHE) : null),
+      () => null,
+    );
     /** @type {Promise<unknown>[]} */
     const puts = [];
     const net = fetch(req).then((res) => {
@@ -137,7 +154,9 @@
     });
     const dirPage = req.mode === 'navigate' && key.endsWith('/');
     /** @type {Promise<Response | undefined>} */
-    const copy = cache.then(async (c) => (c ? (await c.match(key)) || (dirPage ? c.match(`${key}index.html`) : undefined) : undefined)).catch(() => undefined);
+    const copy = cache
+      .then(async (c) => (c ? (await c.match(key)) || (dirPage ? c.match(`${key}index.html`) : undefined) : undefined))
+      .catch(() => undefined);
     /** @type {Promise<Response | null>} */
     const late = new Promise((resolve) => setTimeout(() => copy.then((hit) => resolve(hit || null)), NET_TIMEOUT_MS));
     const response = (async () => {
@@ -150,7 +169,10 @@
         throw err;
       }
     })();
-    const done = net.then(() => Promise.all(puts), () => {});
+    const done = net.then(
+      () => Promise.all(puts),
+      () => {},
+    );
     return { response, done };
   }
 

@@ -43,9 +43,16 @@ export const clean = (v) => Number(Number(v).toPrecision(12));
 export function readWingValue(w, text) {
   const sh = SHOW[w.key];
   const v = Number(text) / sh.scale;
-  const ok = text.trim() !== '' && Number.isFinite(v) && v >= w.min - 1e-12 && v <= w.max + 1e-12 && (w.key !== 'n_modes' || Number.isInteger(v));
+  const ok =
+    text.trim() !== '' &&
+    Number.isFinite(v) &&
+    v >= w.min - 1e-12 &&
+    v <= w.max + 1e-12 &&
+    (w.key !== 'n_modes' || Number.isInteger(v));
   if (ok) return { value: clean(v) };
-  return { error: `${LABEL[w.key]}: expected ${w.key === 'n_modes' ? 'a whole number' : 'a number'} in [${clean(w.min * sh.scale)}, ${clean(w.max * sh.scale)}]${sh.unit ? ' ' + sh.unit.replace(/,.*$/, '') : ''}.` };
+  return {
+    error: `${LABEL[w.key]}: expected ${w.key === 'n_modes' ? 'a whole number' : 'a number'} in [${clean(w.min * sh.scale)}, ${clean(w.max * sh.scale)}]${sh.unit ? ' ' + sh.unit.replace(/,.*$/, '') : ''}.`,
+  };
 }
 
 /**
@@ -55,7 +62,8 @@ export function readWingValue(w, text) {
  * @param {Record<string, number>} params
  * @returns {P | undefined}
  */
-export const matchingPreset = (presets, params) => presets.find((p) => MATERIAL_KEYS.every((k) => Math.abs(p[k] - params[k]) <= 1e-9 * Math.abs(p[k])));
+export const matchingPreset = (presets, params) =>
+  presets.find((p) => MATERIAL_KEYS.every((k) => Math.abs(p[k] - params[k]) <= 1e-9 * Math.abs(p[k])));
 
 /**
  * The outline drawing's box in SVG coordinates (x right, y down: y_svg = −y_mm): the points'
@@ -64,12 +72,20 @@ export const matchingPreset = (presets, params) => presets.find((p) => MATERIAL_
  * @param {[number, number][]} pts mm
  */
 export function outlineBox(pts) {
-  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  let x0 = Infinity,
+    x1 = -Infinity,
+    y0 = Infinity,
+    y1 = -Infinity;
   for (const p of pts) {
-    const x = p[0], y = -p[1];
-    x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+    const x = p[0],
+      y = -p[1];
+    x0 = Math.min(x0, x);
+    x1 = Math.max(x1, x);
+    y0 = Math.min(y0, y);
+    y1 = Math.max(y1, y);
   }
-  const w = Math.max(x1 - x0, 1e-6), h = Math.max(y1 - y0, 1e-6);
+  const w = Math.max(x1 - x0, 1e-6),
+    h = Math.max(y1 - y0, 1e-6);
   const m = 0.06 * Math.max(w, h);
   return { viewBox: `${x0 - m} ${y0 - m} ${w + 2 * m} ${h + 2 * m}`, w, h, scale: Math.max(w, h) };
 }
@@ -81,7 +97,8 @@ export function outlineBox(pts) {
  * @param {number} i
  */
 export function insertMidpoint(pts, i) {
-  const a = pts[i], b = pts[(i + 1) % pts.length];
+  const a = pts[i],
+    b = pts[(i + 1) % pts.length];
   pts.splice(i + 1, 0, [Number(((a[0] + b[0]) / 2).toFixed(3)), Number(((a[1] + b[1]) / 2).toFixed(3))]);
 }
 
@@ -90,4 +107,5 @@ export function insertMidpoint(pts, i) {
  * as it is when it already says so, or "edited outline" when there was none.
  * @param {string} label
  */
-export const editedLabel = (label) => (label && !/^edited/.test(label) ? `edited ${label}`.slice(0, 80) : label || 'edited outline');
+export const editedLabel = (label) =>
+  label && !/^edited/.test(label) ? `edited ${label}`.slice(0, 80) : label || 'edited outline';

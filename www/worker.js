@@ -12,7 +12,15 @@
 import init, * as wb from './pkg/wingbeat.js';
 import { decimate } from './decimate.js';
 import { errorText } from './format.js';
-import { JOB, readRequest, readyMessage, progressMessage, resultMessage, errorMessage, transferList } from './engine/protocol.js';
+import {
+  JOB,
+  readRequest,
+  readyMessage,
+  progressMessage,
+  resultMessage,
+  errorMessage,
+  transferList,
+} from './engine/protocol.js';
 
 /**
  * The wasm, loaded on the first message: the page's own compiled module when the engine sends
@@ -24,7 +32,10 @@ function start(/** @type {WebAssembly.Module | undefined} */ module) {
   if (!ready) {
     ready = init({ module_or_path: module || new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
     // Tells the engine that the wasm is loaded (the live worker is used once it is).
-    ready.then(() => scope.postMessage(readyMessage()), () => {});
+    ready.then(
+      () => scope.postMessage(readyMessage()),
+      () => {},
+    );
   }
   return ready;
 }
@@ -53,7 +64,11 @@ const jobs = {
       progress(i + 1, 2);
     }
     const t = runs[0].t;
-    const [x, undamped, damped] = decimate(t, runs.map((r) => r.modes[mode].q.total), 1500);
+    const [x, undamped, damped] = decimate(
+      t,
+      runs.map((r) => r.modes[mode].q.total),
+      1500,
+    );
     Object.assign(out, {
       t: x,
       undamped,
@@ -94,7 +109,10 @@ const jobs = {
 };
 
 /** The worker's global scope (a DedicatedWorkerGlobalScope; tsconfig's lib is the page's DOM). */
-const scope = /** @type {{ postMessage(message: unknown, transfer?: Transferable[]): void, onmessage: ((ev: MessageEvent) => void) | null }} */ (/** @type {unknown} */ (self));
+const scope =
+  /** @type {{ postMessage(message: unknown, transfer?: Transferable[]): void, onmessage: ((ev: MessageEvent) => void) | null }} */ (
+    /** @type {unknown} */ (self)
+  );
 
 scope.onmessage = async (ev) => {
   const req = readRequest(ev.data);

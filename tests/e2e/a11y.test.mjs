@@ -29,7 +29,11 @@ async function scan(page) {
   for (const f of page.frames()) await f.addScriptTag({ path: AXE });
   return page.evaluate(async () => {
     // target-size (WCAG 2.2 AA, 24×24 CSS px) is off by default in axe 4.14: turn it on.
-    const r = await window.axe.run(document, { resultTypes: ['violations'], iframes: true, rules: { 'target-size': { enabled: true } } });
+    const r = await window.axe.run(document, {
+      resultTypes: ['violations'],
+      iframes: true,
+      rules: { 'target-size': { enabled: true } },
+    });
     return r.violations.map((v) => ({
       rule: v.id,
       impact: v.impact,
@@ -39,14 +43,23 @@ async function scan(page) {
   });
 }
 
-const report = (vs) => vs.map((v) => `${v.rule} (${v.impact}): ${v.help}\n${v.nodes.map((n) => `   ${n.target}  ${n.html}\n     ${n.why}`).join('\n')}`).join('\n');
+const report = (vs) =>
+  vs
+    .map(
+      (v) =>
+        `${v.rule} (${v.impact}): ${v.help}\n${v.nodes.map((n) => `   ${n.target}  ${n.html}\n     ${n.why}`).join('\n')}`,
+    )
+    .join('\n');
 
 function save(name, vs) {
   fs.mkdirSync(OUT, { recursive: true });
   fs.writeFileSync(path.join(OUT, name), JSON.stringify(vs, null, 2));
 }
 
-for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+for (const viewport of [
+  { width: 1280, height: 800 },
+  { width: 390, height: 844 },
+]) {
   test(`axe: the lab page has no violations (${viewport.width}×${viewport.height}, experiment + resonance map open)`, async () => {
     const { page, problems, context } = await openPage(env.browser, env.url, viewport);
     // The full page: every panel scanned at once (tests/e2e/screens.test.mjs scans each screen).
@@ -60,7 +73,11 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     await page.waitForFunction((s) => Number(__wl.q(s).dataset.done || 0) >= 1, inner, { timeout: 60000 });
     const vs = await scan(page);
     save(`axe-lab-${viewport.width}.json`, vs);
-    assert.deepEqual(vs.map((v) => v.rule), [], report(vs));
+    assert.deepEqual(
+      vs.map((v) => v.rule),
+      [],
+      report(vs),
+    );
     assert.deepEqual(problems, []);
     await context.close();
   });
@@ -73,10 +90,16 @@ test('axe: the embedding demo has no violations (two elements and the iframe)', 
   await waitRenders(page, 1, '#lab-b');
   await page.locator('iframe').scrollIntoViewIfNeeded();
   const frame = page.frames().find((f) => f !== page.mainFrame());
-  await frame.waitForFunction(() => Number(document.querySelector('wing-lab')?.dataset.renders || 0) >= 1, null, { timeout: 30000 });
+  await frame.waitForFunction(() => Number(document.querySelector('wing-lab')?.dataset.renders || 0) >= 1, null, {
+    timeout: 30000,
+  });
   const vs = await scan(page);
   save('axe-embed.json', vs);
-  assert.deepEqual(vs.map((v) => v.rule), [], report(vs));
+  assert.deepEqual(
+    vs.map((v) => v.rule),
+    [],
+    report(vs),
+  );
   assert.deepEqual(problems, []);
   await context.close();
 });

@@ -12,8 +12,13 @@ import path from 'node:path';
 import { setup, openPage, waitRenders, OUT } from './helpers.mjs';
 
 let env;
-before(async () => { env = await setup(); fs.mkdirSync(OUT, { recursive: true }); });
-after(async () => { if (env) await env.close(); });
+before(async () => {
+  env = await setup();
+  fs.mkdirSync(OUT, { recursive: true });
+});
+after(async () => {
+  if (env) await env.close();
+});
 
 const PANELS = 'controls,time,numbers';
 

@@ -32,15 +32,22 @@ async function openExperiment(id, viewport) {
 /** Waits until the experiment panel shows `id` with all of its checks computed. */
 async function waitChecks(page, id) {
   const want = { yaw: 2, ic: 1 }[id];
-  await page.waitForFunction(([sel, exp, n]) => {
-    const box = __wl.q(sel);
-    if (!box || box.dataset.exp !== exp) return false;
-    const checks = box.querySelectorAll('[data-check]');
-    return n ? checks.length >= n : checks.length > 0;
-  }, [PANEL_IN, id, want], { timeout: 60000 });
+  await page.waitForFunction(
+    ([sel, exp, n]) => {
+      const box = __wl.q(sel);
+      if (!box || box.dataset.exp !== exp) return false;
+      const checks = box.querySelectorAll('[data-check]');
+      return n ? checks.length >= n : checks.length > 0;
+    },
+    [PANEL_IN, id, want],
+    { timeout: 60000 },
+  );
 }
 
-const checks = (page) => page.$$eval(`${PANEL} [data-check]`, (els) => Object.fromEntries(els.map((e) => [e.dataset.check, e.dataset.holds === 'true'])));
+const checks = (page) =>
+  page.$$eval(`${PANEL} [data-check]`, (els) =>
+    Object.fromEntries(els.map((e) => [e.dataset.check, e.dataset.holds === 'true'])),
+  );
 const values = (page) => page.$eval(PANEL, (b) => JSON.parse(b.dataset.values || '{}'));
 const text = (page) => page.$eval(`${PANEL} .wl-exp-detail`, (e) => e.textContent);
 
@@ -61,11 +68,16 @@ test('every experiment loads from its URL, states a live prediction and all its 
 test('the Coriolis beat: the stated period is the Floquet value and the envelope repeats at it', async () => {
   const { page, context } = await openExperiment('beat');
   const v = await values(page);
-  const feff = await page.evaluate(() => document.querySelector('wing-lab').store.get().result.analysis.sim.modes[0].floquet.effective_freq_hz);
+  const feff = await page.evaluate(
+    () => document.querySelector('wing-lab').store.get().result.analysis.sim.modes[0].floquet.effective_freq_hz,
+  );
   assert.ok(Math.abs(feff - 60.30639396854428) < 1e-9);
   assert.ok(Math.abs(v.predicted_s - 1 / (feff - 50)) < 1e-12);
   assert.ok(Math.abs(v.measured_s - v.predicted_s) / v.predicted_s < 0.02, JSON.stringify(v));
-  assert.match(await text(page), /feff = 60\.31 Hz and the Coriolis force drives at 2 fd = 50 Hz, so the envelope should repeat every Tbeat = 1\/\|60\.31 − 50\| = 0\.097 s/);
+  assert.match(
+    await text(page),
+    /feff = 60\.31 Hz and the Coriolis force drives at 2 fd = 50 Hz, so the envelope should repeat every Tbeat = 1\/\|60\.31 − 50\| = 0\.097 s/,
+  );
   await context.close();
 });
 
@@ -82,7 +94,10 @@ test('no yaw: the Coriolis response is identically zero in every mode', async ()
   });
   assert.deepEqual(r.nonzero, [0, 0]);
   assert.ok(r.force.every((x) => x === 0));
-  assert.ok(r.euler.every((x) => x > 0), 'the wing still bends');
+  assert.ok(
+    r.euler.every((x) => x > 0),
+    'the wing still bends',
+  );
   assert.ok(r.n > 10000);
   await context.close();
 });
@@ -114,7 +129,9 @@ test('a click on an experiment link applies it in place and writes a shareable U
   const o = await openPage(env.browser, env.url);
   await o.page.goto(env.url);
   await waitRenders(o.page, 1);
-  await o.page.evaluate(() => { window.__samePage = true; });
+  await o.page.evaluate(() => {
+    window.__samePage = true;
+  });
   await o.page.click(`${PANEL} a[data-exp="no-yaw"]`);
   await waitChecks(o.page, 'no-yaw');
   await o.page.waitForFunction(() => new URLSearchParams(location.search).get('exp') === 'no-yaw');
@@ -145,22 +162,39 @@ test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, can
   assert.equal(res.flap_hz.length, 221);
   const m0 = res.modes[0];
   const unstable = [...m0.stable].map((s, i) => (s ? null : res.flap_hz[i])).filter((x) => x != null);
-  assert.ok(unstable.some((f) => f > 45 && f < 58), 'first tongue of mode 1');
+  assert.ok(
+    unstable.some((f) => f > 45 && f < 58),
+    'first tongue of mode 1',
+  );
   assert.ok([...m0.max_modulus].some((m) => m > 1.5));
   // Axis titles carry units.
-  const axes = await page.$$eval(`${box} .wl-xtitle, ${box} .wl-ytitle`, (els) => els.map((e) => e.textContent).join(' | '));
+  const axes = await page.$$eval(`${box} .wl-xtitle, ${box} .wl-ytitle`, (els) =>
+    els.map((e) => e.textContent).join(' | '),
+  );
   assert.match(axes, /flap frequency fd \(Hz\)/);
   assert.match(axes, /frequency f \(Hz\)/);
   assert.match(axes, /largest \|multiplier\| per flap period \(–\)/);
   // CSV export: one row per flap frequency, per-mode columns with units.
-  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab [data-panel="resonance"] [data-export="csv"]')]);
+  const [dl] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab [data-panel="resonance"] [data-export="csv"]'),
+  ]);
   const csv = fs.readFileSync(await dl.path(), 'utf8');
-  const lines = csv.trim().split('\n').filter((l) => !l.startsWith('#'));
-  assert.match(lines[0], /^flap_freq \(Hz\),mode1_effective_freq \(Hz\),mode1_max_multiplier_modulus,mode1_beat_period \(s\)/);
+  const lines = csv
+    .trim()
+    .split('\n')
+    .filter((l) => !l.startsWith('#'));
+  assert.match(
+    lines[0],
+    /^flap_freq \(Hz\),mode1_effective_freq \(Hz\),mode1_max_multiplier_modulus,mode1_beat_period \(s\)/,
+  );
   assert.equal(lines.length, 222);
   // PNG and SVG of the f_eff plot as a figure (title, legend, parameter line), PNG at 2×.
   for (const kind of ['png', 'svg']) {
-    const [d] = await Promise.all([page.waitForEvent('download'), page.click(`wing-lab [data-panel="resonance"] [data-export="${kind}"]`)]);
+    const [d] = await Promise.all([
+      page.waitForEvent('download'),
+      page.click(`wing-lab [data-panel="resonance"] [data-export="${kind}"]`),
+    ]);
     assert.equal(d.suggestedFilename(), `wingbeat-resonance.${kind}`);
     assert.ok(fs.statSync(await d.path()).size > 5000);
   }
@@ -184,13 +218,18 @@ test('resonance map: curves with n·f_d lines, unstable bands, summary, CSV, can
   await page.fill(`${box} .wl-res-axis2 input[aria-label^="α0 values"]`, '201');
   await page.fill(`${box} input[aria-label^="points"]`, '2001');
   await page.click(`${box} [data-run="resonance"]`);
-  await page.waitForFunction((s) => /Error: .*over the cap/.test(__wl.q(`${s} .wl-status`).textContent), BOX_IN, { timeout: 20000 });
+  await page.waitForFunction((s) => /Error: .*over the cap/.test(__wl.q(`${s} .wl-status`).textContent), BOX_IN, {
+    timeout: 20000,
+  });
   assert.deepEqual(o.problems, []);
   await o.context.close();
 });
 
 test('resonance map with α0 as a second axis draws a heat map; phone layout screenshots', async () => {
-  for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+  for (const viewport of [
+    { width: 1280, height: 800 },
+    { width: 390, height: 844 },
+  ]) {
     const o = await openPage(env.browser, env.url, viewport);
     const { page } = o;
     // The experiment opens The beat (the responses); its map is on the Research screen.

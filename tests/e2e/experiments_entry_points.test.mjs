@@ -59,22 +59,39 @@ async function expectOpen(frame, id, hostSel = 'wing-lab', how = '') {
   const want = CHECKS[id];
   const keys = NUMERIC.map((p) => p.key);
   try {
-    await frame.waitForFunction(([sel, host, exp, ids, keys]) => {
-      const lab = document.querySelector(host);
-      const box = __wl.q(sel, host);
-      if (!lab || !lab.store || !box || box.dataset.exp !== exp) return false;
-      const s = lab.store.get();
-      if (!s.result || keys.some((k) => s.result.params[k] !== s[k]) || s.result.params.modes !== s.modes) return false;
-      const seen = Object.fromEntries([...box.querySelectorAll('[data-check]')].map((c) => [c.dataset.check, c.dataset.holds === 'true']));
-      return ids.every((c) => seen[c] === true);
-    }, [PANEL_IN, hostSel, id, want, keys], { timeout: 120000, polling: 100 });
+    await frame.waitForFunction(
+      ([sel, host, exp, ids, keys]) => {
+        const lab = document.querySelector(host);
+        const box = __wl.q(sel, host);
+        if (!lab || !lab.store || !box || box.dataset.exp !== exp) return false;
+        const s = lab.store.get();
+        if (!s.result || keys.some((k) => s.result.params[k] !== s[k]) || s.result.params.modes !== s.modes)
+          return false;
+        const seen = Object.fromEntries(
+          [...box.querySelectorAll('[data-check]')].map((c) => [c.dataset.check, c.dataset.holds === 'true']),
+        );
+        return ids.every((c) => seen[c] === true);
+      },
+      [PANEL_IN, hostSel, id, want, keys],
+      { timeout: 120000, polling: 100 },
+    );
   } catch (e) {
-    const seen = await frame.evaluate(([sel, host]) => {
-      const box = __wl.q(sel, host);
-      const lab = document.querySelector(host);
-      return { exp: box && box.dataset.exp, checks: box && box.dataset.checks, text: box && (box.querySelector('.wl-exp-checks') || box).textContent.slice(0, 600), zeta: lab && lab.store && lab.store.get().zeta };
-    }, [PANEL_IN, hostSel]);
-    throw new Error(`${how} ${id}: checks ${want.join(', ')} did not all hold: ${JSON.stringify(seen)} (${e.message.split('\n')[0]})`);
+    const seen = await frame.evaluate(
+      ([sel, host]) => {
+        const box = __wl.q(sel, host);
+        const lab = document.querySelector(host);
+        return {
+          exp: box && box.dataset.exp,
+          checks: box && box.dataset.checks,
+          text: box && (box.querySelector('.wl-exp-checks') || box).textContent.slice(0, 600),
+          zeta: lab && lab.store && lab.store.get().zeta,
+        };
+      },
+      [PANEL_IN, hostSel],
+    );
+    throw new Error(
+      `${how} ${id}: checks ${want.join(', ')} did not all hold: ${JSON.stringify(seen)} (${e.message.split('\n')[0]})`,
+    );
   }
   const st = await frame.evaluate((h) => ({ ...document.querySelector(h).state }), hostSel);
   const e = EXPERIMENTS.find((x) => x.id === id);
@@ -125,14 +142,17 @@ test('the exp attribute opens each experiment, at connection and when changed on
   // A bare element per experiment, built the way a course page writes it (no sync-url).
   await page.evaluate(() => document.querySelector('wing-lab').remove());
   for (const e of EXPERIMENTS) {
-    await page.evaluate(([id, panels]) => {
-      document.getElementById('t-lab')?.remove();
-      const l = document.createElement('wing-lab');
-      l.id = 't-lab';
-      l.setAttribute('panels', panels);
-      l.setAttribute('exp', id);
-      document.body.append(l);
-    }, [e.id, PANELS]);
+    await page.evaluate(
+      ([id, panels]) => {
+        document.getElementById('t-lab')?.remove();
+        const l = document.createElement('wing-lab');
+        l.id = 't-lab';
+        l.setAttribute('panels', panels);
+        l.setAttribute('exp', id);
+        document.body.append(l);
+      },
+      [e.id, PANELS],
+    );
     await expectOpen(page, e.id, '#t-lab', 'attribute');
   }
   // The same element, its attribute changed while it runs.
@@ -146,9 +166,12 @@ test('the exp attribute opens each experiment, at connection and when changed on
 
 test("the iframe message API's set({ exp }) opens each experiment with its settings", async () => {
   const labSrc = `${env.url}index.html?embed=1&panels=${PANELS}`;
-  fs.writeFileSync(path.join(dir, 'course.html'), `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title></head>
+  fs.writeFileSync(
+    path.join(dir, 'course.html'),
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title></head>
 <body><iframe id="lab" data-wingbeat title="wingbeat lab" src="${labSrc}" style="width:100%;border:0"></iframe>
-<script src="${env.url}embed-host.js"></script></body></html>`);
+<script src="${env.url}embed-host.js"></script></body></html>`,
+  );
   const { page, problems, context } = await openPage(env.browser, host.url);
   await page.goto(`${host.url}course.html`);
   const frame = () => page.frames().find((f) => f.url().startsWith(env.url));
@@ -168,7 +191,9 @@ test("the iframe message API's set({ exp }) opens each experiment with its setti
     await expectOpen(frame(), e.id, 'wing-lab', 'message API');
   }
   // Values set with exp win over the experiment's.
-  const r = await page.evaluate(async () => (await window.wingbeatLab(document.getElementById('lab')).set({ exp: 'damping', zeta: 0.02 })).params);
+  const r = await page.evaluate(
+    async () => (await window.wingbeatLab(document.getElementById('lab')).set({ exp: 'damping', zeta: 0.02 })).params,
+  );
   assert.equal(r.zeta, 0.02);
   assert.equal(r.duration, 10);
   assert.deepEqual(problems, []);

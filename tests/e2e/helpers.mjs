@@ -43,7 +43,15 @@ export async function setup(root = process.env.LAB_ROOT || 'www') {
   fs.mkdirSync(OUT, { recursive: true });
   const { server, url } = await startServer(dir, 0);
   const browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS, headless: true });
-  return { server, url, browser, close: async () => { await browser.close(); server.close(); } };
+  return {
+    server,
+    url,
+    browser,
+    close: async () => {
+      await browser.close();
+      server.close();
+    },
+  };
 }
 
 /** Defines window.__wl (see the top of this file) in every page and frame of a browser context. */
@@ -65,28 +73,39 @@ export async function labHelpers(context) {
         while (a && a.shadowRoot && a.shadowRoot.activeElement) a = a.shadowRoot.activeElement;
         return a;
       },
-      axe: (sel, host = 'wing-lab') => (root(host) instanceof ShadowRoot ? { fromShadowDom: [host, sel] } : `${host} ${sel}`),
+      axe: (sel, host = 'wing-lab') =>
+        root(host) instanceof ShadowRoot ? { fromShadowDom: [host, sel] } : `${host} ${sel}`,
     };
   });
 }
 
 /** A page that records console errors, page errors, failed and off-host requests and dialogs. */
-export async function openPage(browser, url, viewport = { width: 1280, height: 720 }) {
+export async function openPage(browser, _url, viewport = { width: 1280, height: 720 }) {
   const context = await browser.newContext({ viewport, acceptDownloads: true });
   await labHelpers(context);
   const page = await context.newPage();
   const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+  page.on('console', (m) => {
+    if (m.type() === 'error') problems.push(`console: ${m.text()}`);
+  });
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  page.on('dialog', (d) => { problems.push(`dialog: ${d.message()}`); d.dismiss(); });
+  page.on('dialog', (d) => {
+    problems.push(`dialog: ${d.message()}`);
+    d.dismiss();
+  });
   page.on('requestfailed', (r) => problems.push(`requestfailed: ${r.url()}`));
-  page.on('request', (r) => { if (!r.url().startsWith('http://127.0.0.1') && !r.url().startsWith('blob:') && !r.url().startsWith('data:')) problems.push(`external request: ${r.url()}`); });
+  page.on('request', (r) => {
+    if (!r.url().startsWith('http://127.0.0.1') && !r.url().startsWith('blob:') && !r.url().startsWith('data:'))
+      problems.push(`external request: ${r.url()}`);
+  });
   return { context, page, problems };
 }
 
 /** Waits until the lab `sel` has rendered at least `n` times. */
 export async function waitRenders(page, n = 1, sel = 'wing-lab') {
-  await page.waitForFunction(([s, k]) => Number(document.querySelector(s)?.dataset.renders || 0) >= k, [sel, n], { timeout: 20000 });
+  await page.waitForFunction(([s, k]) => Number(document.querySelector(s)?.dataset.renders || 0) >= k, [sel, n], {
+    timeout: 20000,
+  });
 }
 
 export async function renders(page, sel = 'wing-lab') {
@@ -113,7 +132,9 @@ export async function pngStats(page, buf) {
     const count = new Map();
     let nonWhite = 0;
     for (let i = 0; i < d.length; i += 4) {
-      const r = d[i], g = d[i + 1], b = d[i + 2];
+      const r = d[i],
+        g = d[i + 1],
+        b = d[i + 2];
       if (r < 245 || g < 245 || b < 245) nonWhite++;
       const k = (r << 16) | (g << 8) | b;
       if (colours.size < 5000) colours.add(k);
@@ -123,10 +144,18 @@ export async function pngStats(page, buf) {
     const bg = [...count.entries()].sort((x, y) => y[1] - x[1])[0][0];
     let fg = 0;
     for (let i = 0; i < d.length; i += 4) {
-      if (Math.abs(d[i] - (bg >> 16)) + Math.abs(d[i + 1] - ((bg >> 8) & 255)) + Math.abs(d[i + 2] - (bg & 255)) > 30) fg++;
+      if (Math.abs(d[i] - (bg >> 16)) + Math.abs(d[i + 1] - ((bg >> 8) & 255)) + Math.abs(d[i + 2] - (bg & 255)) > 30)
+        fg++;
     }
     const n = c.width * c.height;
-    return { width: c.width, height: c.height, nonWhite, fraction: nonWhite / n, colours: colours.size, foreground: fg / n };
+    return {
+      width: c.width,
+      height: c.height,
+      nonWhite,
+      fraction: nonWhite / n,
+      colours: colours.size,
+      foreground: fg / n,
+    };
   }, b64);
 }
 
@@ -136,56 +165,71 @@ export async function pngStats(page, buf) {
  */
 export async function pngForeground(page, buf, tol = 30, inset = 0) {
   const b64 = buf.toString('base64');
-  return page.evaluate(async ([data, tol, inset]) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${data}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width;
-    c.height = img.height;
-    const ctx = c.getContext('2d');
-    ctx.drawImage(img, 0, 0);
-    const d = ctx.getImageData(0, 0, c.width, c.height).data;
-    const count = new Map();
-    for (let i = 0; i < d.length; i += 4) {
-      const k = (d[i] << 16) | (d[i + 1] << 8) | d[i + 2];
-      count.set(k, (count.get(k) || 0) + 1);
-    }
-    const bg = [...count.entries()].sort((x, y) => y[1] - x[1])[0][0];
-    let x0 = Infinity, y0 = Infinity, x1 = -1, y1 = -1, fg = 0;
-    for (let y = inset; y < c.height - inset; y++) {
-      for (let x = inset; x < c.width - inset; x++) {
-        const i = 4 * (y * c.width + x);
-        if (Math.abs(d[i] - (bg >> 16)) + Math.abs(d[i + 1] - ((bg >> 8) & 255)) + Math.abs(d[i + 2] - (bg & 255)) > tol) {
-          fg++;
-          if (x < x0) x0 = x;
-          if (x > x1) x1 = x;
-          if (y < y0) y0 = y;
-          if (y > y1) y1 = y;
+  return page.evaluate(
+    async ([data, tol, inset]) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${data}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width;
+      c.height = img.height;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      const d = ctx.getImageData(0, 0, c.width, c.height).data;
+      const count = new Map();
+      for (let i = 0; i < d.length; i += 4) {
+        const k = (d[i] << 16) | (d[i + 1] << 8) | d[i + 2];
+        count.set(k, (count.get(k) || 0) + 1);
+      }
+      const bg = [...count.entries()].sort((x, y) => y[1] - x[1])[0][0];
+      let x0 = Infinity,
+        y0 = Infinity,
+        x1 = -1,
+        y1 = -1,
+        fg = 0;
+      for (let y = inset; y < c.height - inset; y++) {
+        for (let x = inset; x < c.width - inset; x++) {
+          const i = 4 * (y * c.width + x);
+          if (
+            Math.abs(d[i] - (bg >> 16)) + Math.abs(d[i + 1] - ((bg >> 8) & 255)) + Math.abs(d[i + 2] - (bg & 255)) >
+            tol
+          ) {
+            fg++;
+            if (x < x0) x0 = x;
+            if (x > x1) x1 = x;
+            if (y < y0) y0 = y;
+            if (y > y1) y1 = y;
+          }
         }
       }
-    }
-    return { x0, y0, x1, y1, width: c.width, height: c.height, share: fg / (c.width * c.height) };
-  }, [b64, tol, inset]);
+      return { x0, y0, x1, y1, width: c.width, height: c.height, share: fg / (c.width * c.height) };
+    },
+    [b64, tol, inset],
+  );
 }
 
 /** Whether every colour (hex #rrggbb) occurs exactly in a region (fractions of the image) of a PNG. */
 export async function pngHasColours(page, buf, colours, region = [0, 0, 1, 1]) {
   const b64 = buf.toString('base64');
-  return page.evaluate(async ([data, colours, region]) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${data}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width;
-    c.height = img.height;
-    const ctx = c.getContext('2d');
-    ctx.drawImage(img, 0, 0);
-    const [fx0, fy0, fx1, fy1] = region;
-    const x0 = Math.floor(fx0 * c.width), y0 = Math.floor(fy0 * c.height);
-    const d = ctx.getImageData(x0, y0, Math.ceil((fx1 - fx0) * c.width), Math.ceil((fy1 - fy0) * c.height)).data;
-    const seen = new Set();
-    for (let i = 0; i < d.length; i += 4) seen.add(`#${[d[i], d[i + 1], d[i + 2]].map((v) => v.toString(16).padStart(2, '0')).join('')}`);
-    return Object.fromEntries(colours.map((col) => [col, seen.has(col.toLowerCase())]));
-  }, [b64, colours, region]);
+  return page.evaluate(
+    async ([data, colours, region]) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${data}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      c.width = img.width;
+      c.height = img.height;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      const [fx0, fy0, fx1, fy1] = region;
+      const x0 = Math.floor(fx0 * c.width),
+        y0 = Math.floor(fy0 * c.height);
+      const d = ctx.getImageData(x0, y0, Math.ceil((fx1 - fx0) * c.width), Math.ceil((fy1 - fy0) * c.height)).data;
+      const seen = new Set();
+      for (let i = 0; i < d.length; i += 4)
+        seen.add(`#${[d[i], d[i + 1], d[i + 2]].map((v) => v.toString(16).padStart(2, '0')).join('')}`);
+      return Object.fromEntries(colours.map((col) => [col, seen.has(col.toLowerCase())]));
+    },
+    [b64, colours, region],
+  );
 }

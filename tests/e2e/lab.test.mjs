@@ -18,7 +18,9 @@ after(async () => {
 /** The lab page on its full-page screen (these tests drive panels of every screen), unless the query picks a screen. */
 async function lab(query = '', viewport) {
   const o = await openPage(env.browser, env.url, viewport);
-  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
+  await o.page.goto(
+    env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`),
+  );
   await waitRenders(o.page, 1);
   return o;
 }
@@ -28,13 +30,16 @@ const stateOf = (page, sel = 'wing-lab') => page.evaluate((s) => ({ ...document.
 
 /** Frequency of the largest non-DC bin of a spectrum of the selected mode. */
 const peakHz = (page, term, sel = 'wing-lab') =>
-  page.evaluate(([t, s]) => {
-    const lab = document.querySelector(s);
-    const sp = lab.analysis.spectra[lab.modeIndex()][t];
-    let best = 2;
-    for (let i = 2; i < sp.psd.length; i++) if (sp.psd[i] > sp.psd[best]) best = i;
-    return sp.freq_hz[best];
-  }, [term, sel]);
+  page.evaluate(
+    ([t, s]) => {
+      const lab = document.querySelector(s);
+      const sp = lab.analysis.spectra[lab.modeIndex()][t];
+      let best = 2;
+      for (let i = 2; i < sp.psd.length; i++) if (sp.psd[i] > sp.psd[best]) best = i;
+      return sp.freq_hz[best];
+    },
+    [term, sel],
+  );
 
 /** A cheap fingerprint of what the plots currently show. */
 const plotPrint = (page, sel = 'wing-lab') =>
@@ -79,7 +84,9 @@ test('loads the paper case: numbers, spectra, no console errors, no external req
 
 test('every slider moves by keyboard; number box, aria-valuetext, URL and plots follow', async () => {
   const { page, problems, context } = await lab();
-  const keys = await page.evaluate(() => [...__wl.qa('.wl-controls input[type=range][data-key]')].map((i) => i.dataset.key));
+  const keys = await page.evaluate(() =>
+    [...__wl.qa('.wl-controls input[type=range][data-key]')].map((i) => i.dataset.key),
+  );
   assert.equal(keys.length, 9);
   for (const key of keys) {
     const range = `wing-lab input[type=range][data-key="${key}"]`;
@@ -186,7 +193,10 @@ test('URL round trip restores the state and the numbers', async () => {
 test('CSV export of plotted series has units and full resolution', async () => {
   const { page, context } = await lab();
   const read = async (target) => {
-    const [dl] = await Promise.all([page.waitForEvent('download'), page.click(`wing-lab .wl-panel[data-panel="${target}"] .wl-head button[data-export="csv"]`)]);
+    const [dl] = await Promise.all([
+      page.waitForEvent('download'),
+      page.click(`wing-lab .wl-panel[data-panel="${target}"] .wl-head button[data-export="csv"]`),
+    ]);
     return fs.readFileSync(await dl.path(), 'utf8');
   };
   const spec = (await read('spectrum')).trim().split('\n');
@@ -201,7 +211,10 @@ test('CSV export of plotted series has units and full resolution', async () => {
   assert.equal(rows[0].split(',')[0], '0');
   const cor = rows.map((r) => Number(r.split(',')[3]));
   assert.ok(cor[0] > 0, 'DC of the Coriolis force');
-  const time = (await read('time')).trim().split('\n').filter((l) => !l.startsWith('#'));
+  const time = (await read('time'))
+    .trim()
+    .split('\n')
+    .filter((l) => !l.startsWith('#'));
   assert.match(time[0], /^t \(s\),euler_response \(kg\^½·m\)/);
   assert.equal(time.length - 1, 20001);
   // Linearity: total = euler + centrifugal + coriolis (zero initial conditions).
@@ -218,21 +231,35 @@ test('studies run in a worker with progress; sliders stay live meanwhile', async
   await page.click('wing-lab [data-run="sweep"]');
   // While the worker sweeps, the main thread still renders slider moves.
   await press(page, 'ArrowLeft', 'wing-lab input[type=range][data-key="beta0"]');
-  await page.waitForFunction(() => /points in/.test(__wl.q('[data-study="sweep"] .wl-status').textContent), null, { timeout: 60000 });
+  await page.waitForFunction(() => /points in/.test(__wl.q('[data-study="sweep"] .wl-status').textContent), null, {
+    timeout: 60000,
+  });
   const sw = await page.evaluate(() => {
     const d = document.querySelector('wing-lab').studies.sweep.data;
-    return { n: d.r.values.length, first: d.r.modes[0].coriolis[0], last: d.r.modes[0].coriolis[40], x: Array.from(d.r.values) };
+    return {
+      n: d.r.values.length,
+      first: d.r.modes[0].coriolis[0],
+      last: d.r.modes[0].coriolis[40],
+      x: Array.from(d.r.values),
+    };
   });
   assert.equal(sw.n, 41);
   assert.equal(sw.first, 0, 'γ0 = 0: no Coriolis share');
   assert.ok(sw.last > 50);
   await page.click('wing-lab [data-run="icmap"]');
-  await page.waitForFunction(() => / in [\d.]+ ms/.test(__wl.q('[data-study="icmap"] .wl-status').textContent), null, { timeout: 60000 });
+  await page.waitForFunction(() => / in [\d.]+ ms/.test(__wl.q('[data-study="icmap"] .wl-status').textContent), null, {
+    timeout: 60000,
+  });
   const ic = await page.evaluate(() => document.querySelector('wing-lab').studies.icmap.data.r.coriolis_percent.length);
   assert.equal(ic, 101 * 101);
   await page.click('wing-lab [data-run="damping"]');
-  await page.waitForFunction(() => /samples in/.test(__wl.q('[data-study="damping"] .wl-status').textContent), null, { timeout: 60000 });
-  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab [data-study="sweep"] button[data-export="csv"]')]);
+  await page.waitForFunction(() => /samples in/.test(__wl.q('[data-study="damping"] .wl-status').textContent), null, {
+    timeout: 60000,
+  });
+  const [dl] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab [data-study="sweep"] button[data-export="csv"]'),
+  ]);
   const csv = fs.readFileSync(await dl.path(), 'utf8');
   assert.match(csv, /gamma0 \(rad\),euler_share \(%\),centrifugal_share \(%\),coriolis_share \(%\)/);
   assert.deepEqual(problems, []);
@@ -241,20 +268,33 @@ test('studies run in a worker with progress; sliders stay live meanwhile', async
 
 test('screenshots: every panel has non-blank pixels; PNG export works', async () => {
   const { page, problems, context } = await lab();
-  for (const [run, done] of [['sweep', /points in/], ['icmap', / in [\d.]+ ms/], ['damping', /samples in/], ['report', /hold/]]) {
+  for (const [run, done] of [
+    ['sweep', /points in/],
+    ['icmap', / in [\d.]+ ms/],
+    ['damping', /samples in/],
+    ['report', /hold/],
+  ]) {
     await page.click(`wing-lab [data-run="${run}"]`);
     await page.waitForFunction(
-      ([r, re]) => new RegExp(re).test(__wl.q(r === 'report' ? '.wl-report .wl-status' : `[data-study="${r}"] .wl-status`).textContent),
+      ([r, re]) =>
+        new RegExp(re).test(
+          __wl.q(r === 'report' ? '.wl-report .wl-status' : `[data-study="${r}"] .wl-status`).textContent,
+        ),
       [run, done.source],
       { timeout: 60000 },
     );
   }
   await page.screenshot({ path: path.join(OUT, 'lab-1280x720.png') });
   await page.screenshot({ path: path.join(OUT, 'lab-full.png'), fullPage: true });
-  const panels = await page.$$eval('wing-lab .wl-panel', (ps) => ps.filter((p) => !p.hidden).map((p) => p.dataset.panel));
-  for (const p of ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report']) assert.ok(panels.includes(p), p);
+  const panels = await page.$$eval('wing-lab .wl-panel', (ps) =>
+    ps.filter((p) => !p.hidden).map((p) => p.dataset.panel),
+  );
+  for (const p of ['controls', 'numbers', 'time', 'spectrum', 'strain', 'studies', 'wing3d', 'report'])
+    assert.ok(panels.includes(p), p);
   for (const name of panels) {
-    const buf = await page.locator(`wing-lab .wl-panel[data-panel="${name}"]`).screenshot({ path: path.join(OUT, `panel-${name}.png`) });
+    const buf = await page
+      .locator(`wing-lab .wl-panel[data-panel="${name}"]`)
+      .screenshot({ path: path.join(OUT, `panel-${name}.png`) });
     const st = await pngStats(page, buf);
     assert.ok(st.fraction > 0.02 && st.colours > 8, `${name}: ${JSON.stringify(st)}`);
   }
@@ -266,18 +306,29 @@ test('screenshots: every panel has non-blank pixels; PNG export works', async ()
   }
   const heat = await pngStats(page, await page.locator('wing-lab canvas.wl-heatmap').screenshot());
   assert.ok(heat.colours > 50, `heat map: ${JSON.stringify(heat)}`);
-  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab .wl-panel[data-panel="spectrum"] .wl-head button[data-export="png"]')]);
+  const [dl] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab .wl-panel[data-panel="spectrum"] .wl-head button[data-export="png"]'),
+  ]);
   const png = fs.readFileSync(await dl.path());
   assert.equal(png.subarray(1, 4).toString(), 'PNG');
   assert.ok((await pngStats(page, png)).colours > 8);
-  const [dl2] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab .wl-panel[data-panel="numbers"] .wl-head button[data-export="png"]')]);
+  const [dl2] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab .wl-panel[data-panel="numbers"] .wl-head button[data-export="png"]'),
+  ]);
   assert.ok((await pngStats(page, fs.readFileSync(await dl2.path()))).fraction > 0.01);
   assert.deepEqual(problems, []);
   await context.close();
 });
 
 test('hostile URL: notice as text, defaults used, nothing injected', async () => {
-  const q = '?gamma0=' + encodeURIComponent('<img src=x onerror=alert(1)>') + '&' + encodeURIComponent('<b>x</b>') + '=1&flap_hz=1e999&modes=abaqus';
+  const q =
+    '?gamma0=' +
+    encodeURIComponent('<img src=x onerror=alert(1)>') +
+    '&' +
+    encodeURIComponent('<b>x</b>') +
+    '=1&flap_hz=1e999&modes=abaqus';
   const { page, problems, context } = await lab(q);
   assert.ok(await page.isVisible('wing-lab .wl-notice'));
   const notice = await page.textContent('wing-lab .wl-notice');
@@ -319,8 +370,14 @@ test('embed demo: two independent labs and a chrome-less iframe', async () => {
   assert.equal(await renders(page, '#lab-b'), rb, 'lab B did not re-render');
   assert.equal(new URL(page.url()).search, '', 'embedded labs leave the host URL alone');
   // Ids are unique in each tree: the page's document and each lab's own root.
-  const w3ids = await page.evaluate(() => [document.querySelectorAll('[id="wing3d"]').length, ...['#lab-a', '#lab-b'].map((h) => __wl.qa('[id="wing3d"]', h).length)]);
-  assert.ok(w3ids.every((n) => n <= 1), `id="wing3d" per tree: ${w3ids}`);
+  const w3ids = await page.evaluate(() => [
+    document.querySelectorAll('[id="wing3d"]').length,
+    ...['#lab-a', '#lab-b'].map((h) => __wl.qa('[id="wing3d"]', h).length),
+  ]);
+  assert.ok(
+    w3ids.every((n) => n <= 1),
+    `id="wing3d" per tree: ${w3ids}`,
+  );
   const frame = page.frameLocator('iframe');
   await frame.locator('wing-lab[data-renders]').waitFor({ timeout: 20000 });
   assert.equal(await frame.locator('header.site').isVisible(), false);
@@ -332,9 +389,14 @@ test('embed demo: two independent labs and a chrome-less iframe', async () => {
 
 test('phone viewport: one column, no horizontal overflow', async () => {
   const { page, problems, context } = await lab('', { width: 390, height: 844 });
-  const [sw, cw] = await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]);
+  const [sw, cw] = await page.evaluate(() => [
+    document.documentElement.scrollWidth,
+    document.documentElement.clientWidth,
+  ]);
   assert.ok(sw <= cw + 1, `scrollWidth ${sw} > ${cw}`);
-  const lefts = await page.$$eval('wing-lab .wl-panel', (ps) => ps.filter((p) => !p.hidden).map((p) => Math.round(p.getBoundingClientRect().left)));
+  const lefts = await page.$$eval('wing-lab .wl-panel', (ps) =>
+    ps.filter((p) => !p.hidden).map((p) => Math.round(p.getBoundingClientRect().left)),
+  );
   assert.equal(new Set(lefts).size, 1);
   await press(page, 'ArrowRight', 'wing-lab input[type=range][data-key="gamma0"]');
   await page.screenshot({ path: path.join(OUT, 'lab-phone.png'), fullPage: false });

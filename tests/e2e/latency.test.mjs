@@ -17,7 +17,9 @@ after(async () => {
 async function lab(query = '') {
   const o = await openPage(env.browser, env.url, { width: 1280, height: 800 });
   // The full-page screen: the tests read the Floquet table, which is not on the first screen.
-  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
+  await o.page.goto(
+    env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`),
+  );
   await waitRenders(o.page, 1);
   // The first result is computed on the main thread; the sliders' go to the live worker once
   // it has loaded its wasm.
@@ -28,7 +30,9 @@ async function lab(query = '') {
     w.__renderedFlap = null;
     lab.store.subscribe(['result'], (s) => w.__drawn.push(s.result.params.flap_hz));
     // `wl-rendered`: every panel shows the newest result (they redraw one task each).
-    lab.addEventListener('wl-rendered', () => { w.__renderedFlap = lab.analysis.sim.flap_freq_hz; });
+    lab.addEventListener('wl-rendered', () => {
+      w.__renderedFlap = lab.analysis.sim.flap_freq_hz;
+    });
   });
   return o;
 }
@@ -37,7 +41,9 @@ async function lab(query = '') {
 async function warm(page) {
   await page.evaluate(() => __wl.lab().engine.warmLive());
   await page.waitForFunction(() => __wl.lab().engine.liveInWorker, null, { timeout: 30000 });
-  await page.evaluate(() => { /** @type {any} */ (window).__drawn = []; });
+  await page.evaluate(() => {
+    /** @type {any} */ (window).__drawn = [];
+  });
 }
 
 /** Waits until every panel shows the result for f_d = f. */
@@ -57,7 +63,8 @@ const compare = (page) =>
     const shown = lab.analysis;
     let maxDiff = 0;
     for (let m = 0; m < direct.sim.modes.length; m++) {
-      const a = direct.sim.modes[m].q.total, b = shown.sim.modes[m].q.total;
+      const a = direct.sim.modes[m].q.total,
+        b = shown.sim.modes[m].q.total;
       if (a.length !== b.length) return { lengths: [a.length, b.length] };
       for (let i = 0; i < a.length; i++) maxDiff = Math.max(maxDiff, Math.abs(a[i] - b[i]));
     }
@@ -65,26 +72,38 @@ const compare = (page) =>
     const f = direct.sim.modes[k].floquet;
     let peak = 0;
     for (const v of direct.sim.modes[k].q.total) peak = Math.max(peak, Math.abs(v));
-    const sp = direct.spectra[k].total.psd, sq = shown.spectra[k].total.psd;
+    const sp = direct.spectra[k].total.psd,
+      sq = shown.spectra[k].total.psd;
     let psdDiff = 0;
     for (let i = 0; i < sp.length; i++) psdDiff = Math.max(psdDiff, Math.abs(sp[i] - sq[i]));
     // The core's run-wide peaks (Analysis.peaks, used by the numbers, responses and strain
     // panels) equal a scan of every sample; its extreme_samples give the 3-D view the same
     // modal states as the page's own hull of the whole run (scene3d.extremeStates).
-    const scan = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
+    const scan = (y) => {
+      let p = 0;
+      for (const v of y) p = Math.max(p, Math.abs(v));
+      return p;
+    };
     /** @type {string[]} */
     const peakMismatch = [];
     shown.sim.modes.forEach((m, j) => {
       for (const key of ['euler', 'centrifugal', 'coriolis', 'total']) {
-        if (shown.peaks.q[j][key] !== scan(m.q[key])) peakMismatch.push(`q ${j} ${key}: ${shown.peaks.q[j][key]} vs ${scan(m.q[key])}`);
+        if (shown.peaks.q[j][key] !== scan(m.q[key]))
+          peakMismatch.push(`q ${j} ${key}: ${shown.peaks.q[j][key]} vs ${scan(m.q[key])}`);
       }
     });
     const st = shown.sim.strain;
     if (!st || !shown.peaks.strain) peakMismatch.push('no strain peaks');
-    else for (const key of ['eps_x', 'eps_y', 'gamma_xy']) if (shown.peaks.strain[key] !== scan(st[key])) peakMismatch.push(`strain ${key}`);
+    else
+      for (const key of ['eps_x', 'eps_y', 'gamma_xy'])
+        if (shown.peaks.strain[key] !== scan(st[key])) peakMismatch.push(`strain ${key}`);
     const S = await import('./scene3d.js');
     const qs = shown.sim.modes.map((m) => m.q.total);
-    const key = (st) => st.map((x) => x.join()).sort().join(';');
+    const key = (st) =>
+      st
+        .map((x) => x.join())
+        .sort()
+        .join(';');
     const statesSame = key(S.statesAt(qs, shown.extreme_samples)) === key(S.extremeStates(qs, 1000));
     return {
       peakMismatch,
@@ -115,7 +134,8 @@ test('rapid key presses on f_d end in the result of the final value; superseded 
   await renderedAt(page, final);
   const drawn = await page.evaluate(() => /** @type {any} */ (window).__drawn);
   assert.equal(drawn[drawn.length - 1], final, `drawn in order: ${drawn.join(', ')}`);
-  for (let i = 1; i < drawn.length; i++) assert.ok(drawn[i] > drawn[i - 1], `results drawn out of order: ${drawn.join(', ')}`);
+  for (let i = 1; i < drawn.length; i++)
+    assert.ok(drawn[i] > drawn[i - 1], `results drawn out of order: ${drawn.join(', ')}`);
   const stats = await page.evaluate(() => __wl.lab().engine.liveStats);
   // Every request ended one way: drawn, superseded while waiting, or dropped as stale.
   assert.equal(drawn.length + stats.superseded + stats.stale, presses, JSON.stringify({ drawn, stats }));
@@ -142,7 +162,14 @@ test('a slider moved while a study runs still updates the panels (separate live 
     const lab = __wl.lab();
     const job = lab.engine.run('icmap', { cfg: { ...lab.config(), duration_s: 4 }, opts: { n_q: 101, n_qdot: 101 } });
     /** @type {any} */ (window).__study = 'running';
-    job.promise.then(() => { /** @type {any} */ (window).__study = 'done'; }, () => { /** @type {any} */ (window).__study = 'cancelled'; });
+    job.promise.then(
+      () => {
+        /** @type {any} */ (window).__study = 'done';
+      },
+      () => {
+        /** @type {any} */ (window).__study = 'cancelled';
+      },
+    );
     return job.id;
   });
   await page.focus('wing-lab input[type=range][data-key="flap_hz"]');

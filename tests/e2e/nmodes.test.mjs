@@ -30,21 +30,29 @@ after(async () => {
 async function openSix(viewport = { width: 1280, height: 800 }) {
   const o = await openPage(env.browser, env.url, viewport);
   await o.page.goto(`${env.url}${SIX}`);
-  await o.page.waitForFunction(() => {
-    const l = document.querySelector('wing-lab');
-    const s = l && l.store && l.store.get();
-    return s && s.fe && s.fe.n_modes === 6 && l.analysis && l.analysis.sim.modes.length === 6;
-  }, null, { timeout: 90000 });
+  await o.page.waitForFunction(
+    () => {
+      const l = document.querySelector('wing-lab');
+      const s = l && l.store && l.store.get();
+      return s && s.fe && s.fe.n_modes === 6 && l.analysis && l.analysis.sim.modes.length === 6;
+    },
+    null,
+    { timeout: 90000 },
+  );
   return o;
 }
 
 /** Starts the 3-D view and waits for frames of the 6-mode wing; pauses at a fixed instant. */
 async function ready3d(page) {
   await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
-  await page.waitForFunction(() => {
-    const b = __wl.q('[data-wing3d]');
-    return b && b.dataset.state === 'ready' && b.dataset.modes === '6' && Number(b.dataset.frames || 0) > 0;
-  }, null, { timeout: 90000 });
+  await page.waitForFunction(
+    () => {
+      const b = __wl.q('[data-wing3d]');
+      return b && b.dataset.state === 'ready' && b.dataset.modes === '6' && Number(b.dataset.frames || 0) > 0;
+    },
+    null,
+    { timeout: 90000 },
+  );
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.0123));
 }
 
@@ -66,10 +74,11 @@ async function warmth(page, buf) {
   }, buf.toString('base64'));
 }
 
-const strainSeries = (page) => page.evaluate(() => {
-  const st = document.querySelector('wing-lab').analysis.sim.strain;
-  return st ? { point: st.point, ex: Array.from(st.eps_x.slice(0, 400)) } : null;
-});
+const strainSeries = (page) =>
+  page.evaluate(() => {
+    const st = document.querySelector('wing-lab').analysis.sim.strain;
+    return st ? { point: st.point, ex: Array.from(st.eps_x.slice(0, 400)) } : null;
+  });
 
 test('6 modes: table, picker, spectra and 3-D view use every mode', async () => {
   const { page, problems, context } = await openSix();
@@ -81,13 +90,18 @@ test('6 modes: table, picker, spectra and 3-D view use every mode', async () => 
     assert.ok(Number.isFinite(Number(f)) && Number(f) > 0, `mode ${k + 1} frequency: ${f}`);
     freqs.push(Number(f));
   }
-  assert.ok(freqs.every((f, k) => k === 0 || f >= freqs[k - 1]), `ascending: ${freqs}`);
+  assert.ok(
+    freqs.every((f, k) => k === 0 || f >= freqs[k - 1]),
+    `ascending: ${freqs}`,
+  );
   // Mode picker: modes 1..6 choosable; choosing 6 drives the responses and spectra.
   const picker = 'wing-lab select[id$="-mode"]';
   const enabled = await page.$$eval(`${picker} option`, (os) => os.filter((o) => !o.disabled).map((o) => o.value));
   for (const v of ['1', '2', '3', '4', '5', '6']) assert.ok(enabled.includes(v), `picker offers mode ${v}: ${enabled}`);
   await page.selectOption(picker, '6');
-  await page.waitForFunction(() => document.querySelector('wing-lab').store.get().result.k === 5, null, { timeout: 20000 });
+  await page.waitForFunction(() => document.querySelector('wing-lab').store.get().result.k === 5, null, {
+    timeout: 20000,
+  });
   assert.match(await page.textContent('wing-lab section.wl-spectrum'), /Mode 6/);
   assert.equal(await page.getAttribute('wing-lab table.wl-numtable', 'data-selected'), '6');
   // 3-D view: the deflection uses all six q_k.
@@ -96,7 +110,14 @@ test('6 modes: table, picker, spectra and 3-D view use every mode', async () => 
   assert.match(await page.textContent('section.wl-wing3d .wl-note'), /all 6 of its modes/);
   // Another wing (3 modes): every view follows; the 3-D view is rebuilt on the new mesh.
   await page.evaluate(() => document.querySelector('wing-lab').store.set({ n_modes: 3 }));
-  await page.waitForFunction(() => { const l = document.querySelector('wing-lab'); return l.store.get().fe.n_modes === 3 && l.analysis.sim.modes.length === 3; }, null, { timeout: 90000 });
+  await page.waitForFunction(
+    () => {
+      const l = document.querySelector('wing-lab');
+      return l.store.get().fe.n_modes === 3 && l.analysis.sim.modes.length === 3;
+    },
+    null,
+    { timeout: 90000 },
+  );
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.03));
   await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.modes === '3', null, { timeout: 30000 });
   // Panels redraw a new result one task each (visible first), so the table may follow the 3-D view.
@@ -114,7 +135,10 @@ test('mode viewer: each mode alone with its frequency, kind and a_k; keyboard wo
   const sec = `wing-lab ${SEC_IN}`;
   await page.locator(sec).scrollIntoViewIfNeeded();
   await page.waitForFunction((s) => __wl.q(`${s} [data-modeshape]`).dataset.state === 'ready', SEC_IN);
-  const fe = await page.evaluate(() => { const f = document.querySelector('wing-lab').store.get().fe; return { freq: Array.from(f.freq_hz), kinds: f.kinds }; });
+  const fe = await page.evaluate(() => {
+    const f = document.querySelector('wing-lab').store.get().fe;
+    return { freq: Array.from(f.freq_hz), kinds: f.kinds };
+  });
   assert.equal(await page.locator(`${sec} select option`).count(), 6);
   const shots = [];
   for (let k = 0; k < 6; k++) {
@@ -166,10 +190,14 @@ test('strain where you point: 3-D click and planform map move the point; the ser
   const p = await page.evaluate(() => document.querySelector('wing-lab').store.get().strain_point);
   assert.ok(Math.hypot(p[0] - 25, p[1] + 15) < 1.5, `clicked near (25, −15) mm: ${p}`);
   // The engine recomputes the modal strains there: a different series.
-  await page.waitForFunction((ex0) => {
-    const st = document.querySelector('wing-lab').analysis.sim.strain;
-    return st && st.eps_x.slice(0, 400).some((v, i) => Math.abs(v - ex0[i]) > 1e-9);
-  }, before.ex, { timeout: 20000 });
+  await page.waitForFunction(
+    (ex0) => {
+      const st = document.querySelector('wing-lab').analysis.sim.strain;
+      return st && st.eps_x.slice(0, 400).some((v, i) => Math.abs(v - ex0[i]) > 1e-9);
+    },
+    before.ex,
+    { timeout: 20000 },
+  );
   // The ring on the 3-D wing sits where we clicked.
   const ring = await page.evaluate(() => document.querySelector('wing-lab').wing3d.pointOnScreen());
   assert.ok(ring && Math.hypot(ring[0] - at[0], ring[1] - at[1]) < 12, `ring at ${ring}, clicked ${at}`);
@@ -180,7 +208,10 @@ test('strain where you point: 3-D click and planform map move the point; the ser
   await page.locator(map).scrollIntoViewIfNeeded();
   const mb = await page.locator(map).boundingBox();
   await page.mouse.click(mb.x + mb.width * 0.45, mb.y + mb.height * 0.3);
-  await page.waitForFunction((p0) => { const q = document.querySelector('wing-lab').store.get().strain_point; return q && Math.hypot(q[0] - p0[0], q[1] - p0[1]) > 2; }, p);
+  await page.waitForFunction((p0) => {
+    const q = document.querySelector('wing-lab').store.get().strain_point;
+    return q && Math.hypot(q[0] - p0[0], q[1] - p0[1]) > 2;
+  }, p);
   const p2 = await page.evaluate(() => document.querySelector('wing-lab').store.get().strain_point);
   await page.focus(map);
   await page.keyboard.press('ArrowLeft');
@@ -205,22 +236,44 @@ test('whole-wing strain map colours the planform canvas and the 3-D wing', async
   // Another component and statistic: another picture, and the store knows the choice.
   await page.selectOption('wing-lab select[id$="-smap-comp"]', 'eps_x');
   await page.selectOption('wing-lab select[id$="-smap-stat"]', 'peak');
-  assert.deepEqual(await page.evaluate(() => document.querySelector('wing-lab').store.get().strain_map), { component: 'eps_x', stat: 'peak' });
+  assert.deepEqual(await page.evaluate(() => document.querySelector('wing-lab').store.get().strain_map), {
+    component: 'eps_x',
+    stat: 'peak',
+  });
   // a peak map is computed once the changes stop (PEAK_DELAY_MS)
   await page.waitForFunction(() => !('pending' in __wl.q('[data-smap]').dataset));
   const b = await page.locator(map).screenshot();
   assert.ok(!b.equals(a), 'the map follows the choice');
   assert.match(await page.textContent('wing-lab .wl-smap-legend-text'), /peak \|value\| over the run of ε_x/);
   // The map exports as CSV (one row per FE node, positions in mm) and PNG.
-  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab [data-smap] button[data-export="csv"]')]);
-  const csv = fs.readFileSync(await dl.path(), 'utf8').trim().split('\n');
+  const [dl] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab [data-smap] button[data-export="csv"]'),
+  ]);
+  const csv = fs
+    .readFileSync(await dl.path(), 'utf8')
+    .trim()
+    .split('\n');
   const nNodes = await page.evaluate(() => document.querySelector('wing-lab').store.get().fe.n_nodes);
   const head = csv.findIndex((l) => l.startsWith('x (mm)'));
   assert.equal(csv[head], 'x (mm),y (mm),peak_eps_x (strain (-))');
   assert.equal(csv.length - head - 1, nNodes);
-  assert.ok(csv.slice(head + 1).every((l) => l.split(',').length === 3 && l.split(',').every((v) => Number.isFinite(Number(v)))));
-  const [dl2] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab [data-smap] button[data-export="png"]')]);
-  assert.equal(fs.readFileSync(await dl2.path()).subarray(1, 4).toString(), 'PNG');
+  assert.ok(
+    csv
+      .slice(head + 1)
+      .every((l) => l.split(',').length === 3 && l.split(',').every((v) => Number.isFinite(Number(v)))),
+  );
+  const [dl2] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab [data-smap] button[data-export="png"]'),
+  ]);
+  assert.equal(
+    fs
+      .readFileSync(await dl2.path())
+      .subarray(1, 4)
+      .toString(),
+    'PNG',
+  );
   // The 3-D wing with colour 5 shows the same map.
   await ready3d(page);
   const canvas = 'wing-lab [data-wing3d] canvas.wl-w3-canvas';
@@ -229,20 +282,26 @@ test('whole-wing strain map colours the planform canvas and the 3-D wing', async
   await page.selectOption('section.wl-wing3d select[aria-label="Colour the wing by"]', '5');
   await page.waitForFunction(() => /peak/.test(__wl.q('.wl-w3-legend-text').textContent));
   const mapped = await page.locator(canvas).screenshot({ path: path.join(OUT, 'nmodes-wing3d-strainmap.png') });
-  const wp = await warmth(page, plain), wm = await warmth(page, mapped);
+  const wp = await warmth(page, plain),
+    wm = await warmth(page, mapped);
   assert.ok(wm.warm > wp.warm + 0.002, `3-D strain map adds warm pixels: ${wp.warm} → ${wm.warm}`);
   assert.deepEqual(problems, []);
   await context.close();
 });
 
-for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+for (const viewport of [
+  { width: 1280, height: 800 },
+  { width: 390, height: 844 },
+]) {
   test(`screenshots and axe (${viewport.width}×${viewport.height}, 6 modes, strain point moved)`, async () => {
     const { page, problems, context } = await openSix(viewport);
     await ready3d(page);
     await page.evaluate(() => document.querySelector('wing-lab').store.set({ strain_point: [20, -12] }));
     await page.waitForTimeout(500);
     for (const name of ['modeshape', 'strain', 'numbers', 'wing3d']) {
-      await page.locator(`wing-lab section.wl-${name}`).screenshot({ path: path.join(OUT, `nmodes-${name}-${viewport.width}.png`) });
+      await page
+        .locator(`wing-lab section.wl-${name}`)
+        .screenshot({ path: path.join(OUT, `nmodes-${name}-${viewport.width}.png`) });
     }
     await page.screenshot({ path: path.join(OUT, `nmodes-page-${viewport.width}.png`), fullPage: true });
     await page.evaluate(() => document.querySelector('wing-lab').views.modeshape.setPlaying(false));
@@ -250,7 +309,10 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     const vs = await page.evaluate(async () => {
       // This file's panels (the whole page is tests/e2e/a11y.test.mjs's job).
       const include = ['modeshape', 'strain', 'numbers', 'wing3d'].map((n) => __wl.axe(`section.wl-${n}`));
-      const r = await window.axe.run({ include }, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
+      const r = await window.axe.run(
+        { include },
+        { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } },
+      );
       return r.violations.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
     });
     fs.writeFileSync(path.join(OUT, `axe-nmodes-${viewport.width}.json`), JSON.stringify(vs, null, 2));

@@ -17,8 +17,12 @@ import { startServer } from '../../scripts/serve.mjs';
 
 /** @type {Awaited<ReturnType<typeof setup>>} */
 let env;
-before(async () => { env = await setup(); });
-after(async () => { await env.close(); });
+before(async () => {
+  env = await setup();
+});
+after(async () => {
+  await env.close();
+});
 
 /** Waits until a service worker controls the page; returns its cache names and cached URLs. */
 async function waitControlled(page) {
@@ -61,9 +65,27 @@ test('after one visit the lab and the FE wing work with the network blocked', as
     // The real page path: main.js imports offline.js, which registers sw.js.
     const { names, urls } = await waitControlled(page);
     assert.equal(names.length, 1, `one cache: ${names}`);
-    assert.match(names[0], new RegExp(`^wingbeat:${url.replace(/[.]/g, '\\.')}:`), 'cache name: prefix, scope, build stamp');
+    assert.match(
+      names[0],
+      new RegExp(`^wingbeat:${url.replace(/[.]/g, '\\.')}:`),
+      'cache name: prefix, scope, build stamp',
+    );
     const cached = new Set(urls);
-    for (const f of ['', 'index.html', 'main.js', 'offline.js', 'lab.js', 'worker.js', 'engine.js', 'style.css', 'pkg/wingbeat.js', 'pkg/wingbeat_bg.wasm', 'vendor/uPlot.esm.js', 'views/wing3d.js', 'views/strain.js']) {
+    for (const f of [
+      '',
+      'index.html',
+      'main.js',
+      'offline.js',
+      'lab.js',
+      'worker.js',
+      'engine.js',
+      'style.css',
+      'pkg/wingbeat.js',
+      'pkg/wingbeat_bg.wasm',
+      'vendor/uPlot.esm.js',
+      'views/wing3d.js',
+      'views/strain.js',
+    ]) {
       assert.ok(cached.has(url + f), `precached: ${f || './'}`);
     }
     for (const u of online) assert.ok(cached.has(u), `every file the first visit fetched is cached: ${u}`);
@@ -71,12 +93,20 @@ test('after one visit the lab and the FE wing work with the network blocked', as
 
     // Network gone: the browser context is offline and the server is stopped.
     await context.setOffline(true);
-    await new Promise((resolve) => { server.closeAllConnections(); server.close(resolve); });
+    await new Promise((resolve) => {
+      server.closeAllConnections();
+      server.close(resolve);
+    });
     await page.reload();
     await waitRenders(page, 1);
     const paper = await page.evaluate(() => {
       const l = /** @type {any} */ (document.querySelector('wing-lab'));
-      return { modes: l.analysis.sim.modes.length, f: l.analysis.sim.modes[0].floquet.effective_freq_hz, controlled: !!navigator.serviceWorker.controller, online: navigator.onLine };
+      return {
+        modes: l.analysis.sim.modes.length,
+        f: l.analysis.sim.modes[0].floquet.effective_freq_hz,
+        controlled: !!navigator.serviceWorker.controller,
+        online: navigator.onLine,
+      };
     });
     assert.equal(paper.controlled, true);
     assert.equal(paper.online, false);
@@ -85,15 +115,32 @@ test('after one visit the lab and the FE wing work with the network blocked', as
 
     // The FE wing: worker.js, its wasm and the FE views were never used online.
     await page.goto(url + 'index.html?modes=fe');
-    await page.waitForFunction(() => {
-      const l = /** @type {any} */ (document.querySelector('wing-lab'));
-      const s = l && l.store && l.store.get();
-      return s && s.fe && s.fe.n_modes === 2 && l.analysis && l.analysis.sim.modes.length === 2 && Number(l.dataset.renders) >= 1;
-    }, null, { timeout: 120000 });
-    const fe = await page.evaluate(() => Array.from(/** @type {any} */ (document.querySelector('wing-lab')).store.get().fe.freq_hz));
+    await page.waitForFunction(
+      () => {
+        const l = /** @type {any} */ (document.querySelector('wing-lab'));
+        const s = l && l.store && l.store.get();
+        return (
+          s &&
+          s.fe &&
+          s.fe.n_modes === 2 &&
+          l.analysis &&
+          l.analysis.sim.modes.length === 2 &&
+          Number(l.dataset.renders) >= 1
+        );
+      },
+      null,
+      { timeout: 120000 },
+    );
+    const fe = await page.evaluate(() =>
+      Array.from(/** @type {any} */ (document.querySelector('wing-lab')).store.get().fe.freq_hz),
+    );
     assert.ok(Math.abs(fe[0] - 62.49) < 0.5, `FE f1 offline ${fe[0]} Hz (62.49 Hz online)`);
     await page.screenshot({ path: path.join(OUT, 'offline-fe.png') });
-    const status = await page.locator('wing-lab [role="status"]').first().textContent().catch(() => '');
+    const status = await page
+      .locator('wing-lab [role="status"]')
+      .first()
+      .textContent()
+      .catch(() => '');
     assert.doesNotMatch(String(status), /failed|error/i);
   } finally {
     await context.close();
@@ -109,7 +156,10 @@ test('?offline=0 registers no service worker and removes an earlier one', async 
     // offline.js runs after lab.js; give it time to (not) register.
     await page.waitForFunction(() => localStorage.getItem('wingbeat-offline') === 'off', null, { timeout: 10000 });
     await page.waitForTimeout(1500);
-    const none = await page.evaluate(async () => ({ regs: (await navigator.serviceWorker.getRegistrations()).length, controlled: !!navigator.serviceWorker.controller }));
+    const none = await page.evaluate(async () => ({
+      regs: (await navigator.serviceWorker.getRegistrations()).length,
+      controlled: !!navigator.serviceWorker.controller,
+    }));
     assert.deepEqual(none, { regs: 0, controlled: false });
     // The choice is remembered (the lab rewrites its query, offline=0 leaves the address).
     await page.goto(env.url + 'index.html');
@@ -131,11 +181,14 @@ test('?offline=0 registers no service worker and removes an earlier one', async 
     await fresh.goto(env.url + 'index.html');
     await waitRenders(fresh, 1);
     await fresh.waitForTimeout(1500);
-    assert.deepEqual(await fresh.evaluate(async () => ({
-      caches: (await caches.keys()).filter((n) => n.startsWith('wingbeat:')),
-      regs: (await navigator.serviceWorker.getRegistrations()).length,
-      controlled: !!navigator.serviceWorker.controller,
-    })), { caches: [], regs: 0, controlled: false });
+    assert.deepEqual(
+      await fresh.evaluate(async () => ({
+        caches: (await caches.keys()).filter((n) => n.startsWith('wingbeat:')),
+        regs: (await navigator.serviceWorker.getRegistrations()).length,
+        controlled: !!navigator.serviceWorker.controller,
+      })),
+      { caches: [], regs: 0, controlled: false },
+    );
   } finally {
     await context.close();
   }
@@ -145,7 +198,9 @@ test('file:// in Chromium: the lab does not start (module import, fetch and work
   const { context, page } = await openPage(env.browser, env.url);
   /** @type {string[]} */
   const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
   page.on('pageerror', (e) => errors.push(e.message));
   try {
     await page.goto(pathToFileURL(path.join(ROOT, 'www', 'index.html')).href);
@@ -153,9 +208,23 @@ test('file:// in Chromium: the lab does not start (module import, fetch and work
     const r = await page.evaluate(async () => {
       /** @type {Record<string, string>} */
       const out = { defined: String(!!customElements.get('wing-lab')), origin: location.origin };
-      try { await fetch('pkg/wingbeat_bg.wasm'); out.fetch = 'ok'; } catch (e) { out.fetch = String(e); }
-      try { new Worker('worker.js', { type: 'module' }); out.worker = 'constructed'; } catch (e) { out.worker = String(e); }
-      try { out.regs = String((await navigator.serviceWorker.getRegistrations()).length); } catch (e) { out.regs = String(e); }
+      try {
+        await fetch('pkg/wingbeat_bg.wasm');
+        out.fetch = 'ok';
+      } catch (e) {
+        out.fetch = String(e);
+      }
+      try {
+        new Worker('worker.js', { type: 'module' });
+        out.worker = 'constructed';
+      } catch (e) {
+        out.worker = String(e);
+      }
+      try {
+        out.regs = String((await navigator.serviceWorker.getRegistrations()).length);
+      } catch (e) {
+        out.regs = String(e);
+      }
       return out;
     });
     assert.equal(r.defined, 'false', 'the element never defines');
@@ -173,7 +242,10 @@ function spawnServer(cmd, args, cwd, pattern) {
   return new Promise((resolve, reject) => {
     const child = spawn(cmd, args, { cwd, stdio: ['ignore', 'pipe', 'pipe'] });
     let out = '';
-    const timer = setTimeout(() => { child.kill(); reject(new Error(`${cmd}: no address in 10 s: ${out}`)); }, 10000);
+    const timer = setTimeout(() => {
+      child.kill();
+      reject(new Error(`${cmd}: no address in 10 s: ${out}`));
+    }, 10000);
     const read = (/** @type {Buffer} */ b) => {
       out += b.toString();
       const m = pattern.exec(out);
@@ -184,7 +256,10 @@ function spawnServer(cmd, args, cwd, pattern) {
     };
     child.stdout.on('data', read);
     child.stderr.on('data', read);
-    child.on('error', (e) => { clearTimeout(timer); reject(e); });
+    child.on('error', (e) => {
+      clearTimeout(timer);
+      reject(e);
+    });
   });
 }
 
@@ -192,15 +267,32 @@ test('the single-folder download (dist/) runs from node serve.mjs and from pytho
   // Never skipped: npm test builds dist/ first (scripts/test-all.sh e2e); a missing build fails here.
   const dist = path.join(ROOT, 'dist');
   assert.ok(fs.existsSync(path.join(dist, 'serve.mjs')), 'dist/ is not built: run `npm run build` (npm test does)');
-  for (const f of ['index.html', 'sw.js', 'offline.js', 'worker.js', 'README.txt', 'serve.mjs', 'serve-lib.mjs', 'pkg/wingbeat.js', 'pkg/wingbeat_bg.wasm', 'vendor/uPlot.esm.js']) {
+  for (const f of [
+    'index.html',
+    'sw.js',
+    'offline.js',
+    'worker.js',
+    'README.txt',
+    'serve.mjs',
+    'serve-lib.mjs',
+    'pkg/wingbeat.js',
+    'pkg/wingbeat_bg.wasm',
+    'vendor/uPlot.esm.js',
+  ]) {
     assert.ok(fs.existsSync(path.join(dist, f)), `dist/${f}`);
   }
   const stamp = /const BUILD = '([0-9a-f]{12})';/.exec(fs.readFileSync(path.join(dist, 'sw.js'), 'utf8'));
   assert.ok(stamp, 'dist/sw.js carries a build stamp');
   const servers = [['node', ['serve.mjs', '0'], /(http:\/\/127\.0\.0\.1:\d+\/)/]];
-  if (spawnSync('python3', ['--version']).status === 0) servers.push(['python3', ['-u', '-m', 'http.server', '0', '--bind', '127.0.0.1'], /port (\d+)/]);
+  if (spawnSync('python3', ['--version']).status === 0)
+    servers.push(['python3', ['-u', '-m', 'http.server', '0', '--bind', '127.0.0.1'], /port (\d+)/]);
   for (const [cmd, args, pattern] of servers) {
-    const srv = await spawnServer(/** @type {string} */ (cmd), /** @type {string[]} */ (args), dist, /** @type {RegExp} */ (pattern));
+    const srv = await spawnServer(
+      /** @type {string} */ (cmd),
+      /** @type {string[]} */ (args),
+      dist,
+      /** @type {RegExp} */ (pattern),
+    );
     const { context, page } = await openPage(env.browser, srv.url);
     try {
       await page.goto(srv.url);

@@ -37,14 +37,18 @@ after(async () => {
 
 /** Runs the CLI and parses its JSON stdout. */
 function cli(...args) {
-  return JSON.parse(execFileSync(BIN, args, { cwd: ROOT, maxBuffer: 1 << 30, stdio: ['ignore', 'pipe', 'ignore'] }).toString());
+  return JSON.parse(
+    execFileSync(BIN, args, { cwd: ROOT, maxBuffer: 1 << 30, stdio: ['ignore', 'pipe', 'ignore'] }).toString(),
+  );
 }
 const sig4 = (v) => String(Number(v.toPrecision(4)));
 
 async function lab(query = '', viewport = { width: 1280, height: 800 }) {
   const o = await openPage(env.browser, env.url, viewport);
   // The full-page screen: the wing, kinematics, numbers and 3-D panels are on different screens.
-  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
+  await o.page.goto(
+    env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`),
+  );
   await waitRenders(o.page, 1);
   return o;
 }
@@ -54,10 +58,18 @@ const W = (k) => `wing-lab ${W_IN(k)}`; // Playwright selectors (they pierce the
 
 /** Waits for the wing panel's computation to end; returns its status text. */
 async function computed(page, timeout = 120000) {
-  await page.waitForFunction((s) => {
-    const st = __wl.q(s);
-    return st && /Computed|could not|Cancelled|Imported/.test(st.textContent || '') && __wl.q('[data-wing="cancel"]').hidden;
-  }, W_IN('status'), { timeout });
+  await page.waitForFunction(
+    (s) => {
+      const st = __wl.q(s);
+      return (
+        st &&
+        /Computed|could not|Cancelled|Imported/.test(st.textContent || '') &&
+        __wl.q('[data-wing="cancel"]').hidden
+      );
+    },
+    W_IN('status'),
+    { timeout },
+  );
   return page.textContent(W('status'));
 }
 
@@ -73,23 +85,35 @@ async function setField(page, key, value) {
 async function labFreqs(page) {
   return page.evaluate(() => {
     const lab = document.querySelector('wing-lab');
-    const shown = __wl.qa('[data-wing="in-use"] [data-field^="wing-freq-"]').map((li) => (li.textContent || '').replace(/ Hz.*$/, ''));
+    const shown = __wl
+      .qa('[data-wing="in-use"] [data-field^="wing-freq-"]')
+      .map((li) => (li.textContent || '').replace(/ Hz.*$/, ''));
     return { shown, raw: lab.fe ? [...lab.fe.freq_hz] : [], n: lab.fe ? lab.fe.modes.length : 0 };
   });
 }
 
 /** After a new wing, the page re-renders with it (the analysis has all its modes). */
 async function waitModes(page, n) {
-  await page.waitForFunction((k) => {
-    const lab = document.querySelector('wing-lab');
-    return lab.analysis && lab.analysis.sim.modes.length === k && lab.fe && lab.fe.modes.length === k;
-  }, n, { timeout: 60000 });
+  await page.waitForFunction(
+    (k) => {
+      const lab = document.querySelector('wing-lab');
+      return lab.analysis && lab.analysis.sim.modes.length === k && lab.fe && lab.fe.modes.length === k;
+    },
+    n,
+    { timeout: 60000 },
+  );
 }
 
 function sameFreqs(lab, doc, what) {
   assert.equal(lab.n, doc.freq_hz.length, `${what}: number of modes`);
-  assert.deepEqual(lab.shown, doc.freq_hz.map(sig4), `${what}: shown frequencies = wingbeat modes to 4 significant digits`);
-  lab.raw.forEach((f, k) => assert.ok(Math.abs(f - doc.freq_hz[k]) <= 1e-6 * doc.freq_hz[k], `${what}: f${k + 1} ${f} vs ${doc.freq_hz[k]}`));
+  assert.deepEqual(
+    lab.shown,
+    doc.freq_hz.map(sig4),
+    `${what}: shown frequencies = wingbeat modes to 4 significant digits`,
+  );
+  lab.raw.forEach((f, k) => {
+    assert.ok(Math.abs(f - doc.freq_hz[k]) <= 1e-6 * doc.freq_hz[k], `${what}: f${k + 1} ${f} vs ${doc.freq_hz[k]}`);
+  });
 }
 
 test('an uploaded planform CSV gives the frequencies of `wingbeat modes --planform`; 6 modes reach the table and the picker', async () => {
@@ -110,11 +134,16 @@ test('an uploaded planform CSV gives the frequencies of `wingbeat modes --planfo
   sameFreqs(await labFreqs(page), doc, 'tapered outline');
   // The numbers table and the mode picker have six modes.
   assert.equal(await page.locator('wing-lab [data-field="freq-5"]').count(), 1, 'numbers table row for mode 6');
-  const picker = await page.evaluate(() => [...__wl.q('select[data-key="mode"]').options].filter((o) => !o.hidden).map((o) => o.textContent));
+  const picker = await page.evaluate(() =>
+    [...__wl.q('select[data-key="mode"]').options].filter((o) => !o.hidden).map((o) => o.textContent),
+  );
   assert.equal(picker.length, 6);
   assert.match(picker[5], /^Mode 6: .* \(FE, [\d.]+ Hz\)$/);
   await page.selectOption('wing-lab select[data-key="mode"]', '6');
-  await page.waitForFunction(() => document.querySelector('wing-lab').modeIndex() === 5 && document.querySelector('wing-lab').analysis.spectra[5]);
+  await page.waitForFunction(
+    () =>
+      document.querySelector('wing-lab').modeIndex() === 5 && document.querySelector('wing-lab').analysis.spectra[5],
+  );
   // The URL now names the wing (short query; the outline itself is in the #s= fragment).
   await page.waitForFunction(() => /#s=/.test(location.hash) && /n_modes=6/.test(location.search));
   assert.ok(page.url().length < 4000, `link length ${page.url().length}`);
@@ -162,7 +191,11 @@ test('an outline without the default strain point works; an edited outline survi
   await page.keyboard.press('Enter');
   assert.match(await computed(page), /^Computed/);
   // The URL is written off the key press's task, at most every 250 ms: wait for the edited outline.
-  await page.waitForFunction((h0) => document.querySelector('wing-lab').fe.freq_hz[0] && /#s=/.test(location.hash) && location.hash !== h0, hash0, { timeout: 30000 });
+  await page.waitForFunction(
+    (h0) => document.querySelector('wing-lab').fe.freq_hz[0] && /#s=/.test(location.hash) && location.hash !== h0,
+    hash0,
+    { timeout: 30000 },
+  );
   const before = await labFreqs(page);
   const url = page.url();
   await context.close();
@@ -227,15 +260,31 @@ test('a measured kinematics CSV gives the result of `wingbeat simulate --kinemat
   const n0 = await renders(page);
   await page.setInputFiles('wing-lab [data-kin="file"]', KIN);
   await waitRenders(page, n0 + 1);
-  assert.match(await page.textContent('wing-lab [data-kin="status"]'), /^Read kinematics-measured\.csv: 96 samples over 2 period\(s\) at 25 Hz, in degrees\./);
+  assert.match(
+    await page.textContent('wing-lab [data-kin="status"]'),
+    /^Read kinematics-measured\.csv: 96 samples over 2 period\(s\) at 25 Hz, in degrees\./,
+  );
   const labRes = await page.evaluate(() => {
     const a = document.querySelector('wing-lab').analysis.sim;
     return { n: a.t.length, modes: a.modes.map((m) => ({ q: [...m.q.total], feff: m.floquet.effective_freq_hz })) };
   });
-  const doc = cli('simulate', '--kinematics-csv', KIN, '--kinematics-units', 'deg', '--flap-hz', '25', '--duration', '1', '--sample-rate', '10000');
+  const doc = cli(
+    'simulate',
+    '--kinematics-csv',
+    KIN,
+    '--kinematics-units',
+    'deg',
+    '--flap-hz',
+    '25',
+    '--duration',
+    '1',
+    '--sample-rate',
+    '10000',
+  );
   assert.equal(labRes.n, doc.t.length);
   doc.modes.forEach((m, k) => {
-    const ql = labRes.modes[k].q, qc = m.q.total;
+    const ql = labRes.modes[k].q,
+      qc = m.q.total;
     const scale = Math.max(...qc.map(Math.abs));
     let worst = 0;
     for (let i = 0; i < qc.length; i++) worst = Math.max(worst, Math.abs(ql[i] - qc[i]));
@@ -243,7 +292,7 @@ test('a measured kinematics CSV gives the result of `wingbeat simulate --kinemat
     assert.ok(Math.abs(labRes.modes[k].feff - m.floquet.effective_freq_hz) <= 1e-9 * m.floquet.effective_freq_hz);
   });
   // The preview shows samples and the interpolant; the parameters panel says the sliders' stroke is off.
-  assert.ok(await page.locator('wing-lab .wl-kin-svg circle').count() >= 96);
+  assert.ok((await page.locator('wing-lab .wl-kin-svg circle').count()) >= 96);
   assert.equal(await page.isVisible('wing-lab [data-note="kin"]'), true);
   // The stroke travels in the link's #s= fragment and gives the same run elsewhere.
   await page.waitForFunction(() => /^#s=/.test(location.hash), null, { timeout: 10000 });
@@ -251,7 +300,9 @@ test('a measured kinematics CSV gives the result of `wingbeat simulate --kinemat
   const o = await lab(url.slice(env.url.length));
   await o.page.waitForFunction(() => document.querySelector('wing-lab').store.get().kin, null, { timeout: 10000 });
   await waitRenders(o.page, 1);
-  const again = await o.page.evaluate(() => document.querySelector('wing-lab').analysis.sim.modes.map((m) => [...m.q.total]));
+  const again = await o.page.evaluate(() =>
+    document.querySelector('wing-lab').analysis.sim.modes.map((m) => [...m.q.total]),
+  );
   // The link stores a sampled stroke as the core's Fourier series of it with coefficients
   // rounded to 1e-6 rad (www/share.js, v2): the same run to that rounding (measured 3e-5 of the
   // largest |q|), not bit for bit.
@@ -277,16 +328,23 @@ async function setKin(page, key, value) {
 }
 
 test('exported modes JSON reproduces the lab through `wingbeat simulate --modes` and imports back', async () => {
-  const { page, problems, context } = await lab('?planform=examples/planform-tapered.csv&n_modes=5&mesh_mm=0&duration=1');
+  const { page, problems, context } = await lab(
+    '?planform=examples/planform-tapered.csv&n_modes=5&mesh_mm=0&duration=1',
+  );
   await waitModes(page, 5);
   const [dl] = await Promise.all([page.waitForEvent('download'), page.click(W('export'))]);
   const file = path.join(OUT, 'ownwing-modes.json');
   await dl.saveAs(file);
-  const labRes = await page.evaluate(() => document.querySelector('wing-lab').analysis.sim.modes.map((m) => ({ q: [...m.q.total], feff: m.floquet.effective_freq_hz })));
+  const labRes = await page.evaluate(() =>
+    document
+      .querySelector('wing-lab')
+      .analysis.sim.modes.map((m) => ({ q: [...m.q.total], feff: m.floquet.effective_freq_hz })),
+  );
   const doc = cli('simulate', '--modes', file, '--duration', '1', '--sample-rate', '10000');
   assert.equal(doc.modes.length, 5);
   doc.modes.forEach((m, k) => {
-    const qc = m.q.total, ql = labRes[k].q;
+    const qc = m.q.total,
+      ql = labRes[k].q;
     const scale = Math.max(...qc.map(Math.abs));
     let worst = 0;
     for (let i = 0; i < qc.length; i++) worst = Math.max(worst, Math.abs(ql[i] - qc[i]));
@@ -306,16 +364,24 @@ test('exported modes JSON reproduces the lab through `wingbeat simulate --modes`
   await context.close();
 });
 
-for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+for (const viewport of [
+  { width: 1280, height: 800 },
+  { width: 390, height: 844 },
+]) {
   test(`screenshots and axe on the wing, kinematics and mode-shape panels (${viewport.width}×${viewport.height})`, async () => {
-    const { page, problems, context } = await lab('?planform=examples/planform-tapered.csv&n_modes=6&mesh_mm=0', viewport);
+    const { page, problems, context } = await lab(
+      '?planform=examples/planform-tapered.csv&n_modes=6&mesh_mm=0',
+      viewport,
+    );
     await waitModes(page, 6);
     await page.setInputFiles('wing-lab [data-kin="file"]', KIN);
     await page.waitForFunction(() => /Read/.test(__wl.q('[data-kin="status"]').textContent || ''));
     await page.click('wing-lab .wl-kin-edit summary');
     await page.click('wing-lab [data-kin="load-editor"]');
     // Hand editing: a second harmonic added to the measured yaw, by keyboard.
-    const before = await page.evaluate(() => document.querySelector('wing-lab').store.get().kin.kinematics.gamma.values.slice());
+    const before = await page.evaluate(() =>
+      document.querySelector('wing-lab').store.get().kin.kinematics.gamma.values.slice(),
+    );
     await page.focus('wing-lab button[aria-label="Add harmonic to γ (yaw)"]');
     await page.keyboard.press('Enter');
     await page.focus('wing-lab input[aria-label="γ (yaw) harmonic 1: amplitude, rad"]');
@@ -329,7 +395,9 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     const after = await page.evaluate(() => document.querySelector('wing-lab').store.get().kin);
     assert.equal(after.source, 'edited');
     const N = before.length;
-    after.kinematics.gamma.values.forEach((v, j) => assert.ok(Math.abs(v - before[j] - 0.05 * Math.sin((2 * Math.PI * 1 * j) / N)) < 1e-12));
+    after.kinematics.gamma.values.forEach((v, j) => {
+      assert.ok(Math.abs(v - before[j] - 0.05 * Math.sin((2 * Math.PI * 1 * j) / N)) < 1e-12);
+    });
     for (const name of ['wing', 'kinematics']) {
       const sec = page.locator(`wing-lab [data-panel="${name}"]`);
       await sec.scrollIntoViewIfNeeded();
@@ -339,7 +407,10 @@ for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 
     await page.addScriptTag({ path: AXE });
     const vs = await page.evaluate(async () => {
       const include = ['wing', 'kinematics', 'modeshape'].map((n) => __wl.axe(`[data-panel="${n}"]`));
-      const r = await window.axe.run({ include }, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
+      const r = await window.axe.run(
+        { include },
+        { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } },
+      );
       return r.violations.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
     });
     assert.deepEqual(vs, []);

@@ -22,16 +22,28 @@ const TGZ = path.join(ROOT, 'npm-package', `wingbeat-lab-${version}.tgz`);
 
 let dir, site, browser;
 before(async () => {
-  execFileSync('bash', [path.join(ROOT, 'scripts/build-package.sh')], { cwd: ROOT, stdio: ['ignore', 'inherit', 'inherit'] });
+  execFileSync('bash', [path.join(ROOT, 'scripts/build-package.sh')], {
+    cwd: ROOT,
+    stdio: ['ignore', 'inherit', 'inherit'],
+  });
   assert.ok(fs.existsSync(TGZ), `${TGZ} was not built`);
   dir = fs.mkdtempSync(path.join(os.tmpdir(), 'wl-pkg-'));
-  fs.writeFileSync(path.join(dir, 'package.json'), JSON.stringify({ name: 'course-site', private: true, type: 'module' }));
+  fs.writeFileSync(
+    path.join(dir, 'package.json'),
+    JSON.stringify({ name: 'course-site', private: true, type: 'module' }),
+  );
   // A local tarball with no dependencies: no registry access needed.
-  execFileSync('npm', ['install', '--offline', '--no-audit', '--no-fund', '--loglevel=error', TGZ], { cwd: dir, stdio: ['ignore', 'inherit', 'inherit'] });
+  execFileSync('npm', ['install', '--offline', '--no-audit', '--no-fund', '--loglevel=error', TGZ], {
+    cwd: dir,
+    stdio: ['ignore', 'inherit', 'inherit'],
+  });
   fs.copyFileSync(path.join(ROOT, 'examples/course-site/index.html'), path.join(dir, 'index.html'));
-  fs.writeFileSync(path.join(dir, 'direct.html'), `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,">
+  fs.writeFileSync(
+    path.join(dir, 'direct.html'),
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,">
 <title>Direct script tag</title><script type="module" src="/node_modules/wingbeat-lab/lab.js"></script></head>
-<body><main><h1>Direct</h1><wing-lab embed panels="controls,numbers"></wing-lab></main></body></html>`);
+<body><main><h1>Direct</h1><wing-lab embed panels="controls,numbers"></wing-lab></main></body></html>`,
+  );
   site = await startServer(dir, 0);
   fs.mkdirSync(OUT, { recursive: true });
   browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS, headless: true });
@@ -43,16 +55,37 @@ after(async () => {
 });
 
 test('the tarball holds the element, worker, styles, wasm, types, licences and nothing else', () => {
-  const files = execFileSync('tar', ['tzf', TGZ], { encoding: 'utf8' }).trim().split('\n').map((f) => f.replace(/^package\//, ''));
-  for (const f of ['package.json', 'README.md', 'LICENSE-MIT', 'LICENSE-APACHE', 'lab.js', 'lab.d.ts', 'worker.js', 'engine.js', 'style.css',
-    'pkg/wingbeat.js', 'pkg/wingbeat.d.ts', 'pkg/wingbeat_bg.wasm', 'vendor/uPlot.esm.js', 'vendor/uPlot.min.css', 'vendor/uPlot.LICENSE']) {
+  const files = execFileSync('tar', ['tzf', TGZ], { encoding: 'utf8' })
+    .trim()
+    .split('\n')
+    .map((f) => f.replace(/^package\//, ''));
+  for (const f of [
+    'package.json',
+    'README.md',
+    'LICENSE-MIT',
+    'LICENSE-APACHE',
+    'lab.js',
+    'lab.d.ts',
+    'worker.js',
+    'engine.js',
+    'style.css',
+    'pkg/wingbeat.js',
+    'pkg/wingbeat.d.ts',
+    'pkg/wingbeat_bg.wasm',
+    'vendor/uPlot.esm.js',
+    'vendor/uPlot.min.css',
+    'vendor/uPlot.LICENSE',
+  ]) {
     assert.ok(files.includes(f), `${f} missing from the tarball`);
   }
   // Page-only files (the site's bootstrap, service worker, iframe host script) and anything
   // that is not the built lab stay out.
   for (const f of files) {
     assert.ok(!/\.(map|rs|mjs|ts\.map|html)$/.test(f), `unexpected file ${f}`);
-    assert.ok(!['main.js', 'sw.js', 'offline.js', 'embed-host.js', 'page.css', 'index.html'].includes(f), `page-only file ${f} in the package`);
+    assert.ok(
+      !['main.js', 'sw.js', 'offline.js', 'embed-host.js', 'page.css', 'index.html'].includes(f),
+      `page-only file ${f} in the package`,
+    );
   }
   const size = fs.statSync(TGZ).size;
   assert.ok(size < 4e6, `tarball ${size} bytes`);
@@ -72,12 +105,15 @@ test('package.json: name, version, licence, exports that exist, no dependencies'
     else targets.push(...Object.values(v));
   }
   targets.push(pkg.types, pkg.main);
-  for (const t of targets) assert.ok(fs.existsSync(path.join(dir, 'node_modules/wingbeat-lab', t)), `export target ${t} missing`);
+  for (const t of targets)
+    assert.ok(fs.existsSync(path.join(dir, 'node_modules/wingbeat-lab', t)), `export target ${t} missing`);
   for (const k of ['.', './worker.js', './style.css', './wasm', './api']) assert.ok(k in pkg.exports, `export ${k}`);
 });
 
 test('its types check in a TypeScript project that imports the package', () => {
-  fs.writeFileSync(path.join(dir, 'use.ts'), `import { WingLab, loadWasm } from 'wingbeat-lab';
+  fs.writeFileSync(
+    path.join(dir, 'use.ts'),
+    `import { WingLab, loadWasm } from 'wingbeat-lab';
 import type { Analysis } from 'wingbeat-lab/api';
 const lab: WingLab | null = document.querySelector('wing-lab');
 if (lab) {
@@ -88,12 +124,27 @@ if (lab) {
   console.log(a, lab.config().duration_s);
 }
 loadWasm().then((api) => console.log(typeof api.parameters));
-`);
-  fs.writeFileSync(path.join(dir, 'tsconfig.json'), JSON.stringify({
-    compilerOptions: { target: 'es2022', module: 'esnext', moduleResolution: 'bundler', lib: ['esnext', 'dom'], strict: true, noEmit: true, types: [] },
-    files: ['use.ts'],
-  }));
-  execFileSync(path.join(ROOT, 'node_modules/.bin/tsc'), ['-p', dir], { cwd: dir, stdio: ['ignore', 'inherit', 'inherit'] });
+`,
+  );
+  fs.writeFileSync(
+    path.join(dir, 'tsconfig.json'),
+    JSON.stringify({
+      compilerOptions: {
+        target: 'es2022',
+        module: 'esnext',
+        moduleResolution: 'bundler',
+        lib: ['esnext', 'dom'],
+        strict: true,
+        noEmit: true,
+        types: [],
+      },
+      files: ['use.ts'],
+    }),
+  );
+  execFileSync(path.join(ROOT, 'node_modules/.bin/tsc'), ['-p', dir], {
+    cwd: dir,
+    stdio: ['ignore', 'inherit', 'inherit'],
+  });
 });
 
 /**
@@ -106,7 +157,9 @@ async function checkLab(url, sel, { gamma0, shot, allow = /^$/ } = {}) {
   const urls = [];
   p.on('request', (r) => urls.push(new URL(r.url())));
   await p.goto(url);
-  await p.waitForFunction((s) => Number(document.querySelector(s)?.getAttribute('data-renders') || 0) >= 1, sel, { timeout: 30000 });
+  await p.waitForFunction((s) => Number(document.querySelector(s)?.getAttribute('data-renders') || 0) >= 1, sel, {
+    timeout: 30000,
+  });
   const info = await p.evaluate((s) => {
     const lab = /** @type {any} */ (document.querySelector(s));
     const root = lab.shadowRoot || lab;
@@ -124,7 +177,8 @@ async function checkLab(url, sel, { gamma0, shot, allow = /^$/ } = {}) {
   const here = new URL(url);
   const lab = urls.filter((u) => u.origin === here.origin && u.pathname !== here.pathname && !allow.test(u.pathname));
   assert.ok(lab.length > 5);
-  for (const u of lab) assert.ok(u.pathname.startsWith('/node_modules/wingbeat-lab/'), `${u.pathname} loaded from outside the package`);
+  for (const u of lab)
+    assert.ok(u.pathname.startsWith('/node_modules/wingbeat-lab/'), `${u.pathname} loaded from outside the package`);
   assert.ok(lab.some((u) => u.pathname.endsWith('/pkg/wingbeat_bg.wasm')));
   assert.deepEqual(problems, []);
   if (shot) await p.screenshot({ path: path.join(OUT, shot), fullPage: true });
@@ -140,14 +194,30 @@ test('installed package: a plain <script type=module src=/node_modules/wingbeat-
 });
 
 // Needs vite from the npm registry (a devDependency of the example only), so it is opt-in.
-test('the course site built with Vite (examples/course-site/vite.config.js) works', { skip: !process.env.WINGBEAT_TEST_VITE && 'set WINGBEAT_TEST_VITE=1 to run (installs vite from npm)' }, async () => {
+test('the course site built with Vite (examples/course-site/vite.config.js) works', {
+  skip: !process.env.WINGBEAT_TEST_VITE && 'set WINGBEAT_TEST_VITE=1 to run (installs vite from npm)',
+}, async () => {
   const ex = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples/course-site/package.json'), 'utf8'));
   const vdir = fs.mkdtempSync(path.join(os.tmpdir(), 'wl-vite-'));
   try {
-    for (const f of ['index.html', 'vite.config.js']) fs.copyFileSync(path.join(ROOT, 'examples/course-site', f), path.join(vdir, f));
-    fs.writeFileSync(path.join(vdir, 'package.json'), JSON.stringify({ name: 'course-site-vite', private: true, type: 'module' }));
-    execFileSync('npm', ['install', '--no-audit', '--no-fund', '--loglevel=error', TGZ, `vite@${ex.devDependencies.vite}`], { cwd: vdir, stdio: ['ignore', 'inherit', 'inherit'] });
-    execFileSync(path.join(vdir, 'node_modules/.bin/vite'), ['build', '--logLevel', 'warn'], { cwd: vdir, stdio: ['ignore', 'inherit', 'inherit'] });
+    for (const f of ['index.html', 'vite.config.js'])
+      fs.copyFileSync(path.join(ROOT, 'examples/course-site', f), path.join(vdir, f));
+    fs.writeFileSync(
+      path.join(vdir, 'package.json'),
+      JSON.stringify({ name: 'course-site-vite', private: true, type: 'module' }),
+    );
+    execFileSync(
+      'npm',
+      ['install', '--no-audit', '--no-fund', '--loglevel=error', TGZ, `vite@${ex.devDependencies.vite}`],
+      {
+        cwd: vdir,
+        stdio: ['ignore', 'inherit', 'inherit'],
+      },
+    );
+    execFileSync(path.join(vdir, 'node_modules/.bin/vite'), ['build', '--logLevel', 'warn'], {
+      cwd: vdir,
+      stdio: ['ignore', 'inherit', 'inherit'],
+    });
     const dist = await startServer(path.join(vdir, 'dist'), 0);
     try {
       await checkLab(`${dist.url}index.html`, 'figure wing-lab', { gamma0: 0.1, allow: /^\/assets\// });

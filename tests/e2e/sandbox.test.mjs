@@ -36,7 +36,10 @@ after(async () => {
   if (dir) fs.rmSync(dir, { recursive: true, force: true });
 });
 
-const page = (src, sandbox) => `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title></head>
+const page = (
+  src,
+  sandbox,
+) => `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title></head>
 <body><iframe id="lab" data-wingbeat title="wingbeat lab" src="${src}" sandbox="${sandbox}" style="width:100%;height:600px;border:0"></iframe></body></html>`;
 
 /** What a script in the lab's frame can reach: the course page's document, storage, workers. */
@@ -69,33 +72,50 @@ test('allow-scripts allow-same-origin: Chromium warns, and the frame can reach t
   const lab = await startServer(WWW, 0);
   const course = await startServer(dir, 0);
   servers.push(lab, course);
-  fs.writeFileSync(path.join(dir, 'two-origins.html'), page(`${lab.url}index.html?embed=1&panels=controls,numbers`, 'allow-scripts allow-same-origin'));
+  fs.writeFileSync(
+    path.join(dir, 'two-origins.html'),
+    page(`${lab.url}index.html?embed=1&panels=controls,numbers`, 'allow-scripts allow-same-origin'),
+  );
   // The lab's own folder as the course page's host: one origin (a copy of the page inside www/
   // would be a file in the repository; a second server on the same folder is another origin).
   const one = `${lab.url}index.html?embed=1&panels=controls,numbers`;
-  for (const [name, url] of [['two origins', `${course.url}two-origins.html`], ['one origin', null]]) {
+  for (const [name, url] of [
+    ['two origins', `${course.url}two-origins.html`],
+    ['one origin', null],
+  ]) {
     const { context, page: p } = await openPage(env.browser, lab.url);
     const warnings = [];
-    p.on('console', (m) => { if (WARNING.test(m.text())) warnings.push(`${m.type()}: ${m.text()}`); });
+    p.on('console', (m) => {
+      if (WARNING.test(m.text())) warnings.push(`${m.type()}: ${m.text()}`);
+    });
     if (url) await p.goto(url);
     else {
       await p.goto(`${lab.url}embed-demo.html`);
-      await p.evaluate(([src]) => {
-        document.body.innerHTML = '';
-        const f = document.createElement('iframe');
-        f.id = 'lab';
-        f.title = 'wingbeat lab';
-        f.setAttribute('sandbox', 'allow-scripts allow-same-origin');
-        f.src = src;
-        document.body.append(f);
-      }, [one]);
+      await p.evaluate(
+        ([src]) => {
+          document.body.innerHTML = '';
+          const f = document.createElement('iframe');
+          f.id = 'lab';
+          f.title = 'wingbeat lab';
+          f.setAttribute('sandbox', 'allow-scripts allow-same-origin');
+          f.src = src;
+          document.body.append(f);
+        },
+        [one],
+      );
     }
     const frame = await (await p.waitForSelector('iframe#lab')).contentFrame();
-    await frame.waitForFunction(() => Number(document.querySelector('wing-lab')?.dataset.renders || 0) >= 1, null, { timeout: 30000 });
+    await frame.waitForFunction(() => Number(document.querySelector('wing-lab')?.dataset.renders || 0) >= 1, null, {
+      timeout: 30000,
+    });
     const r = await probe(frame);
     report[`allow-scripts allow-same-origin, ${name}`] = { warnings, ...r };
     if (name === 'one origin') {
-      assert.equal(r.parentDocument, true, 'same origin: the frame reaches the course page (it could remove its own sandbox)');
+      assert.equal(
+        r.parentDocument,
+        true,
+        'same origin: the frame reaches the course page (it could remove its own sandbox)',
+      );
       assert.equal(warnings.length, 1, 'same origin: Chromium warns that the frame can escape its sandbox');
     } else {
       assert.match(String(r.parentDocument), /^refused/, 'two origins: the course page is out of reach');
@@ -110,13 +130,20 @@ test('allow-scripts alone (lab host with CORS): the paper lab runs; storage, ser
   const lab = await startServer(WWW, 0, { cors: true });
   const course = await startServer(dir, 0);
   servers.push(lab, course);
-  fs.writeFileSync(path.join(dir, 'scripts-only.html'), page(`${lab.url}index.html?embed=1&panels=controls,numbers,time`, 'allow-scripts'));
+  fs.writeFileSync(
+    path.join(dir, 'scripts-only.html'),
+    page(`${lab.url}index.html?embed=1&panels=controls,numbers,time`, 'allow-scripts'),
+  );
   const { context, page: p } = await openPage(env.browser, course.url);
   const warnings = [];
-  p.on('console', (m) => { if (WARNING.test(m.text())) warnings.push(m.text()); });
+  p.on('console', (m) => {
+    if (WARNING.test(m.text())) warnings.push(m.text());
+  });
   await p.goto(`${course.url}scripts-only.html`);
   const frame = await (await p.waitForSelector('iframe#lab')).contentFrame();
-  await frame.waitForFunction(() => Number(document.querySelector('wing-lab')?.dataset.renders || 0) >= 1, null, { timeout: 30000 });
+  await frame.waitForFunction(() => Number(document.querySelector('wing-lab')?.dataset.renders || 0) >= 1, null, {
+    timeout: 30000,
+  });
   const r = await probe(frame);
   const lab2 = await frame.evaluate(() => {
     const l = document.querySelector('wing-lab');
@@ -124,8 +151,18 @@ test('allow-scripts alone (lab host with CORS): the paper lab runs; storage, ser
   });
   // The FE wing needs a worker: from an opaque origin the lab shows why and keeps the paper modes.
   await frame.evaluate(() => document.querySelector('wing-lab').store.set({ modes: 'fe' }));
-  await frame.waitForFunction(() => { const l = document.querySelector('wing-lab'); const e = l.shadowRoot.querySelector('.wl-error:not([hidden])'); return e && /FE wing could not be computed/.test(e.textContent); }, null, { timeout: 30000 });
-  const feError = await frame.evaluate(() => document.querySelector('wing-lab').shadowRoot.querySelector('.wl-error:not([hidden])').textContent);
+  await frame.waitForFunction(
+    () => {
+      const l = document.querySelector('wing-lab');
+      const e = l.shadowRoot.querySelector('.wl-error:not([hidden])');
+      return e && /FE wing could not be computed/.test(e.textContent);
+    },
+    null,
+    { timeout: 30000 },
+  );
+  const feError = await frame.evaluate(
+    () => document.querySelector('wing-lab').shadowRoot.querySelector('.wl-error:not([hidden])').textContent,
+  );
   report['allow-scripts only (CORS on the lab host)'] = { warnings, ...r, paper: lab2, feError };
   assert.equal(r.origin, 'null');
   assert.deepEqual(warnings, [], 'no escape warning without allow-same-origin');

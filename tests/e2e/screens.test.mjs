@@ -44,8 +44,11 @@ function measure(page, host = 'wing-lab') {
   return page.evaluate((h) => {
     const lab = document.querySelector(h);
     const sel = 'button, input:not([type=hidden]), select, textarea, a[href], [tabindex]:not([tabindex="-1"])';
-    const seen = (e) => e.checkVisibility({ visibilityProperty: true, opacityProperty: true }) && e.getBoundingClientRect().width > 0;
-    const controls = [...lab.shadowRoot.querySelectorAll(sel)].filter((e) => seen(e) && e.getAttribute('role') !== 'tab');
+    const seen = (e) =>
+      e.checkVisibility({ visibilityProperty: true, opacityProperty: true }) && e.getBoundingClientRect().width > 0;
+    const controls = [...lab.shadowRoot.querySelectorAll(sel)].filter(
+      (e) => seen(e) && e.getAttribute('role') !== 'tab',
+    );
     const kinds = {};
     for (const c of controls) {
       const k = c.tagName === 'INPUT' ? `input:${c.type}` : c.tagName.toLowerCase();
@@ -72,10 +75,14 @@ async function openScreen(query, viewport = { width: 1280, height: 800 }) {
 
 /** Waits until a shown 3-D view has its wing (its placeholder is taller than the view). */
 async function settled(page) {
-  await page.waitForFunction(() => {
-    const box = __wl.q('[data-wing3d]');
-    return !box || !box.checkVisibility() || box.dataset.state !== 'loading';
-  }, null, { timeout: 60000 });
+  await page.waitForFunction(
+    () => {
+      const box = __wl.q('[data-wing3d]');
+      return !box || !box.checkVisibility() || box.dataset.state !== 'loading';
+    },
+    null,
+    { timeout: 60000 },
+  );
   await page.waitForTimeout(300);
 }
 
@@ -83,7 +90,10 @@ async function settled(page) {
 async function axe(page) {
   await page.addScriptTag({ path: AXE });
   return page.evaluate(async () => {
-    const r = await window.axe.run(document, { resultTypes: ['violations'], rules: { 'target-size': { enabled: true } } });
+    const r = await window.axe.run(document, {
+      resultTypes: ['violations'],
+      rules: { 'target-size': { enabled: true } },
+    });
     return r.violations.map((v) => `${v.id}: ${v.help} — ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
   });
 }
@@ -103,7 +113,10 @@ for (const s of FOCUSED) {
     assert.deepEqual(m.selected, [s.id]);
     assert.deepEqual(m.panels.slice().sort(), screenPanels(s.id, PANELS).sort());
     assert.ok(m.height <= MAX_HEIGHT, `${s.id}: page height ${m.height} px > ${MAX_HEIGHT} px`);
-    assert.ok(m.controls <= MAX_CONTROLS, `${s.id}: ${m.controls} visible controls > ${MAX_CONTROLS}: ${JSON.stringify(m.kinds)}`);
+    assert.ok(
+      m.controls <= MAX_CONTROLS,
+      `${s.id}: ${m.controls} visible controls > ${MAX_CONTROLS}: ${JSON.stringify(m.kinds)}`,
+    );
     await page.screenshot({ path: path.join(SHOTS, `${s.id}-1280.png`), fullPage: true });
     assert.deepEqual(await axe(page), []);
     assert.deepEqual(problems, []);
@@ -128,7 +141,9 @@ test('the full page keeps every panel (and is the long page it was), with no axe
 test('phone 390×844: every screen shown, screenshots, no axe violations', async () => {
   const { page, problems, context } = await openScreen('', { width: 390, height: 844 });
   for (const id of SCREEN_IDS) {
-    await page.evaluate((s) => { document.querySelector('wing-lab').screen = s; }, id);
+    await page.evaluate((s) => {
+      document.querySelector('wing-lab').screen = s;
+    }, id);
     await page.waitForFunction((s) => document.querySelector('wing-lab').dataset.screen === s, id);
     await settled(page);
     const m = await measure(page);
@@ -148,7 +163,9 @@ test('no screen= opens The beat; screen= opens its screen and is kept in the URL
   assert.equal((await measure(b.page)).screen, 'wing');
   // A tab click is written back to the URL (shareable).
   await b.page.click('wing-lab [role=tab][data-screen="research"]');
-  await b.page.waitForFunction(() => new URLSearchParams(location.search).get('screen') === 'research', null, { timeout: 5000 });
+  await b.page.waitForFunction(() => new URLSearchParams(location.search).get('screen') === 'research', null, {
+    timeout: 5000,
+  });
   assert.deepEqual((await measure(b.page)).panels.sort(), screenPanels('research', PANELS).sort());
   await b.context.close();
   const c = await openScreen('?screen=everything');
@@ -160,7 +177,17 @@ test('no screen= opens The beat; screen= opens its screen and is kept in the URL
 
 test('keyboard: Tab reaches the selected tab, arrows move between tabs, Enter and Space open a screen, Tab enters it', async () => {
   const { page, context } = await openScreen('');
-  const active = () => page.evaluate(() => { const a = __wl.active(); return a ? { screen: a.dataset.screen || null, role: a.getAttribute('role'), panel: a.closest('.wl-panel')?.dataset.panel || null } : null; });
+  const active = () =>
+    page.evaluate(() => {
+      const a = __wl.active();
+      return a
+        ? {
+            screen: a.dataset.screen || null,
+            role: a.getAttribute('role'),
+            panel: a.closest('.wl-panel')?.dataset.panel || null,
+          }
+        : null;
+    });
   await page.focus('body');
   await page.keyboard.press('Tab');
   assert.deepEqual(await active(), { screen: 'beat', role: 'tab', panel: null });
@@ -188,7 +215,12 @@ test('keyboard: Tab reaches the selected tab, arrows move between tabs, Enter an
   const aria = await page.evaluate(() => {
     const tab = __wl.q('[role=tab][aria-selected=true]');
     const panel = __wl.byId(tab.getAttribute('aria-controls'));
-    return { role: panel.getAttribute('role'), labelledby: panel.getAttribute('aria-labelledby'), tab: tab.id, tabindexes: __wl.qa('[role=tab]').map((t) => t.tabIndex) };
+    return {
+      role: panel.getAttribute('role'),
+      labelledby: panel.getAttribute('aria-labelledby'),
+      tab: tab.id,
+      tabindexes: __wl.qa('[role=tab]').map((t) => t.tabIndex),
+    };
   });
   assert.equal(aria.role, 'tabpanel');
   assert.equal(aria.labelledby, aria.tab);
@@ -198,24 +230,29 @@ test('keyboard: Tab reaches the selected tab, arrows move between tabs, Enter an
 
 test('panels off screen do no redraw work until shown; then they show the newest result', async () => {
   const { page, context } = await openScreen('?screen=wing');
-  const timeSum = () => page.evaluate(() => {
-    const u = document.querySelector('wing-lab').plots.time;
-    let s = 0;
-    for (const series of u.data.slice(1)) for (const v of series) if (v != null) s += Math.abs(v);
-    return s;
-  });
+  const timeSum = () =>
+    page.evaluate(() => {
+      const u = document.querySelector('wing-lab').plots.time;
+      let s = 0;
+      for (const series of u.data.slice(1)) for (const v of series) if (v != null) s += Math.abs(v);
+      return s;
+    });
   const before = await timeSum();
   const n = await renders(page);
   await page.evaluate(() => document.querySelector('wing-lab').store.set({ gamma0: 0.1 }));
   await waitRenders(page, n + 1);
   assert.equal(await timeSum(), before, 'the hidden responses plot was not redrawn');
   await page.click('wing-lab [role=tab][data-screen="beat"]');
-  await page.waitForFunction((b) => {
-    const u = document.querySelector('wing-lab').plots.time;
-    let s = 0;
-    for (const series of u.data.slice(1)) for (const v of series) if (v != null) s += Math.abs(v);
-    return Math.abs(s - b) > 1e-9 * b;
-  }, before, { timeout: 10000 });
+  await page.waitForFunction(
+    (b) => {
+      const u = document.querySelector('wing-lab').plots.time;
+      let s = 0;
+      for (const series of u.data.slice(1)) for (const v of series) if (v != null) s += Math.abs(v);
+      return Math.abs(s - b) > 1e-9 * b;
+    },
+    before,
+    { timeout: 10000 },
+  );
   await context.close();
 });
 
@@ -223,7 +260,9 @@ test('a guided experiment opens the screen that shows it (chip, URL), and screen
   const { page, context } = await openScreen('?screen=full');
   await page.click('wing-lab [data-exp="resonance"]');
   await page.waitForFunction(() => document.querySelector('wing-lab').dataset.screen === 'beat');
-  await page.waitForFunction(() => new URLSearchParams(location.search).get('screen') === 'beat', null, { timeout: 5000 });
+  await page.waitForFunction(() => new URLSearchParams(location.search).get('screen') === 'beat', null, {
+    timeout: 5000,
+  });
   // Its study is on another screen: "Go to the resonance map" opens that screen, the
   // experiment's text still shown.
   await page.click('wing-lab .wl-exp-go');
@@ -237,9 +276,17 @@ test('a guided experiment opens the screen that shows it (chip, URL), and screen
   await waitRenders(page, 1);
   assert.equal((await measure(page)).screen, 'beat');
   // A focused screen lists its own experiments and says where the others are.
-  const chips = await page.evaluate(() => __wl.qa('a.wl-exp-link[data-exp]').filter((a) => a.checkVisibility()).map((a) => a.dataset.exp));
+  const chips = await page.evaluate(() =>
+    __wl
+      .qa('a.wl-exp-link[data-exp]')
+      .filter((a) => a.checkVisibility())
+      .map((a) => a.dataset.exp),
+  );
   assert.deepEqual(chips.sort(), ['beat', 'damping', 'instability', 'no-yaw', 'resonance']);
-  assert.match(await page.textContent('wing-lab .wl-exp-elsewhere'), /More experiments on the “Sensing” and “Research” screens/);
+  assert.match(
+    await page.textContent('wing-lab .wl-exp-elsewhere'),
+    /More experiments on the “Sensing” and “Research” screens/,
+  );
   await context.close();
 });
 
@@ -280,14 +327,26 @@ test('the screen attribute of <wing-lab> and the iframe API set({screen}) open a
     document.querySelector('main').append(f);
   }, env.url);
   const frame = await (await page.waitForSelector('#frame')).contentFrame();
-  await frame.waitForFunction(() => Number(document.getElementById('lab')?.dataset.renders || 0) >= 1, null, { timeout: 30000 });
-  const call = (msg) => page.evaluate((m) => new Promise((resolve) => {
-    const f = document.getElementById('frame');
-    const on = (e) => { if (e.source === f.contentWindow && e.data && e.data.id === m.id) { removeEventListener('message', on); resolve(e.data); } };
-    addEventListener('message', on);
-    f.contentWindow.postMessage(m, '*');
-    setTimeout(() => resolve(null), 10000);
-  }), msg);
+  await frame.waitForFunction(() => Number(document.getElementById('lab')?.dataset.renders || 0) >= 1, null, {
+    timeout: 30000,
+  });
+  const call = (msg) =>
+    page.evaluate(
+      (m) =>
+        new Promise((resolve) => {
+          const f = document.getElementById('frame');
+          const on = (e) => {
+            if (e.source === f.contentWindow && e.data && e.data.id === m.id) {
+              removeEventListener('message', on);
+              resolve(e.data);
+            }
+          };
+          addEventListener('message', on);
+          f.contentWindow.postMessage(m, '*');
+          setTimeout(() => resolve(null), 10000);
+        }),
+      msg,
+    );
   const ok = await call({ type: 'wingbeat:set', version: 1, id: 's1', params: { screen: 'sensing' } });
   assert.equal(ok.type, 'wingbeat:state', JSON.stringify(ok));
   assert.equal(ok.params.screen, 'sensing');

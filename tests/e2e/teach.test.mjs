@@ -24,21 +24,28 @@ after(async () => {
 /** The lab page on its full-page screen (every panel), unless the query picks a screen. */
 async function open(viewport, query = '') {
   const o = await openPage(env.browser, env.url, viewport);
-  await o.page.goto(env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`));
+  await o.page.goto(
+    env.url + (/(^|[?&])screen=/.test(query) ? query : `${query || '?'}${query ? '&' : ''}screen=full`),
+  );
   await waitRenders(o.page, 1);
   return o;
 }
 
 /** Waits for the 3-D view without scrolling (it must start by itself when on screen). */
 async function ready3d(page) {
-  await page.waitForFunction(() => {
-    const b = __wl.q('[data-wing3d]');
-    return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
-  }, null, { timeout: 90000 });
+  await page.waitForFunction(
+    () => {
+      const b = __wl.q('[data-wing3d]');
+      return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
+    },
+    null,
+    { timeout: 90000 },
+  );
   await page.waitForTimeout(150);
 }
 
-const within = (b, vp) => b && b.x >= 0 && b.y >= 0 && b.x + b.width <= vp.width + 0.5 && b.y + b.height <= vp.height + 0.5;
+const within = (b, vp) =>
+  b && b.x >= 0 && b.y >= 0 && b.x + b.width <= vp.width + 0.5 && b.y + b.height <= vp.height + 0.5;
 
 for (const vp of SIZES) {
   test(`${vp.name} ${vp.width}×${vp.height}: the wing is in the first screen, fills ≥ 10 % of its canvas, and every pose of a flap stays inside`, async () => {
@@ -57,34 +64,55 @@ for (const vp of SIZES) {
       const pb = await page.locator('wing-lab .wl-panel[data-panel="time"] canvas').first().boundingBox();
       assert.ok(within(pb, vp), `responses plot in the first viewport: ${JSON.stringify(pb)}`);
       assert.ok(await page.locator('wing-lab [data-beat]').isVisible());
-      const areas = await page.$$eval('wing-lab .wl-panel', (ps) => ps.map((p) => { const r = p.querySelector('canvas')?.getBoundingClientRect(); return [p.dataset.panel, r ? r.width * r.height : 0]; }));
+      const areas = await page.$$eval('wing-lab .wl-panel', (ps) =>
+        ps.map((p) => {
+          const r = p.querySelector('canvas')?.getBoundingClientRect();
+          return [p.dataset.panel, r ? r.width * r.height : 0];
+        }),
+      );
       const biggest = areas.sort((a, b) => b[1] - a[1])[0][0];
       assert.equal(biggest, 'wing3d', JSON.stringify(areas));
     }
     await page.screenshot({ path: path.join(OUT, `teach-${vp.name}.png`) });
     // Default view: the wing (and its frame) covers ≥ 10 % of the canvas pixels.
     const def = await pngStats(page, await canvas.screenshot({ path: path.join(OUT, `teach-${vp.name}-wing.png`) }));
-    assert.ok(def.foreground >= 0.10, `foreground share ${def.foreground}`);
+    assert.ok(def.foreground >= 0.1, `foreground share ${def.foreground}`);
     // Without the axes, the body axis and the stroke plane: the wing ALONE covers ≥ 10 % of the
     // canvas at the default view, and over one flap period it never touches the edges.
-    await page.evaluate(() => { __wl.q('section.wl-wing3d .wl-w3-options').open = true; });
+    await page.evaluate(() => {
+      __wl.q('section.wl-wing3d .wl-w3-options').open = true;
+    });
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-axes"]');
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-body"]');
     await page.uncheck('section.wl-wing3d input[type=checkbox][id$="-w3-plane"]');
     await page.waitForTimeout(100);
-    const alone = await pngForeground(page, await canvas.screenshot({ path: path.join(OUT, `teach-${vp.name}-wing-alone.png`) }), 30, 2);
-    assert.ok(alone.share >= 0.10, `the wing alone covers ${alone.share} of the canvas at the default view`);
+    const alone = await pngForeground(
+      page,
+      await canvas.screenshot({ path: path.join(OUT, `teach-${vp.name}-wing-alone.png`) }),
+      30,
+      2,
+    );
+    assert.ok(alone.share >= 0.1, `the wing alone covers ${alone.share} of the canvas at the default view`);
     const shares = [];
     for (let j = 0; j < 12; j++) {
       await page.evaluate((t) => document.querySelector('wing-lab').wing3d.setTime(t), 0.5 + (j * 0.04) / 12);
       const fg = await pngForeground(page, await canvas.screenshot(), 30, 2);
       shares.push(fg.share);
       assert.ok(fg.x1 >= 0, 'the wing is drawn');
-      assert.ok(fg.x0 > 3 && fg.y0 > 3 && fg.x1 < fg.width - 4 && fg.y1 < fg.height - 4, `pose ${j}: foreground box ${JSON.stringify(fg)} touches the edge`);
+      assert.ok(
+        fg.x0 > 3 && fg.y0 > 3 && fg.x1 < fg.width - 4 && fg.y1 < fg.height - 4,
+        `pose ${j}: foreground box ${JSON.stringify(fg)} touches the edge`,
+      );
     }
     const mean = shares.reduce((a, b) => a + b, 0) / shares.length;
-    assert.ok(mean > 0.06 && Math.min(...shares) > 0.03, `the wing alone is large on screen: ${shares.map((s) => s.toFixed(3))}`);
-    fs.writeFileSync(path.join(OUT, `teach-${vp.name}-shares.json`), JSON.stringify({ withFrame: def.foreground, wingAloneDefault: alone.share, wingOnly: shares, mean }));
+    assert.ok(
+      mean > 0.06 && Math.min(...shares) > 0.03,
+      `the wing alone is large on screen: ${shares.map((s) => s.toFixed(3))}`,
+    );
+    fs.writeFileSync(
+      path.join(OUT, `teach-${vp.name}-shares.json`),
+      JSON.stringify({ withFrame: def.foreground, wingAloneDefault: alone.share, wingOnly: shares, mean }),
+    );
     assert.deepEqual(problems, []);
     await context.close();
   });
@@ -95,7 +123,15 @@ for (const vp of SIZES) {
       const lab = document.querySelector('wing-lab');
       const f = lab.analysis.sim.modes[lab.modeIndex()].floquet;
       const box = __wl.q('.wl-beat');
-      return { floquet: f.beat_period_s, feff: f.effective_freq_hz, n: f.beat_harmonic, fd: lab.analysis.sim.flap_freq_hz, shown: Number(box.querySelector('[data-beat]').dataset.beat), text: box.textContent, win: lab.plots.time.scales.x };
+      return {
+        floquet: f.beat_period_s,
+        feff: f.effective_freq_hz,
+        n: f.beat_harmonic,
+        fd: lab.analysis.sim.flap_freq_hz,
+        shown: Number(box.querySelector('[data-beat]').dataset.beat),
+        text: box.textContent,
+        win: lab.plots.time.scales.x,
+      };
     });
     assert.equal(r.shown, r.floquet);
     assert.ok(Math.abs(1 / Math.abs(r.feff - r.n * r.fd) - r.floquet) <= 1e-12 * r.floquet);
@@ -112,7 +148,10 @@ for (const vp of SIZES) {
       const s = await page.locator('wing-lab input[type=range][data-key="gamma0"]').boundingBox();
       const p = await page.locator('wing-lab .wl-panel[data-panel="time"] canvas').first().boundingBox();
       assert.ok(within(s, vp) && s.y >= 0, `slider visible: ${JSON.stringify(s)}`);
-      assert.ok(p.y >= s.y + s.height && p.y + p.height / 2 <= vp.height, `plot visible under the strip: ${JSON.stringify(p)} vs ${JSON.stringify(s)}`);
+      assert.ok(
+        p.y >= s.y + s.height && p.y + p.height / 2 <= vp.height,
+        `plot visible under the strip: ${JSON.stringify(p)} vs ${JSON.stringify(s)}`,
+      );
       const before = Number(await page.evaluate(() => document.querySelector('wing-lab').dataset.renders));
       await page.focus('wing-lab input[type=range][data-key="gamma0"]');
       await page.keyboard.press('ArrowLeft');
@@ -144,58 +183,122 @@ for (const vp of SIZES) {
         e.dataset.tabProbe = String(out.length);
         const panel = e.closest('.wl-panel');
         // The screen tabs (one tab stop) come before the panels.
-        out.push({ i: out.length, panel: panel ? panel.dataset.panel : e.closest('[role=tablist]') ? 'screens' : '', top: r.top + scrollY, left: r.left + scrollX, bottom: r.bottom + scrollY, tag: e.tagName, text: (e.getAttribute('aria-label') || e.textContent || '').slice(0, 30) });
+        out.push({
+          i: out.length,
+          panel: panel ? panel.dataset.panel : e.closest('[role=tablist]') ? 'screens' : '',
+          top: r.top + scrollY,
+          left: r.left + scrollX,
+          bottom: r.bottom + scrollY,
+          tag: e.tagName,
+          text: (e.getAttribute('aria-label') || e.textContent || '').slice(0, 30),
+        });
       }
       return out;
     });
     assert.ok(items.length > 30);
     // Panel boxes at scroll 0 (the phone's slider strip is sticky: it moves once the page scrolls).
-    const boxes = await page.$$eval('wing-lab .wl-panel, wing-lab [role=tablist]', (ps) => Object.fromEntries(ps.filter((p) => !p.hidden).map((p) => { const r = p.getBoundingClientRect(); return [p.dataset.panel || 'screens', [r.top + scrollY, r.left]]; })));
+    const boxes = await page.$$eval('wing-lab .wl-panel, wing-lab [role=tablist]', (ps) =>
+      Object.fromEntries(
+        ps
+          .filter((p) => !p.hidden)
+          .map((p) => {
+            const r = p.getBoundingClientRect();
+            return [p.dataset.panel || 'screens', [r.top + scrollY, r.left]];
+          }),
+      ),
+    );
 
     // Focus order, by pressing Tab from the page start (focus inside the lab's shadow root shows
     // on the page as the lab itself: __wl.active() follows it down).
-    await page.evaluate(() => { const a = __wl.active(); if (a && a.blur) a.blur(); if (document.activeElement && document.activeElement !== document.body) document.activeElement.blur(); });
+    await page.evaluate(() => {
+      const a = __wl.active();
+      if (a && a.blur) a.blur();
+      if (document.activeElement && document.activeElement !== document.body) document.activeElement.blur();
+    });
     const order = [];
     for (let k = 0; k < items.length + 20 && order.length < items.length; k++) {
       await page.keyboard.press('Tab');
-      const idx = await page.evaluate(() => { const a = __wl.active(); return a && a.dataset ? a.dataset.tabProbe : undefined; });
+      const idx = await page.evaluate(() => {
+        const a = __wl.active();
+        return a && a.dataset ? a.dataset.tabProbe : undefined;
+      });
       if (idx !== undefined && !order.includes(Number(idx))) order.push(Number(idx));
     }
-    assert.equal(order.length, items.length, `every control is reachable by Tab; missing: ${JSON.stringify(items.filter((it) => !order.includes(it.i)).map((it) => [it.panel, it.tag, it.text]))}`);
+    assert.equal(
+      order.length,
+      items.length,
+      `every control is reachable by Tab; missing: ${JSON.stringify(items.filter((it) => !order.includes(it.i)).map((it) => [it.panel, it.tag, it.text]))}`,
+    );
     const seq = order.map((i) => items[i]);
     // Panels are visited in reading order (top first, then left), each panel once.
     const panelsSeen = [];
     for (const it of seq) if (panelsSeen[panelsSeen.length - 1] !== it.panel) panelsSeen.push(it.panel);
     assert.equal(new Set(panelsSeen).size, panelsSeen.length, `each panel once: ${panelsSeen}`);
-    const visual = [...panelsSeen].sort((a, b) => (Math.abs(boxes[a][0] - boxes[b][0]) < 8 ? boxes[a][1] - boxes[b][1] : boxes[a][0] - boxes[b][0]));
+    const visual = [...panelsSeen].sort((a, b) =>
+      Math.abs(boxes[a][0] - boxes[b][0]) < 8 ? boxes[a][1] - boxes[b][1] : boxes[a][0] - boxes[b][0],
+    );
     assert.deepEqual(panelsSeen, visual, 'panel focus order = visual order');
     // Within a panel, focus never jumps back up to an earlier row.
     for (let j = 1; j < seq.length; j++) {
-      const a = seq[j - 1], b = seq[j];
+      const a = seq[j - 1],
+        b = seq[j];
       if (a.panel !== b.panel) continue;
       const sameRow = b.top < a.bottom && a.top < b.bottom;
-      assert.ok(sameRow ? b.left >= a.left - 1 : b.top >= a.top - 2, `${a.panel}: "${a.text}" (${a.top},${a.left}) → "${b.text}" (${b.top},${b.left})`);
+      assert.ok(
+        sameRow ? b.left >= a.left - 1 : b.top >= a.top - 2,
+        `${a.panel}: "${a.text}" (${a.top},${a.left}) → "${b.text}" (${b.top},${b.left})`,
+      );
     }
     // WCAG 2.2 target size: buttons and selects at least 24×24 CSS px.
-    const small = await page.$$eval('wing-lab button, wing-lab select', (es) => es.filter((e) => { const r = e.getBoundingClientRect(); return r.width > 0 && (r.width < 24 || r.height < 24); }).map((e) => `${e.tagName} ${e.textContent.slice(0, 20)} ${e.getBoundingClientRect().width}×${e.getBoundingClientRect().height}`));
+    const small = await page.$$eval('wing-lab button, wing-lab select', (es) =>
+      es
+        .filter((e) => {
+          const r = e.getBoundingClientRect();
+          return r.width > 0 && (r.width < 24 || r.height < 24);
+        })
+        .map(
+          (e) =>
+            `${e.tagName} ${e.textContent.slice(0, 20)} ${e.getBoundingClientRect().width}×${e.getBoundingClientRect().height}`,
+        ),
+    );
     assert.deepEqual(small, []);
     // Every visible canvas has an accessible name and a non-empty text alternative (or is
     // decorative): a short name plus a description (aria-describedby: the plots' data summaries),
     // or a name that is itself the whole text alternative — the mode-shape drawing's aria-label
     // says which mode, its kind, frequency, phase, exaggeration and colours, and it has no
     // aria-describedby (it is visible once the FE wing is in, waited for above).
-    const canvases = await page.$$eval('wing-lab canvas', (cs) => cs.filter((c) => c.getBoundingClientRect().width > 0).map((c) => {
-      if (c.getAttribute('aria-hidden') === 'true') return { ok: true };
-      const name = c.getAttribute('aria-label') || '';
-      const desc = (c.getAttribute('aria-describedby') || '').split(/\s+/).map((id) => c.getRootNode().getElementById(id)?.textContent || '').join(' ');
-      const described = name.length > 10 && desc.trim().length > 20;
-      const selfContained = c.classList.contains('wl-ms-canvas') && name.length > 80;
-      return { ok: c.getAttribute('role') === 'img' && (described || selfContained), name, desc: desc.slice(0, 60) };
-    }));
+    const canvases = await page.$$eval('wing-lab canvas', (cs) =>
+      cs
+        .filter((c) => c.getBoundingClientRect().width > 0)
+        .map((c) => {
+          if (c.getAttribute('aria-hidden') === 'true') return { ok: true };
+          const name = c.getAttribute('aria-label') || '';
+          const desc = (c.getAttribute('aria-describedby') || '')
+            .split(/\s+/)
+            .map((id) => c.getRootNode().getElementById(id)?.textContent || '')
+            .join(' ');
+          const described = name.length > 10 && desc.trim().length > 20;
+          const selfContained = c.classList.contains('wl-ms-canvas') && name.length > 80;
+          return {
+            ok: c.getAttribute('role') === 'img' && (described || selfContained),
+            name,
+            desc: desc.slice(0, 60),
+          };
+        }),
+    );
     assert.ok(canvases.length >= 4);
     for (const c of canvases) assert.ok(c.ok, JSON.stringify(c));
     // Axis titles are never clipped: each fits inside its plot.
-    const clipped = await page.$$eval('wing-lab .wl-axis-titles span, wing-lab .wl-xtitle', (es) => es.filter((e) => e.getBoundingClientRect().width > 0).filter((e) => { const r = e.getBoundingClientRect(), p = e.closest('.wl-panel').getBoundingClientRect(); return r.left < p.left - 0.5 || r.right > p.right + 0.5 || e.scrollWidth > e.clientWidth + 1; }).map((e) => e.textContent));
+    const clipped = await page.$$eval('wing-lab .wl-axis-titles span, wing-lab .wl-xtitle', (es) =>
+      es
+        .filter((e) => e.getBoundingClientRect().width > 0)
+        .filter((e) => {
+          const r = e.getBoundingClientRect(),
+            p = e.closest('.wl-panel').getBoundingClientRect();
+          return r.left < p.left - 0.5 || r.right > p.right + 0.5 || e.scrollWidth > e.clientWidth + 1;
+        })
+        .map((e) => e.textContent),
+    );
     assert.deepEqual(clipped, []);
     await context.close();
   });
@@ -204,7 +307,11 @@ for (const vp of SIZES) {
 test('the strain colour range is fixed for the run while playing', async () => {
   const { page, problems, context } = await open({ width: 1280, height: 800 });
   await ready3d(page);
-  const read = () => page.evaluate(() => { const d = __wl.q('.wl-w3-legend-text').dataset; return [Number(d.min), Number(d.max)]; });
+  const read = () =>
+    page.evaluate(() => {
+      const d = __wl.q('.wl-w3-legend-text').dataset;
+      return [Number(d.min), Number(d.max)];
+    });
   const r0 = await read();
   const ranges = await page.evaluate(() => document.querySelector('wing-lab').wing3d.ranges);
   assert.ok(Math.abs(r0[1] - ranges[3]) <= 1e-6 * ranges[3], `${r0} vs ${ranges[3]}`);
@@ -233,13 +340,22 @@ test('FE wing: the largest deflection of the run in mm; paper set says it is not
   await ready3d(page);
   assert.match(await page.textContent('.wl-w3-defl'), /not SI/);
   await page.selectOption('wing-lab select[data-key="modes"]', 'fe');
-  await page.waitForFunction(() => /Largest deflection over the whole run: [\d.]+ mm/.test(__wl.q('.wl-w3-defl').textContent), null, { timeout: 60000 });
+  await page.waitForFunction(
+    () => /Largest deflection over the whole run: [\d.]+ mm/.test(__wl.q('.wl-w3-defl').textContent),
+    null,
+    {
+      timeout: 60000,
+    },
+  );
   await context.close();
 });
 
 test('PNG export is 2× with the legend swatches and the parameter line; SVG export too', async () => {
   const { page, problems, context } = await open({ width: 1280, height: 800 });
-  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab .wl-panel[data-panel="time"] .wl-head button[data-export="png"]')]);
+  const [dl] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab .wl-panel[data-panel="time"] .wl-head button[data-export="png"]'),
+  ]);
   const png = fs.readFileSync(await dl.path());
   fs.writeFileSync(path.join(OUT, 'export-time.png'), png);
   const info = await page.evaluate(() => document.querySelector('wing-lab').lastExport);
@@ -252,7 +368,10 @@ test('PNG export is 2× with the legend swatches and the parameter line; SVG exp
   for (const [c, ok] of Object.entries(has)) assert.ok(ok, `legend swatch ${c} in the bottom of the PNG`);
   const fig = await page.evaluate(() => document.querySelector('wing-lab').exportsReg.time.figure().params);
   assert.match(fig, /α_0 = 0\.8 rad, β_0 = 0\.5 rad, γ_0 = 0\.2 rad, f_d = 25 Hz/);
-  const [dl2] = await Promise.all([page.waitForEvent('download'), page.click('wing-lab .wl-panel[data-panel="spectrum"] .wl-head button[data-export="svg"]')]);
+  const [dl2] = await Promise.all([
+    page.waitForEvent('download'),
+    page.click('wing-lab .wl-panel[data-panel="spectrum"] .wl-head button[data-export="svg"]'),
+  ]);
   const svg = fs.readFileSync(await dl2.path(), 'utf8');
   assert.match(svg, /<svg[^>]+width="900"/);
   assert.match(svg, /Spectra of the force terms/);
@@ -263,7 +382,11 @@ test('PNG export is 2× with the legend swatches and the parameter line; SVG exp
 });
 
 test('touch devices get touch wording', async () => {
-  const context = await env.browser.newContext({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
+  const context = await env.browser.newContext({
+    viewport: { width: 390, height: 844 },
+    hasTouch: true,
+    isMobile: true,
+  });
   const page = await context.newPage();
   await page.goto(env.url);
   await waitRenders(page, 1);

@@ -7,7 +7,12 @@ import path from 'node:path';
 import { chromium } from 'playwright-core';
 import { setup, openPage, waitRenders, pngStats, labHelpers, OUT, CHROMIUM, ARGS } from './helpers.mjs';
 
-const WEBGPU_FLAGS = ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-vulkan=swiftshader', '--use-angle=swiftshader'];
+const WEBGPU_FLAGS = [
+  '--enable-unsafe-webgpu',
+  '--enable-features=Vulkan',
+  '--use-vulkan=swiftshader',
+  '--use-angle=swiftshader',
+];
 
 let env;
 before(async () => {
@@ -20,10 +25,18 @@ after(async () => {
 async function ready3d(page, timeout = 90000) {
   // The panel starts when it scrolls into sight.
   await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
-  await page.waitForFunction(() => {
-    const b = __wl.q('[data-wing3d]');
-    return b && (b.dataset.state === 'ready' || b.dataset.state === 'unavailable') && (b.dataset.state !== 'ready' || Number(b.dataset.frames || 0) > 0);
-  }, null, { timeout });
+  await page.waitForFunction(
+    () => {
+      const b = __wl.q('[data-wing3d]');
+      return (
+        b &&
+        (b.dataset.state === 'ready' || b.dataset.state === 'unavailable') &&
+        (b.dataset.state !== 'ready' || Number(b.dataset.frames || 0) > 0)
+      );
+    },
+    null,
+    { timeout },
+  );
   return page.evaluate(() => ({ ...__wl.q('[data-wing3d]').dataset }));
 }
 
@@ -31,7 +44,9 @@ const frames = (page) => page.evaluate(() => Number(__wl.q('[data-wing3d]').data
 
 /** Screenshot of the 3-D canvas with its pixel statistics (pngStats) and the PNG bytes. */
 async function canvasStats(page, name) {
-  const buf = await page.locator('wing-lab [data-wing3d] canvas.wl-w3-canvas').screenshot({ path: path.join(OUT, name) });
+  const buf = await page
+    .locator('wing-lab [data-wing3d] canvas.wl-w3-canvas')
+    .screenshot({ path: path.join(OUT, name) });
   const st = await pngStats(page, buf);
   return { ...st, buf };
 }
@@ -48,7 +63,10 @@ async function readbacks(page) {
     const wrap = (proto, name) => {
       if (!proto || !proto[name]) return;
       const orig = proto[name];
-      proto[name] = function (...args) { w.__readbacks.push(name); return orig.apply(this, args); };
+      proto[name] = function (...args) {
+        w.__readbacks.push(name);
+        return orig.apply(this, args);
+      };
     };
     wrap(globalThis.WebGL2RenderingContext?.prototype, 'readPixels');
     wrap(globalThis.WebGLRenderingContext?.prototype, 'readPixels');
@@ -73,7 +91,10 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   // A pose mid-stroke, γ_xy colouring: a wing with many colours over a plain background.
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.01));
   const a = await canvasStats(page, 'wing3d-webgl2-gxy.png');
-  assert.ok(a.foreground > 0.03 && a.foreground < 0.9, `wing covers part of the view: ${JSON.stringify({ ...a, buf: undefined })}`);
+  assert.ok(
+    a.foreground > 0.03 && a.foreground < 0.9,
+    `wing covers part of the view: ${JSON.stringify({ ...a, buf: undefined })}`,
+  );
   assert.ok(a.colours > 40, `strain colours and shading: ${a.colours}`);
   // The legend says what the colours mean, with units.
   assert.match(await page.textContent('.wl-w3-legend-text'), /gamma_xy|γ_xy|gxy/i);
@@ -86,7 +107,10 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   // A quarter flap period later (25 Hz → 0.01 s) the wing has rolled: the picture moves.
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.02));
   const later = await canvasStats(page, 'wing3d-webgl2-later.png');
-  assert.equal(await page.getAttribute('section.wl-wing3d input[aria-label^="Simulated time"]', 'aria-valuetext'), '0.0200 s');
+  assert.equal(
+    await page.getAttribute('section.wl-wing3d input[aria-label^="Simulated time"]', 'aria-valuetext'),
+    '0.0200 s',
+  );
   assert.ok(!later.buf.equals(plain.buf), 'the pose follows time');
 
   // Play advances time and draws frames; the responses plot carries the 3-D cursor.
@@ -100,7 +124,16 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
 
   // The backing store is the canvas's CSS size × devicePixelRatio (1 here): nothing hidden
   // larger is drawn and scaled down.
-  const bs = await page.evaluate(() => { const c = __wl.q('canvas.wl-w3-canvas'); return { w: c.width, h: c.height, cw: c.clientWidth, ch: c.clientHeight, backing: __wl.q('[data-wing3d]').dataset.backing }; });
+  const bs = await page.evaluate(() => {
+    const c = __wl.q('canvas.wl-w3-canvas');
+    return {
+      w: c.width,
+      h: c.height,
+      cw: c.clientWidth,
+      ch: c.clientHeight,
+      backing: __wl.q('[data-wing3d]').dataset.backing,
+    };
+  });
   assert.ok(Math.abs(bs.w - bs.cw) <= 1 && Math.abs(bs.h - bs.ch) <= 1, JSON.stringify(bs));
   assert.equal(bs.backing, `${bs.w}x${bs.h}`);
 
@@ -132,7 +165,16 @@ test('play pauses off screen and in a hidden tab, resumes when seen; phone backi
   await waitRenders(page, 1);
   const ds = await ready3d(page);
   assert.equal(ds.state, 'ready');
-  const bs = await page.evaluate(() => { const c = __wl.q('canvas.wl-w3-canvas'); return { w: c.width, h: c.height, cw: c.getBoundingClientRect().width, ch: c.getBoundingClientRect().height, dpr: devicePixelRatio }; });
+  const bs = await page.evaluate(() => {
+    const c = __wl.q('canvas.wl-w3-canvas');
+    return {
+      w: c.width,
+      h: c.height,
+      cw: c.getBoundingClientRect().width,
+      ch: c.getBoundingClientRect().height,
+      dpr: devicePixelRatio,
+    };
+  });
   assert.equal(bs.dpr, 3);
   assert.ok(Math.abs(bs.w - 2 * bs.cw) <= 2 && Math.abs(bs.h - 2 * bs.ch) <= 2, JSON.stringify(bs));
 
@@ -145,7 +187,9 @@ test('play pauses off screen and in a hidden tab, resumes when seen; phone backi
 
   // Scrolled out of sight: the loop stops drawing (the lab stays "playing").
   await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
-  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'paused-offscreen', null, { timeout: 5000 });
+  await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'paused-offscreen', null, {
+    timeout: 5000,
+  });
   const f1 = await frames(page);
   await page.waitForTimeout(600);
   assert.equal(await frames(page), f1, 'no frames drawn off screen');
@@ -174,7 +218,10 @@ test('play pauses off screen and in a hidden tab, resumes when seen; phone backi
   // Pause: the loop stops and the store holds the instant shown (the responses plot's cursor).
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setPlaying(false));
   assert.equal(await loop(), 'stopped');
-  const t = await page.evaluate(() => [document.querySelector('wing-lab').wing3d.t, document.querySelector('wing-lab').timeCursor]);
+  const t = await page.evaluate(() => [
+    document.querySelector('wing-lab').wing3d.t,
+    document.querySelector('wing-lab').timeCursor,
+  ]);
   assert.equal(t[0], t[1]);
   await context.close();
 });
@@ -183,7 +230,11 @@ test('FE wing mode set: SI responses drive the 3-D wing; numbers come from the s
   const { page, problems, context } = await openPage(env.browser, env.url);
   await page.goto(env.url + '?modes=fe&gamma0=0.2&screen=full');
   await page.locator('section.wl-wing3d').scrollIntoViewIfNeeded();
-  await page.waitForFunction(() => document.querySelector('wing-lab').fe && Number(document.querySelector('wing-lab').dataset.renders || 0) > 0, null, { timeout: 90000 });
+  await page.waitForFunction(
+    () => document.querySelector('wing-lab').fe && Number(document.querySelector('wing-lab').dataset.renders || 0) > 0,
+    null,
+    { timeout: 90000 },
+  );
   const f1 = Number(await page.textContent('wing-lab [data-field="freq-0"]'));
   // The lab's FE wing is the CLI's default (1 mm elements), calibrated to the paper's 62.5 Hz.
   assert.ok(Math.abs(f1 - 62.49) < 0.02, `FE f1 = ${f1}`);
@@ -234,7 +285,10 @@ test('no WebGPU and no WebGL2: the panel says why and the rest of the lab works'
   await waitRenders(page, 1);
   const ds = await ready3d(page);
   assert.equal(ds.state, 'unavailable');
-  assert.match(await page.textContent('wing-lab [data-wing3d]'), /3-D view unavailable: .+\. Everything else in the lab works without it\./);
+  assert.match(
+    await page.textContent('wing-lab [data-wing3d]'),
+    /3-D view unavailable: .+\. Everything else in the lab works without it\./,
+  );
   // The live panels are unaffected: numbers, and a slider recomputes.
   assert.equal(await page.textContent('wing-lab [data-field="feff-0"]'), '60.3064');
   const before = Number(await page.evaluate(() => document.querySelector('wing-lab').dataset.renders));

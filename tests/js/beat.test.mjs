@@ -6,7 +6,20 @@ import { beatInfo, beatWindow, beatFate, modulation, shares } from '../../www/be
 const analysis = (over = {}) => ({
   sim: {
     flap_freq_hz: 25,
-    modes: [{ freq_hz: 62.5, contribution_percent: { euler: 17.8, centrifugal: 3.2, coriolis: 53.8 }, floquet: { effective_freq_hz: 60.30639396854428, beat_harmonic: 2, beat_period_s: 1 / (60.30639396854428 - 50), stable: true, max_modulus: 1, ...over } }],
+    modes: [
+      {
+        freq_hz: 62.5,
+        contribution_percent: { euler: 17.8, centrifugal: 3.2, coriolis: 53.8 },
+        floquet: {
+          effective_freq_hz: 60.30639396854428,
+          beat_harmonic: 2,
+          beat_period_s: 1 / (60.30639396854428 - 50),
+          stable: true,
+          max_modulus: 1,
+          ...over,
+        },
+      },
+    ],
   },
 });
 
@@ -20,7 +33,9 @@ test('beatInfo: T_beat is the Floquet value and equals 1/|f_eff − n·f_d|', ()
 });
 
 test('beatWindow: about three beats starting half a beat before an envelope maximum', () => {
-  const rate = 10000, T = 0.097, n = 20001;
+  const rate = 10000,
+    T = 0.097,
+    n = 20001;
   const t = Float64Array.from({ length: n }, (_, i) => i / rate);
   const env = Float64Array.from(t, (x) => 1 + Math.cos((2 * Math.PI * x) / T));
   const w = beatWindow(t, env, T);
@@ -40,13 +55,20 @@ test('beatWindow: no beat, or one too long for the run, shows the whole run', ()
 });
 
 test('shares lists the three force terms', () => {
-  assert.deepEqual(shares(analysis(), 0).map((s) => s.value), [17.8, 3.2, 53.8]);
+  assert.deepEqual(
+    shares(analysis(), 0).map((s) => s.value),
+    [17.8, 3.2, 53.8],
+  );
 });
 
 test('smooth: a one-period moving average removes the ripple and keeps the slow swell', async () => {
   const { smooth } = await import('../../www/beat.js');
-  const n = 4000, per = 400;
-  const env = Float64Array.from({ length: n }, (_, i) => 1 + 0.5 * Math.sin((2 * Math.PI * i) / 2000) + 0.2 * Math.sin((2 * Math.PI * i) / per));
+  const n = 4000,
+    per = 400;
+  const env = Float64Array.from(
+    { length: n },
+    (_, i) => 1 + 0.5 * Math.sin((2 * Math.PI * i) / 2000) + 0.2 * Math.sin((2 * Math.PI * i) / per),
+  );
   const s = smooth(env, per);
   for (let i = per; i < n - per; i += 37) {
     // the swell survives, attenuated only by the window's own sinc factor (0.935 here)

@@ -26,7 +26,12 @@ test('rust functions are measured from the fn line to the closing brace', () => 
   const fns = rustFunctions(src);
   assert.deepEqual(
     fns.map((f) => [f.name, f.line + 1, f.lines]),
-    [['a', 1, 8], ['b', 9, 3], ['with_body', 12, 1], ['lifetimes', 13, 3]],
+    [
+      ['a', 1, 8],
+      ['b', 9, 3],
+      ['with_body', 12, 1],
+      ['lifetimes', 13, 3],
+    ],
   );
 });
 

@@ -10,10 +10,19 @@ class FakeNode {
     this.children = [];
     this.textContent = '';
   }
-  setAttribute(k, v) { this.attrs[k] = String(v); }
-  getAttribute(k) { return this.attrs[k] ?? null; }
-  append(...cs) { for (const c of cs) this.children.push(...(c instanceof FakeFragment ? c.children : [c])); }
-  replaceChildren(...cs) { this.children = []; this.append(...cs); }
+  setAttribute(k, v) {
+    this.attrs[k] = String(v);
+  }
+  getAttribute(k) {
+    return this.attrs[k] ?? null;
+  }
+  append(...cs) {
+    for (const c of cs) this.children.push(...(c instanceof FakeFragment ? c.children : [c]));
+  }
+  replaceChildren(...cs) {
+    this.children = [];
+    this.append(...cs);
+  }
 }
 class FakeFragment extends FakeNode {}
 
@@ -33,7 +42,21 @@ const text = (n) => (typeof n === 'string' ? n : n.textContent + n.children.map(
 
 test('el: class, text, aria/data/role as attributes, false/null omitted, other keys as properties', () => {
   const click = () => {};
-  const b = dom.el('button', { class: 'x y', text: 'Run', 'aria-pressed': false, 'data-k': 3, role: 'img', hidden: true, onclick: click, type: 'button' }, 'tail', null);
+  const b = dom.el(
+    'button',
+    {
+      class: 'x y',
+      text: 'Run',
+      'aria-pressed': false,
+      'data-k': 3,
+      role: 'img',
+      hidden: true,
+      onclick: click,
+      type: 'button',
+    },
+    'tail',
+    null,
+  );
   assert.equal(b.className, 'x y');
   assert.equal(b.textContent, 'Run');
   assert.equal(b.getAttribute('aria-pressed'), null);
@@ -57,7 +80,14 @@ test('rich: markup becomes text and <sub>/<sup> elements, no caret left', () => 
 
 test('srOnly, select, isTouch', () => {
   assert.equal(dom.srOnly('p', { id: 'a' }).className, 'wl-sr');
-  const s = dom.select('id1', [['1', 'one'], ['2', 'two']], '2');
+  const s = dom.select(
+    'id1',
+    [
+      ['1', 'one'],
+      ['2', 'two'],
+    ],
+    '2',
+  );
   assert.equal(s.children.length, 2);
   assert.equal(s.value, '2');
   globalThis.__coarse = false;

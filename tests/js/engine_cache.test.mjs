@@ -11,7 +11,10 @@ function fakeSolver() {
   let id = 0;
   const solve = (input) => {
     let resolve, reject;
-    const promise = new Promise((res, rej) => { resolve = res; reject = rej; });
+    const promise = new Promise((res, rej) => {
+      resolve = res;
+      reject = rej;
+    });
     const job = { id: ++id, input, promise, finish: (r) => resolve({ result: r, ms: 1 }), fail: (e) => reject(e) };
     jobs.push(job);
     return job;
@@ -33,7 +36,8 @@ test('the LRU keeps the newest entries and refreshes an entry stored again', () 
 
 test('a wing being computed is one job; it is used when ready only if still wanted (or none is in use)', async () => {
   const { solve, jobs } = fakeSolver();
-  const A = { n_modes: 2 }, B = { n_modes: 3 };
+  const A = { n_modes: 2 },
+    B = { n_modes: 3 };
   const w = createWings({ initial: A, solve });
   const pa = w.ensure();
   assert.equal(w.ensure(), pa, 'the same promise while computing');
@@ -97,11 +101,22 @@ test('only the last FE_CACHE wings are kept; imported modes are used at once und
 
 test('modal strains at a point: the modes carry them as point S, computed once per wing and point', () => {
   const calls = [];
-  const modesAt = createPointStrains((fe, p) => { calls.push(p); return fe.modes.map((_, k) => ({ eps_x: k + p[0], eps_y: p[1], gamma_xy: 0 })); });
-  const fe = { modes: [{ name: 'a', strains: [{ point: 'P', eps_x: 9, eps_y: 9, gamma_xy: 9 }] }, { name: 'b', strains: [] }] };
+  const modesAt = createPointStrains((fe, p) => {
+    calls.push(p);
+    return fe.modes.map((_, k) => ({ eps_x: k + p[0], eps_y: p[1], gamma_xy: 0 }));
+  });
+  const fe = {
+    modes: [
+      { name: 'a', strains: [{ point: 'P', eps_x: 9, eps_y: 9, gamma_xy: 9 }] },
+      { name: 'b', strains: [] },
+    ],
+  };
   assert.equal(modesAt(fe, null), fe.modes, 'no point: the modes as they are');
   const m = modesAt(fe, [4, -2]);
-  assert.deepEqual(m.map((x) => x.strains), [[{ point: 'S', eps_x: 4, eps_y: -2, gamma_xy: 0 }], [{ point: 'S', eps_x: 5, eps_y: -2, gamma_xy: 0 }]]);
+  assert.deepEqual(
+    m.map((x) => x.strains),
+    [[{ point: 'S', eps_x: 4, eps_y: -2, gamma_xy: 0 }], [{ point: 'S', eps_x: 5, eps_y: -2, gamma_xy: 0 }]],
+  );
   assert.equal(m[0].name, 'a');
   assert.equal(fe.modes[0].strains[0].point, 'P', 'the FE result itself is not changed');
   modesAt(fe, [4, -2]);

@@ -6,7 +6,17 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import {
-  JOB, JOB_KINDS, jobMessage, readRequest, readReply, readyMessage, progressMessage, resultMessage, errorMessage, wasmModuleMessage, transferList,
+  JOB,
+  JOB_KINDS,
+  jobMessage,
+  readRequest,
+  readReply,
+  readyMessage,
+  progressMessage,
+  resultMessage,
+  errorMessage,
+  wasmModuleMessage,
+  transferList,
 } from '../../www/engine/protocol.js';
 
 test('what the worker writes is read back as what it says', () => {
@@ -14,7 +24,11 @@ test('what the worker writes is read back as what it says', () => {
   assert.deepEqual(readReply(progressMessage(3, 2, 7)), { type: 'progress', id: 3, done: 2, total: 7 });
   const r = { a: new Float64Array(2) };
   assert.deepEqual(readReply(resultMessage(4, r, 12.5)), { type: 'result', id: 4, result: r, ms: 12.5 });
-  assert.deepEqual(readReply(errorMessage(5, 'invalid value for `duration_s`')), { type: 'error', id: 5, error: 'invalid value for `duration_s`' });
+  assert.deepEqual(readReply(errorMessage(5, 'invalid value for `duration_s`')), {
+    type: 'error',
+    id: 5,
+    error: 'invalid value for `duration_s`',
+  });
   // An empty error message is still an error, not a result.
   assert.equal(readReply(errorMessage(6, '')).type, 'error');
   // A result that is null or 0 is a result.
@@ -37,16 +51,30 @@ test('what the engine writes is read by the worker as the job and its inputs', (
 });
 
 test('the job kinds are the jobs worker.js defines, each once', () => {
-  assert.deepEqual([...JOB_KINDS].sort(), ['analyze', 'damping', 'fe', 'icmap', 'reproduce', 'resonance', 'sense', 'sweep']);
+  assert.deepEqual([...JOB_KINDS].sort(), [
+    'analyze',
+    'damping',
+    'fe',
+    'icmap',
+    'reproduce',
+    'resonance',
+    'sense',
+    'sweep',
+  ]);
   const src = fs.readFileSync(new URL('../../www/worker.js', import.meta.url), 'utf8');
-  const defined = [...src.matchAll(/^  \[JOB\.(\w+)\]\(/gm)].map((m) => m[1]).sort();
+  const defined = [...src.matchAll(/^ {2}\[JOB\.(\w+)\]\(/gm)].map((m) => m[1]).sort();
   assert.deepEqual(defined, [...JOB_KINDS].sort(), 'worker.js has one job per kind, keyed by JOB');
 });
 
 test('transferList: every typed array’s buffer once, found at any depth', () => {
   const shared = new Float64Array(4);
   const u = new Uint32Array(3);
-  const res = { sim: { t: shared, q: [shared, new Float64Array(2)] }, fe: { triangles: u, n: 3 }, name: 'x', none: null };
+  const res = {
+    sim: { t: shared, q: [shared, new Float64Array(2)] },
+    fe: { triangles: u, n: 3 },
+    name: 'x',
+    none: null,
+  };
   const list = transferList(res);
   assert.equal(list.length, 3);
   assert.ok(list.includes(shared.buffer) && list.includes(u.buffer));

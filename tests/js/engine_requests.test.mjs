@@ -11,9 +11,15 @@ function fakeWorker() {
   const w = {
     posted: [],
     terminated: false,
-    postMessage(m) { w.posted.push(m); },
-    terminate() { w.terminated = true; },
-    reply(data) { w.onmessage({ data }); },
+    postMessage(m) {
+      w.posted.push(m);
+    },
+    terminate() {
+      w.terminated = true;
+    },
+    reply(data) {
+      w.onmessage({ data });
+    },
   };
   return w;
 }
@@ -23,8 +29,18 @@ function queue({ start } = {}) {
   const made = [];
   const hereCalls = [];
   const q = createLiveQueue({
-    start: start || (() => { const w = fakeWorker(); made.push(w); return w; }),
-    here: (ask) => { hereCalls.push(ask.cfg.tag); if (ask.cfg.tag === 'bad') throw new Error('rejected here'); return `here:${ask.cfg.tag}`; },
+    start:
+      start ||
+      (() => {
+        const w = fakeWorker();
+        made.push(w);
+        return w;
+      }),
+    here: (ask) => {
+      hereCalls.push(ask.cfg.tag);
+      if (ask.cfg.tag === 'bad') throw new Error('rejected here');
+      return `here:${ask.cfg.tag}`;
+    },
     fromWorker: (ask, result, ms) => `worker:${result}:${ms}:${ask.cfg.tag}`,
   });
   const ask = (tag) => q.request(liveAsk({ ...defaults(), mode: '2', detrend: 'mean' }, { tag }));
@@ -54,7 +70,13 @@ test('the first request is computed here without a worker; later ones wait for t
   assert.equal(q.inWorker, true);
   const c = ask('c');
   assert.equal(made[0].posted.length, 1);
-  assert.deepEqual(made[0].posted[0], { id: 3, kind: 'analyze', cfg: { tag: 'c' }, opts: { detrend: 'mean', segment_len: LIVE_SEGMENT_LEN }, k: 1 });
+  assert.deepEqual(made[0].posted[0], {
+    id: 3,
+    kind: 'analyze',
+    cfg: { tag: 'c' },
+    opts: { detrend: 'mean', segment_len: LIVE_SEGMENT_LEN },
+    k: 1,
+  });
   made[0].reply({ id: 3, progress: [1, 2] });
   made[0].reply({ id: 3, result: 'R', ms: 4 });
   assert.equal(await c, 'worker:R:4:c');
@@ -66,7 +88,9 @@ test('newest wins: the waiting request is superseded, the stale result dropped, 
   const { q, made, ask } = queue();
   q.warm();
   made[0].reply({ ready: true });
-  const a = ask('a'), b = ask('b'), c = ask('c');
+  const a = ask('a'),
+    b = ask('b'),
+    c = ask('c');
   assert.equal(made[0].posted.length, 1, 'one in flight');
   assert.equal(await b, null, 'superseded while waiting');
   made[0].reply({ id: 999, result: 'other', ms: 1 });
@@ -84,7 +108,8 @@ test('a failing worker: the newest request is computed here, the older one resol
   const { q, made, ask, hereCalls } = queue();
   q.warm();
   made[0].reply({ ready: true });
-  const a = ask('a'), b = ask('b');
+  const a = ask('a'),
+    b = ask('b');
   made[0].onerror({ message: 'boom' });
   assert.equal(await a, null);
   assert.equal(await b, 'here:b');
@@ -97,14 +122,19 @@ test('a failing worker: the newest request is computed here, the older one resol
 });
 
 test('without workers everything is computed here; dispose resolves what is pending to null', async () => {
-  const { q, ask } = queue({ start: () => { throw new Error('no Worker'); } });
+  const { q, ask } = queue({
+    start: () => {
+      throw new Error('no Worker');
+    },
+  });
   q.warm();
   assert.equal(await ask('a'), 'here:a');
   assert.equal(await ask('b'), 'here:b');
   const { q: q2, made, ask: ask2 } = queue();
   q2.warm();
   made[0].reply({ ready: true });
-  const x = ask2('x'), y = ask2('y');
+  const x = ask2('x'),
+    y = ask2('y');
   q2.dispose();
   assert.equal(await x, null);
   assert.equal(await y, null);

@@ -5,8 +5,19 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  EXPERIMENTS, experiment, experimentState, experimentQuery, predict, measureBeat, growthRate,
-  movingAverage, bands, resonanceCrossings, resonanceSummary, leastStableMode, fmt,
+  EXPERIMENTS,
+  experiment,
+  experimentState,
+  experimentQuery,
+  predict,
+  measureBeat,
+  growthRate,
+  movingAverage,
+  bands,
+  resonanceCrossings,
+  resonanceSummary,
+  leastStableMode,
+  fmt,
 } from '../../www/experiments.js';
 import { NUMERIC, ENUMS, EXPERIMENT_IDS, parsePairs, parseNumber } from '../../www/state.js';
 import { plain } from '../../www/format.js';
@@ -19,8 +30,18 @@ const TAU = 2 * Math.PI;
  * analytic envelope; `grow` makes mode `growMode`'s total response grow as e^{grow·t}.
  */
 function fixture({
-  fd = 25, feff = 60.30639, f1 = 62.5, fs = 4000, dur = 2, sigma = 0, zeta = 0, gamma0 = 0.2,
-  floquetFeff = feff, grow = 0, growMode = 1, coriolisZero = false,
+  fd = 25,
+  feff = 60.30639,
+  f1 = 62.5,
+  fs = 4000,
+  dur = 2,
+  sigma = 0,
+  zeta = 0,
+  gamma0 = 0.2,
+  floquetFeff = feff,
+  grow = 0,
+  growMode = 1,
+  coriolisZero = false,
 } = {}) {
   const n = Math.round(dur * fs) + 1;
   const t = new Float64Array(n);
@@ -39,10 +60,12 @@ function fixture({
     const total = new Float64Array(n);
     for (let i = 0; i < n; i++) {
       const ti = i / fs;
-      total[i] = (k === 0 ? qc[i] : 0) + 0.3e-6 * Math.sin(TAU * fd * ti) +
+      total[i] =
+        (k === 0 ? qc[i] : 0) +
+        0.3e-6 * Math.sin(TAU * fd * ti) +
         (grow && k === growMode ? 1e-9 * Math.exp(grow * ti) * Math.sin(TAU * 1.9 * fd * ti) : 0);
     }
-    const mm = grow && k === growMode ? Math.exp(grow / fd) : Math.exp(-zeta * TAU * f / fd);
+    const mm = grow && k === growMode ? Math.exp(grow / fd) : Math.exp((-zeta * TAU * f) / fd);
     return {
       name: `mode ${k + 1}`,
       freq_hz: f,
@@ -53,7 +76,10 @@ function fixture({
         max_modulus: mm,
         stable: mm <= 1,
         growth_rate_per_s: Math.log(mm) * fd,
-        multipliers: [[mm, 0], [1 / mm, 0]],
+        multipliers: [
+          [mm, 0],
+          [1 / mm, 0],
+        ],
       },
       q: { euler: total, centrifugal: total, coriolis: k === 0 ? qc : new Float64Array(n), free: total, total },
     };
@@ -83,7 +109,11 @@ test('every experiment has an id, title, look text and in-range URL parameters',
     }
   }
   assert.equal(EXPERIMENTS.length, 8);
-  assert.deepEqual(EXPERIMENTS.map((e) => e.id), EXPERIMENT_IDS, 'state.js validates exp= against the same ids');
+  assert.deepEqual(
+    EXPERIMENTS.map((e) => e.id),
+    EXPERIMENT_IDS,
+    'state.js validates exp= against the same ids',
+  );
 });
 
 test('experiment URLs round-trip through the lab state parser', () => {
@@ -150,7 +180,10 @@ test('yaw: uses the sweep result when it is there', () => {
   const pending = predict('yaw', a, { state: { gamma0: 0.1 } });
   assert.match(pending.lines.join(' '), /computing/);
   assert.equal(pending.checks.length, 0);
-  const sweep = { values: Float64Array.from([0, 0.05, 0.1, 0.15]), modes: [{ coriolis: Float64Array.from([0, 20, 53.8, 60]) }, { coriolis: Float64Array.from([0, 1, 2, 3]) }] };
+  const sweep = {
+    values: Float64Array.from([0, 0.05, 0.1, 0.15]),
+    modes: [{ coriolis: Float64Array.from([0, 20, 53.8, 60]) }, { coriolis: Float64Array.from([0, 1, 2, 3]) }],
+  };
   const r = predict('yaw', a, { state: { gamma0: 0.1 }, study: sweep });
   assert.deepEqual(checksOf(r), { 'share-rises': true, 'share-matches': true });
   sweep.modes[0].coriolis[3] = 10;
@@ -159,7 +192,17 @@ test('yaw: uses the sweep result when it is there', () => {
 
 test('initial conditions: the share from rest lies inside the map range', () => {
   const a = fixture();
-  const map = { n_q: 3, n_qdot: 3, q0: [-1, 0, 1], qdot0: [-1, 0, 1], coriolis_percent: new Float64Array(9), min_percent: 6.6, max_percent: 90, fraction_above_60: 0.119, attribution: 'forced' };
+  const map = {
+    n_q: 3,
+    n_qdot: 3,
+    q0: [-1, 0, 1],
+    qdot0: [-1, 0, 1],
+    coriolis_percent: new Float64Array(9),
+    min_percent: 6.6,
+    max_percent: 90,
+    fraction_above_60: 0.119,
+    attribution: 'forced',
+  };
   const r = predict('ic', a, { study: map });
   assert.equal(checksOf(r)['rest-inside'], true);
   assert.match(r.lines.join(' '), /6\.6 % to 90 %; 11\.9 % of the starts/);
@@ -192,17 +235,32 @@ test('predict never throws', () => {
 });
 
 test('resonance map summaries: bands, crossings and the text alternative', () => {
-  assert.deepEqual(bands([1, 2, 3, 4, 5], [false, true, true, false, true]), [[2, 3], [5, 5]]);
+  assert.deepEqual(bands([1, 2, 3, 4, 5], [false, true, true, false, true]), [
+    [2, 3],
+    [5, 5],
+  ]);
   assert.deepEqual(bands([1, 2], [false, false]), []);
   // f_eff = 60 Hz flat: crosses n·f_d at 60, 30, 20, 15 Hz.
   const fd = Array.from({ length: 111 }, (_, i) => 5 + 0.5 * i);
-  const c = resonanceCrossings(fd, fd.map(() => 60));
-  assert.deepEqual(c.map((x) => x.n), [4, 3, 2, 1]);
+  const c = resonanceCrossings(
+    fd,
+    fd.map(() => 60),
+  );
+  assert.deepEqual(
+    c.map((x) => x.n),
+    [4, 3, 2, 1],
+  );
   for (const x of c) assert.ok(Math.abs(x.flap_hz - 60 / x.n) < 1e-9);
   const r = {
     flap_hz: Float64Array.from(fd),
     modes: [
-      { freq_hz: 62.5, effective_freq_hz: Float64Array.from(fd.map(() => 60)), max_modulus: Float64Array.from(fd.map((f) => (Math.abs(f - 30) < 0.6 ? 1.02 : 1))), beat_period_s: new Float64Array(111), stable: Uint8Array.from(fd.map((f) => (Math.abs(f - 30) < 0.6 ? 0 : 1))) },
+      {
+        freq_hz: 62.5,
+        effective_freq_hz: Float64Array.from(fd.map(() => 60)),
+        max_modulus: Float64Array.from(fd.map((f) => (Math.abs(f - 30) < 0.6 ? 1.02 : 1))),
+        beat_period_s: new Float64Array(111),
+        stable: Uint8Array.from(fd.map((f) => (Math.abs(f - 30) < 0.6 ? 0 : 1))),
+      },
     ],
   };
   const s = resonanceSummary(r);

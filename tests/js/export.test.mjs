@@ -5,7 +5,13 @@ import assert from 'node:assert/strict';
 import { toCSV, niceTicks, placeLabels, figureSVG, drawFigure, svgPainter } from '../../www/export.js';
 
 test('toCSV: comments, header with units, empty cells for NaN', () => {
-  const t = toCSV([{ name: 't', unit: 's', values: [0, 1] }, { name: 'q', unit: 'kg^½·m', values: [1, NaN] }], ['case']);
+  const t = toCSV(
+    [
+      { name: 't', unit: 's', values: [0, 1] },
+      { name: 'q', unit: 'kg^½·m', values: [1, NaN] },
+    ],
+    ['case'],
+  );
   assert.equal(t, '# case\nt (s),q (kg^½·m)\n0,1\n1,\n');
 });
 
@@ -16,15 +22,30 @@ test('niceTicks covers the range with round steps', () => {
 });
 
 test('placeLabels never lets two labels in a row overlap', () => {
-  const items = [{ x: 100, width: 30 }, { x: 110, width: 20 }, { x: 125, width: 25 }, { x: 200, width: 10 }];
+  const items = [
+    { x: 100, width: 30 },
+    { x: 110, width: 20 },
+    { x: 125, width: 25 },
+    { x: 200, width: 10 },
+  ];
   const rows = placeLabels(items, { gap: 4, maxRows: 3 });
   assert.deepEqual(rows, [0, 1, 2, 0]);
-  for (let i = 0; i < items.length; i++) for (let j = 0; j < items.length; j++) {
-    if (i === j || rows[i] !== rows[j] || rows[i] < 0) continue;
-    const [a, b] = items[i].x < items[j].x ? [items[i], items[j]] : [items[j], items[i]];
-    assert.ok(a.x + a.width + 4 <= b.x);
-  }
-  assert.equal(placeLabels([{ x: 0, width: 50 }, { x: 1, width: 50 }], { maxRows: 1 })[1], -1);
+  for (let i = 0; i < items.length; i++)
+    for (let j = 0; j < items.length; j++) {
+      if (i === j || rows[i] !== rows[j] || rows[i] < 0) continue;
+      const [a, b] = items[i].x < items[j].x ? [items[i], items[j]] : [items[j], items[i]];
+      assert.ok(a.x + a.width + 4 <= b.x);
+    }
+  assert.equal(
+    placeLabels(
+      [
+        { x: 0, width: 50 },
+        { x: 1, width: 50 },
+      ],
+      { maxRows: 1 },
+    )[1],
+    -1,
+  );
 });
 
 test('a figure has title, parameter line, axis titles with real superscripts, and a legend with swatches', () => {

@@ -13,9 +13,19 @@ test('fmt keeps the numbers the lab has always shown', () => {
 });
 
 test('rich markup: subscripts, superscripts, braces; no caret survives plain()', () => {
-  assert.deepEqual(parseRich('f_d'), [{ text: 'f', kind: 'normal' }, { text: 'd', kind: 'sub' }]);
-  assert.deepEqual(parseRich('γ_{xy} x'), [{ text: 'γ', kind: 'normal' }, { text: 'xy', kind: 'sub' }, { text: ' x', kind: 'normal' }]);
-  assert.deepEqual(parseRich('kg^½·m').map((r) => r.kind), ['normal', 'sup', 'normal']);
+  assert.deepEqual(parseRich('f_d'), [
+    { text: 'f', kind: 'normal' },
+    { text: 'd', kind: 'sub' },
+  ]);
+  assert.deepEqual(parseRich('γ_{xy} x'), [
+    { text: 'γ', kind: 'normal' },
+    { text: 'xy', kind: 'sub' },
+    { text: ' x', kind: 'normal' },
+  ]);
+  assert.deepEqual(
+    parseRich('kg^½·m').map((r) => r.kind),
+    ['normal', 'sup', 'normal'],
+  );
   assert.equal(plain(UNITS.q.label), 'kg½·m');
   assert.equal(plain(UNITS.fpsd.label), '(kg½·m/s²)²/Hz');
   assert.equal(plain('10^{-26}'), '10⁻²⁶');

@@ -29,7 +29,9 @@ function table(n, seed, amp) {
   const rnd = prng(seed);
   return Array.from({ length: n }, (_, j) => {
     const p = (2 * Math.PI * j) / n;
-    return amp * Math.sin(p + 0.2) + 0.2 * amp * Math.cos(3 * p) + 0.05 * amp * Math.sin(7 * p) + 0.02 * amp * (rnd() - 0.5);
+    return (
+      amp * Math.sin(p + 0.2) + 0.2 * amp * Math.cos(3 * p) + 0.05 * amp * Math.sin(7 * p) + 0.02 * amp * (rnd() - 0.5)
+    );
   });
 }
 
@@ -44,7 +46,10 @@ for (const [what, n, cap] of [
     const fd = 25;
     const angle = (values) => ({ kind: 'sampled', values, max_harmonic: cap });
     const tabs = [table(n, 1, 0.7), table(n, 2, 0.4), table(n, 3, 0.15)];
-    const cfg = { ...wb.defaultConfig(), kinematics: { flap_freq_hz: fd, alpha: angle(tabs[0]), beta: angle(tabs[1]), gamma: angle(tabs[2]) } };
+    const cfg = {
+      ...wb.defaultConfig(),
+      kinematics: { flap_freq_hz: fd, alpha: angle(tabs[0]), beta: angle(tabs[1]), gamma: angle(tabs[2]) },
+    };
     // 3N + 1 instants over one period: the table's own points and two between each pair
     const m = 3 * n;
     const times = Array.from({ length: m }, (_, j) => j / (m * fd));
@@ -65,13 +70,17 @@ test('every harmonic kept: the series gives the N samples back (even and odd N)'
     const v = table(n, 7, 1);
     const back = seriesSamples(sampledSeries(v, n), n);
     assert.equal(sampledSeries(v, n).length, 1 + 2 * Math.floor(n / 2));
-    for (let j = 0; j < n; j++) assert.ok(Math.abs(back[j] - v[j]) < 1e-12, `N = ${n}, j = ${j}: ${back[j]} vs ${v[j]}`);
+    for (let j = 0; j < n; j++)
+      assert.ok(Math.abs(back[j] - v[j]) < 1e-12, `N = ${n}, j = ${j}: ${back[j]} vs ${v[j]}`);
   }
 });
 
 test('a cap low-passes: one harmonic of a two-harmonic table leaves the second out', () => {
   const n = 40;
-  const v = Array.from({ length: n }, (_, j) => 0.3 + Math.sin((2 * Math.PI * j) / n) + 0.5 * Math.cos((4 * Math.PI * j) / n));
+  const v = Array.from(
+    { length: n },
+    (_, j) => 0.3 + Math.sin((2 * Math.PI * j) / n) + 0.5 * Math.cos((4 * Math.PI * j) / n),
+  );
   const s = sampledSeries(v, 1);
   assert.equal(s.length, 3);
   assert.ok(Math.abs(s[0] - 0.3) < 1e-12 && Math.abs(s[1] - 1) < 1e-12 && Math.abs(s[2]) < 1e-12, JSON.stringify(s));

@@ -4,19 +4,43 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { layoutMode, gridLayout, areasCss, TEMPLATES, WIDE_AT, MEDIUM_AT } from '../../www/layout.js';
 import { PANELS } from '../../www/state.js';
+import { prng } from './prng.mjs';
 
-const LAYOUT = ['wing3d', 'controls', 'time', 'experiments', 'wing', 'kinematics', 'spectrum', 'numbers', 'modeshape', 'strain', 'sensing', 'studies', 'resonance', 'report'];
+const LAYOUT = [
+  'wing3d',
+  'controls',
+  'time',
+  'experiments',
+  'wing',
+  'kinematics',
+  'spectrum',
+  'numbers',
+  'modeshape',
+  'strain',
+  'sensing',
+  'studies',
+  'resonance',
+  'report',
+];
 
 /** Every visible panel occupies a rectangle; every cell holds a visible panel. */
 function checkGrid(g, visible) {
   for (const r of g.rows) assert.equal(r.length, g.columns.length, JSON.stringify(g));
   const cells = new Map();
-  g.rows.forEach((r, y) => r.forEach((p, x) => { assert.ok(visible.includes(p), `cell ${p} not visible`); (cells.get(p) || cells.set(p, []).get(p)).push([x, y]); }));
+  g.rows.forEach((r, y) => {
+    r.forEach((p, x) => {
+      assert.ok(visible.includes(p), `cell ${p} not visible`);
+      if (!cells.has(p)) cells.set(p, []);
+      cells.get(p).push([x, y]);
+    });
+  });
   for (const p of visible) {
     const c = cells.get(p);
     assert.ok(c, `${p} placed`);
-    const xs = c.map((v) => v[0]), ys = c.map((v) => v[1]);
-    const w = Math.max(...xs) - Math.min(...xs) + 1, h = Math.max(...ys) - Math.min(...ys) + 1;
+    const xs = c.map((v) => v[0]),
+      ys = c.map((v) => v[1]);
+    const w = Math.max(...xs) - Math.min(...xs) + 1,
+      h = Math.max(...ys) - Math.min(...ys) + 1;
     assert.equal(w * h, c.length, `${p} is a rectangle in ${areasCss(g.rows)}`);
   }
 }
@@ -39,7 +63,10 @@ test('the templates name every panel of state.js once per row set', () => {
 test('full set: the designed templates', () => {
   assert.deepEqual(gridLayout(LAYOUT, 'wide').rows, TEMPLATES.wide.rows);
   assert.deepEqual(gridLayout(LAYOUT, 'medium').rows, TEMPLATES.medium.rows);
-  assert.deepEqual(gridLayout(LAYOUT, 'narrow').rows, LAYOUT.map((p) => [p]));
+  assert.deepEqual(
+    gridLayout(LAYOUT, 'narrow').rows,
+    LAYOUT.map((p) => [p]),
+  );
 });
 
 test('subsets never leave empty cells', () => {
@@ -49,8 +76,7 @@ test('subsets never leave empty cells', () => {
     const vis = LAYOUT.filter((p) => some.includes(p) && (m >> some.indexOf(p)) & 1);
     for (const mode of ['wide', 'medium', 'narrow']) checkGrid(gridLayout(vis, /** @type {any} */ (mode)), vis);
   }
-  let seed = 7;
-  const rnd = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const rnd = prng(7);
   for (let k = 0; k < 300; k++) {
     const vis = LAYOUT.filter(() => rnd() < 0.6);
     if (!vis.length) continue;
@@ -66,7 +92,16 @@ test('controls, numbers, spectrum: sliders beside the plots', () => {
   // with the 3-D wing first, the sliders go on its right (as in the full layout)
   assert.equal(areasCss(gridLayout(['wing3d', 'controls', 'spectrum'], 'wide').rows), '"wing3d spectrum controls"');
   // The sensing screen (no sliders): the 3-D wing beside the experiments, the sensing panel below.
-  assert.equal(areasCss(gridLayout(['wing3d', 'experiments', 'sensing'], 'wide').rows), '"wing3d experiments" "sensing sensing"');
-  assert.equal(areasCss(gridLayout(['wing3d', 'experiments', 'sensing'], 'medium').rows), '"wing3d" "experiments" "sensing"');
-  assert.equal(areasCss(gridLayout(['wing3d', 'controls', 'spectrum'], 'medium').rows), '"wing3d controls" "spectrum spectrum"');
+  assert.equal(
+    areasCss(gridLayout(['wing3d', 'experiments', 'sensing'], 'wide').rows),
+    '"wing3d experiments" "sensing sensing"',
+  );
+  assert.equal(
+    areasCss(gridLayout(['wing3d', 'experiments', 'sensing'], 'medium').rows),
+    '"wing3d" "experiments" "sensing"',
+  );
+  assert.equal(
+    areasCss(gridLayout(['wing3d', 'controls', 'spectrum'], 'medium').rows),
+    '"wing3d controls" "spectrum spectrum"',
+  );
 });

@@ -9,7 +9,8 @@ test('a planform fills the width, keeps its aspect and maps mm to pixels inside 
   const { cssW, cssH, frame } = planformFrame(nodes, 400, 10);
   assert.equal(cssW, 400);
   assert.equal(cssH, Math.round(10 * (380 / 40) + 20)); // 115 px: the aspect kept
-  const px = (x) => (x - frame.x0) * frame.k, py = (y) => (frame.y1 - y) * frame.k;
+  const px = (x) => (x - frame.x0) * frame.k,
+    py = (y) => (frame.y1 - y) * frame.k;
   assert.ok(Math.abs(px(0) - 10) < 1e-9 && Math.abs(px(40) - 390) < 1e-9, 'span fills the width inside the margins');
   assert.ok(py(0) >= 10 - 1e-9 && py(-10) <= cssH - 10 + 1e-9, 'chord inside the height');
   assert.ok(py(0) < py(-10), 'leading edge (y = 0) above the trailing edge');

@@ -2,15 +2,19 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/scene3d.js';
+import { prng } from './prng.mjs';
 
 // A flat rectangular "wing": span 0.05 m along x, chord 0.02 m toward −y, on a 11 × 5 grid.
 function wing() {
-  const nodes = [], tris = [];
+  const nodes = [],
+    tris = [];
   for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
-  for (let i = 0; i < 10; i++) for (let j = 0; j < 4; j++) {
-    const a = i * 5 + j, b = a + 5;
-    tris.push(a, b, a + 1, b, b + 1, a + 1);
-  }
+  for (let i = 0; i < 10; i++)
+    for (let j = 0; j < 4; j++) {
+      const a = i * 5 + j,
+        b = a + 5;
+      tris.push(a, b, a + 1, b, b + 1, a + 1);
+    }
   return { nodes: Float64Array.from(nodes), tris: Uint32Array.from(tris) };
 }
 
@@ -52,12 +56,24 @@ test('fitDistance keeps every pose of a stroke inside the image; bestView covers
   const cam = S.defaultCamera(span);
   const d = S.fitDistance(cam, pts, 640, 480, 0.05);
   const bb = S.bbox({ ...cam, distance: d }, pts, 640, 480);
-  assert.ok(bb[0] >= 0.05 * 640 - 1e-6 && bb[2] <= 0.95 * 640 + 1e-6 && bb[1] >= 0.05 * 480 - 1e-6 && bb[3] <= 0.95 * 480 + 1e-6, `${bb}`);
+  assert.ok(
+    bb[0] >= 0.05 * 640 - 1e-6 &&
+      bb[2] <= 0.95 * 640 + 1e-6 &&
+      bb[1] >= 0.05 * 480 - 1e-6 &&
+      bb[3] <= 0.95 * 480 + 1e-6,
+    `${bb}`,
+  );
   // tight: slightly closer and something leaves the margin
   const bb2 = S.bbox({ ...cam, distance: d * 0.97 }, pts, 640, 480);
   assert.ok(bb2[0] < 0.05 * 640 || bb2[2] > 0.95 * 640 || bb2[1] < 0.05 * 480 || bb2[3] > 0.95 * 480);
   const best = S.bestView(span, nodes, tris, poses, 640, 480);
-  const dflt = poses.reduce((s, p) => s + S.projectedArea({ ...cam, distance: cam.distance * 1.35 }, nodes, tris, p, 640, 480), 0) / poses.length / (640 * 480);
+  const dflt =
+    poses.reduce(
+      (s, p) => s + S.projectedArea({ ...cam, distance: cam.distance * 1.35 }, nodes, tris, p, 640, 480),
+      0,
+    ) /
+    poses.length /
+    (640 * 480);
   assert.ok(best.coverage > dflt, `${best.coverage} vs ${dflt}`);
   const bb3 = S.bbox(best.camera, pts, 640, 480);
   assert.ok(bb3[0] >= 0 && bb3[2] <= 640 && bb3[1] >= 0 && bb3[3] <= 480);
@@ -69,7 +85,11 @@ test('hull2 and extremeStates: extremes of linear functions over the run are hul
   const q2 = Float64Array.from({ length: n }, (_, i) => 0.3 * Math.cos(i / 11));
   const states = S.extremeStates([q1, q2]);
   assert.ok(states.length < 400);
-  for (const [a, b] of [[1, 0], [0.3, -2], [-1, 1]]) {
+  for (const [a, b] of [
+    [1, 0],
+    [0.3, -2],
+    [-1, 1],
+  ]) {
     let brute = 0;
     for (let i = 0; i < n; i++) brute = Math.max(brute, Math.abs(a * q1[i] + b * q2[i]));
     const hull = Math.max(...states.map(([x, y]) => Math.abs(a * x + b * y)));
@@ -88,9 +108,16 @@ test('strainRanges: one fixed range per component from the run’s extremes (rob
   const q1 = Float64Array.from({ length: 1000 }, (_, i) => 2 * Math.sin(i / 10));
   const q2 = Float64Array.from({ length: 1000 }, (_, i) => 0.5 * Math.cos(i / 7));
   const r = S.strainRanges(strain, nNodes, [q1, q2], 0.98);
-  assert.ok(Math.abs(S.strainRanges(strain, nNodes, [q1, q2])[1] - 0.89 * r[1] / 0.97) < 1e-9, 'default quantile 0.9');
-  let m1 = 0, m2 = 0;
-  for (let i = 0; i < 1000; i++) { m1 = Math.max(m1, Math.abs(q1[i])); m2 = Math.max(m2, Math.abs(q2[i])); }
+  assert.ok(
+    Math.abs(S.strainRanges(strain, nNodes, [q1, q2])[1] - (0.89 * r[1]) / 0.97) < 1e-9,
+    'default quantile 0.9',
+  );
+  let m1 = 0,
+    m2 = 0;
+  for (let i = 0; i < 1000; i++) {
+    m1 = Math.max(m1, Math.abs(q1[i]));
+    m2 = Math.max(m2, Math.abs(q2[i]));
+  }
   assert.ok(Math.abs(r[1] - 0.97 * m1) < 1e-9, `${r[1]}`);
   assert.equal(r[2], 0);
   assert.ok(Math.abs(r[3] - m2) < 1e-9);
@@ -102,7 +129,7 @@ test('strainRanges: one fixed range per component from the run’s extremes (rob
   assert.ok(Math.abs(dmax - brute) < 1e-15);
 });
 
-test('statesAt / strainRangesAt / maxDeflectionAt: given sample indices (the core\'s extreme_samples) give the same ranges', () => {
+test("statesAt / strainRangesAt / maxDeflectionAt: given sample indices (the core's extreme_samples) give the same ranges", () => {
   const nNodes = 50;
   const strain = Float64Array.from({ length: 2 * nNodes * 3 }, (_, j) => Math.sin(j * 0.7));
   const shapes = Float64Array.from({ length: 2 * nNodes }, (_, j) => 1e-3 * Math.cos(j * 0.3));
@@ -125,7 +152,8 @@ test('hull2 with the interior filter equals the plain hull; outline holds every 
   // every point is inside or on the hull polygon
   for (let i = 0; i < n; i += 7) {
     for (let j = 0; j < h.length; j++) {
-      const a = h[j], b = h[(j + 1) % h.length];
+      const a = h[j],
+        b = h[(j + 1) % h.length];
       assert.ok((xs[b] - xs[a]) * (ys[i] - ys[a]) - (ys[b] - ys[a]) * (xs[i] - xs[a]) >= -1e-12);
     }
   }
@@ -133,12 +161,16 @@ test('hull2 with the interior filter equals the plain hull; outline holds every 
   assert.ok(small.length >= 3);
   // outline: bbox of all nodes at any pose equals that of the outline with the camber lift
   const nodes = [];
-  for (let i = 0; i <= 20; i++) for (let j = 0; j <= 8; j++) nodes.push(0.0025 * i, -0.003 * j * (1 - i / 25), 0.002 * Math.sin((Math.PI * j) / 8));
+  for (let i = 0; i <= 20; i++)
+    for (let j = 0; j <= 8; j++) nodes.push(0.0025 * i, -0.003 * j * (1 - i / 25), 0.002 * Math.sin((Math.PI * j) / 8));
   const N = Float64Array.from(nodes);
   const ol = S.outline(N);
   assert.ok(ol.nodes.length / 3 < 40);
   const cam = { ...S.defaultCamera(0.05), pitch: 0.6 };
-  const poses = [[0.5, 0.3, 0.1], [-0.7, -0.4, 0]];
+  const poses = [
+    [0.5, 0.3, 0.1],
+    [-0.7, -0.4, 0],
+  ];
   const all = S.bbox(cam, S.posePoints(N, poses), 640, 480);
   const few = S.bbox(cam, S.posePoints(ol.nodes, poses, { lift: ol.zmax }), 640, 480);
   assert.ok(few[0] <= all[0] + 1e-9 && few[1] <= all[1] + 1e-9 && few[2] >= all[2] - 1e-9 && few[3] >= all[3] - 1e-9);
@@ -146,30 +178,44 @@ test('hull2 with the interior filter equals the plain hull; outline holds every 
 
 // ---------- strain maps, picking and the colour map (mode viewer, strain panel) ----------
 
-/** Deterministic pseudo-random numbers in [−1, 1). */
+/** Deterministic pseudo-random numbers in [−1, 1) (tests/js/prng.mjs). */
 function rng(seed) {
-  let s = seed >>> 0;
-  return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 31) - 1;
+  const u = prng(seed);
+  return () => 2 * u() - 1;
 }
 
 test('strainMapJs: RMS equals the sample RMS for every component; peak bounds every sample', () => {
   const { nodes } = wing();
-  const n = nodes.length / 3, m = 3, nT = 500;
+  const n = nodes.length / 3,
+    m = 3,
+    nT = 500;
   const r = rng(7);
   const sn = Float64Array.from({ length: 3 * n * m }, () => 1e-3 * r());
-  const qs = Array.from({ length: m }, (_, k) => Float64Array.from({ length: nT }, (_, t) => Math.sin(0.05 * (k + 1) * t + k) + 0.3 * r()));
+  const qs = Array.from({ length: m }, (_, k) =>
+    Float64Array.from({ length: nT }, (_, t) => Math.sin(0.05 * (k + 1) * t + k) + 0.3 * r()),
+  );
   const at = (i, t) => {
     const e = [0, 0, 0];
     for (let k = 0; k < m; k++) for (let c = 0; c < 3; c++) e[c] += sn[(k * n + i) * 3 + c] * qs[k][t];
     return e;
   };
-  const value = { eps_x: (e) => e[0], eps_y: (e) => e[1], gamma_xy: (e) => e[2], von_mises: (e) => S.vonMisesStrain(e[0], e[1], e[2]) };
+  const value = {
+    eps_x: (e) => e[0],
+    eps_y: (e) => e[1],
+    gamma_xy: (e) => e[2],
+    von_mises: (e) => S.vonMisesStrain(e[0], e[1], e[2]),
+  };
   for (const component of S.MAP_COMPONENTS) {
     const rms = S.strainMapJs(sn, n, qs, { component, stat: 'rms' });
     const peak = S.strainMapJs(sn, n, qs, { component, stat: 'peak' });
     for (const i of [0, 7, n - 1]) {
-      let ms = 0, pk = 0;
-      for (let t = 0; t < nT; t++) { const v = value[component](at(i, t)); ms += v * v; pk = Math.max(pk, Math.abs(v)); }
+      let ms = 0,
+        pk = 0;
+      for (let t = 0; t < nT; t++) {
+        const v = value[component](at(i, t));
+        ms += v * v;
+        pk = Math.max(pk, Math.abs(v));
+      }
       assert.ok(Math.abs(rms[i] - Math.sqrt(ms / nT)) <= 1e-12 + 1e-9 * rms[i], `${component} rms node ${i}`);
       // every sample visited here (500 < maxSamples): exact
       assert.ok(Math.abs(peak[i] - pk) <= 1e-15 + 1e-12 * pk, `${component} peak node ${i}: ${peak[i]} vs ${pk}`);
@@ -183,8 +229,17 @@ test('strainMapJs: RMS equals the sample RMS for every component; peak bounds ev
 test('strainMap: the engine’s field when it fits, the JS map otherwise; null for a mismatched run', () => {
   const { nodes, tris } = wing();
   const n = nodes.length / 3;
-  const fe = { nodes: Float64Array.from(nodes), triangles: Uint32Array.from(tris), strain_nodes: new Float64Array(3 * n * 2).fill(1e-3), n_modes: 2 };
-  const mk = (m) => ({ analysis: { sim: { modes: Array.from({ length: m }, () => ({ q: { total: Float64Array.from([1, -1, 1, -1]) } })) } } });
+  const fe = {
+    nodes: Float64Array.from(nodes),
+    triangles: Uint32Array.from(tris),
+    strain_nodes: new Float64Array(3 * n * 2).fill(1e-3),
+    n_modes: 2,
+  };
+  const mk = (m) => ({
+    analysis: {
+      sim: { modes: Array.from({ length: m }, () => ({ q: { total: Float64Array.from([1, -1, 1, -1]) } })) },
+    },
+  });
   const res = mk(2);
   const fromEngine = S.strainMap(fe, res, { component: 'eps_x', stat: 'rms' }, () => new Float64Array(n).fill(42));
   assert.equal(fromEngine[0], 42);
@@ -198,7 +253,10 @@ test('pick: the planform point under a screen position, front-most triangle, nul
   const { nodes, tris } = wing();
   const n = nodes.length / 3;
   const top = { xy: new Float64Array(2 * n), depth: new Float64Array(n) };
-  for (let i = 0; i < n; i++) { top.xy[2 * i] = nodes[3 * i] * 1e3; top.xy[2 * i + 1] = nodes[3 * i + 1] * 1e3; }
+  for (let i = 0; i < n; i++) {
+    top.xy[2 * i] = nodes[3 * i] * 1e3;
+    top.xy[2 * i + 1] = nodes[3 * i + 1] * 1e3;
+  }
   const h = S.pick(nodes, tris, top, 23.3, -7.1);
   assert.ok(h && Math.abs(h.x - 0.0233) < 1e-12 && Math.abs(h.y + 0.0071) < 1e-12);
   assert.ok(Math.abs(h.w.reduce((a, b) => a + b, 0) - 1) < 1e-12);

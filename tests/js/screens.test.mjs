@@ -4,7 +4,15 @@
 // study it points to.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { SCREENS, SCREEN_IDS, DEFAULT_SCREEN, EXPERIMENT_SCREEN, screenPanels, resolveScreen, screenOfPanel } from '../../www/screens.js';
+import {
+  SCREENS,
+  SCREEN_IDS,
+  DEFAULT_SCREEN,
+  EXPERIMENT_SCREEN,
+  screenPanels,
+  resolveScreen,
+  screenOfPanel,
+} from '../../www/screens.js';
 import { PANELS, EXPERIMENT_IDS, parseQuery, parsePairs, toQuery, defaults, paramsOf } from '../../www/state.js';
 import { EXPERIMENTS } from '../../www/experiments.js';
 
@@ -22,7 +30,7 @@ test('focused screens are small: at most 5 panels each', () => {
   for (const s of SCREENS) if (s.panels) assert.ok(s.panels.length <= 5, `${s.id}: ${s.panels.length} panels`);
 });
 
-test('resolveScreen: default, wanted, and an author\'s panels= choice shown exactly', () => {
+test("resolveScreen: default, wanted, and an author's panels= choice shown exactly", () => {
   const all = PANELS;
   assert.equal(resolveScreen('', all, all).id, DEFAULT_SCREEN);
   assert.deepEqual(resolveScreen('', all, all).offered, SCREEN_IDS);
@@ -72,5 +80,6 @@ test('every guided experiment opens a screen that shows the experiment and what 
     }
   }
   assert.ok(screenPanels(EXPERIMENT_SCREEN.sensing, PANELS).includes('sensing'));
-  for (const id of ['beat', 'no-yaw', 'damping', 'resonance', 'instability']) assert.ok(screenPanels(EXPERIMENT_SCREEN[id], PANELS).includes('time'), `${id} talks about the responses plot`);
+  for (const id of ['beat', 'no-yaw', 'damping', 'resonance', 'instability'])
+    assert.ok(screenPanels(EXPERIMENT_SCREEN[id], PANELS).includes('time'), `${id} talks about the responses plot`);
 });

@@ -5,21 +5,67 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  encodeShare, decodeShare, fragmentValue, checkPoints, shareLink, packOutline, unpackOutline,
-  SHARE_VERSION, MAX_LINK, MAX_FRAGMENT,
+  encodeShare,
+  decodeShare,
+  fragmentValue,
+  checkPoints,
+  shareLink,
+  packOutline,
+  unpackOutline,
+  SHARE_VERSION,
+  MAX_LINK,
+  MAX_FRAGMENT,
 } from '../../www/share.js';
 import { sampledSeries, DEFAULT_SAMPLED_MAX_HARMONIC } from '../../www/fourier.js';
 import { defaults, toQuery } from '../../www/state.js';
+import { prng } from './prng.mjs';
 
-/** Deterministic pseudo-random numbers in [0, 1). */
-function rng(seed = 7) {
-  let s = seed;
-  return () => (s = (s * 16807) % 2147483647) / 2147483647;
-}
+/** Deterministic pseudo-random numbers in [0, 1) (tests/js/prng.mjs). */
+const rng = (seed = 7) => prng(seed);
 const sig6 = (/** @type {number} */ v) => Number(v.toPrecision(6));
 
 // The default planform's outline (wasm planforms(), id manduca: 39 points at 4 decimals).
-const MANDUCA_39 = [[0, -4], [0.3341, -5.1203], [1.3275, -8.1783], [2.9529, -12.3924], [5.1661, -16.8053], [7.9066, -20.5984], [11.0998, -23.275], [14.6585, -24.6783], [18.4856, -24.8982], [22.4768, -24.1476], [26.5232, -22.6655], [30.5144, -20.5984], [34.3415, -18.1653], [37.9002, -15.5017], [41.0934, -12.716], [43.8339, -9.9163], [46.0471, -7.2088], [47.6725, -4.7014], [48.6659, -2.5024], [49, -0.7209], [48.6659, 0.5519], [47.6725, 1.4136], [46.0471, 1.9311], [43.8339, 2.1793], [41.0934, 2.2386], [37.9002, 2.1946], [34.3415, 2.1248], [30.5144, 2.0736], [26.5232, 2.0259], [22.4768, 1.9545], [18.4856, 1.8431], [14.6585, 1.688], [11.0998, 1.4881], [7.9066, 1.2441], [5.1661, 0.9585], [2.9529, 0.6348], [1.3275, 0.2778], [0.3341, -0.1138], [0, -0.3]];
+const MANDUCA_39 = [
+  [0, -4],
+  [0.3341, -5.1203],
+  [1.3275, -8.1783],
+  [2.9529, -12.3924],
+  [5.1661, -16.8053],
+  [7.9066, -20.5984],
+  [11.0998, -23.275],
+  [14.6585, -24.6783],
+  [18.4856, -24.8982],
+  [22.4768, -24.1476],
+  [26.5232, -22.6655],
+  [30.5144, -20.5984],
+  [34.3415, -18.1653],
+  [37.9002, -15.5017],
+  [41.0934, -12.716],
+  [43.8339, -9.9163],
+  [46.0471, -7.2088],
+  [47.6725, -4.7014],
+  [48.6659, -2.5024],
+  [49, -0.7209],
+  [48.6659, 0.5519],
+  [47.6725, 1.4136],
+  [46.0471, 1.9311],
+  [43.8339, 2.1793],
+  [41.0934, 2.2386],
+  [37.9002, 2.1946],
+  [34.3415, 2.1248],
+  [30.5144, 2.0736],
+  [26.5232, 2.0259],
+  [22.4768, 1.9545],
+  [18.4856, 1.8431],
+  [14.6585, 1.688],
+  [11.0998, 1.4881],
+  [7.9066, 1.2441],
+  [5.1661, 0.9585],
+  [2.9529, 0.6348],
+  [1.3275, 0.2778],
+  [0.3341, -0.1138],
+  [0, -0.3],
+];
 
 /** The outline after dragging: every point moved by a pointer (full-precision floats). */
 function draggedOutline(r = rng(3)) {
@@ -28,7 +74,10 @@ function draggedOutline(r = rng(3)) {
 
 /** A measured-looking one-period table: N samples × 3 angles at 6 significant digits, with noise. */
 function measuredKin(n = 200, noise = 0.02, r = rng(11)) {
-  const ang = (/** @type {number} */ a, /** @type {number} */ ph) => Array.from({ length: n }, (_, i) => sig6(a * Math.sin((2 * Math.PI * i) / n + ph) + 0.1 * Math.sin((6 * Math.PI * i) / n) + noise * (r() - 0.5)));
+  const ang = (/** @type {number} */ a, /** @type {number} */ ph) =>
+    Array.from({ length: n }, (_, i) =>
+      sig6(a * Math.sin((2 * Math.PI * i) / n + ph) + 0.1 * Math.sin((6 * Math.PI * i) / n) + noise * (r() - 0.5)),
+    );
   return {
     flap_freq_hz: 25,
     alpha: { kind: 'sampled', values: ang(0.8, 0), max_harmonic: null },
@@ -40,8 +89,31 @@ function measuredKin(n = 200, noise = 0.02, r = rng(11)) {
 /** The longest query the lab writes for the sliders (every wing parameter changed too). */
 function longQuery() {
   const s = /** @type {any} */ (defaults());
-  Object.assign(s, { alpha0: 0.75, beta0: 0.45, gamma0: 0.185, flap_hz: 27.5, zeta: 0.025, alpha_phase: -1.57, beta_phase: 1.57, gamma_phase: 3.14, duration: 4.5, modes: 'fe', mode: '2', detrend: 'linear' });
-  Object.assign(s, { camber: 0.11, clamp: 1.5, e_pa: 1.2e10, rho: 950, nu: 0.35, thickness_um: 75.5, mesh_mm: 0.75, n_modes: 4, panels: ['controls', 'numbers', 'time', 'spectrum', 'wing', 'kinematics'] });
+  Object.assign(s, {
+    alpha0: 0.75,
+    beta0: 0.45,
+    gamma0: 0.185,
+    flap_hz: 27.5,
+    zeta: 0.025,
+    alpha_phase: -1.57,
+    beta_phase: 1.57,
+    gamma_phase: 3.14,
+    duration: 4.5,
+    modes: 'fe',
+    mode: '2',
+    detrend: 'linear',
+  });
+  Object.assign(s, {
+    camber: 0.11,
+    clamp: 1.5,
+    e_pa: 1.2e10,
+    rho: 950,
+    nu: 0.35,
+    thickness_um: 75.5,
+    mesh_mm: 0.75,
+    n_modes: 4,
+    panels: ['controls', 'numbers', 'time', 'spectrum', 'wing', 'kinematics'],
+  });
   return toQuery(s);
 }
 const BASE = `https://course.example.org/biomechanics/week-5/wingbeat/index.html?${longQuery()}`;
@@ -58,7 +130,9 @@ test('round trip of an outline and a kinematics table (v2, written now)', async 
   assert.equal(back.outline_label, 'mine');
   assert.deepEqual(back.strain_point, [21.25, -3.5]);
   assert.equal(back.outline.length, 200);
-  for (let i = 0; i < 200; i++) for (const c of [0, 1]) assert.ok(Math.abs(back.outline[i][c] - outline[i][c]) <= 0.5e-4 + 1e-12, 'outline rounded to 0.1 µm');
+  for (let i = 0; i < 200; i++)
+    for (const c of [0, 1])
+      assert.ok(Math.abs(back.outline[i][c] - outline[i][c]) <= 0.5e-4 + 1e-12, 'outline rounded to 0.1 µm');
   assert.equal(back.kin.label, 'k');
   assert.equal(back.kin.kinematics.flap_freq_hz, 25);
 });
@@ -68,7 +142,11 @@ test('outline points with at most 4 decimals (the built-in outlines, typed value
   assert.deepEqual(back.outline, MANDUCA_39);
   assert.deepEqual(unpackOutline(packOutline(/** @type {any} */ (MANDUCA_39))), MANDUCA_39);
   // A value too large for exact integers is stored as it is.
-  const huge = [[0, 0], [1e200, 0], [0, 1]];
+  const huge = [
+    [0, 0],
+    [1e200, 0],
+    [0, 1],
+  ];
   assert.deepEqual((await decodeShare(await encodeShare({ outline: huge }))).outline, huge);
 });
 
@@ -76,7 +154,9 @@ test('a sampled angle comes back as the same Fourier series the core makes of it
   const k = measuredKin(200, 0.02);
   k.beta.max_harmonic = /** @type {any} */ (12);
   for (const e of [6, 5, 4]) {
-    const back = await decodeShare(await encodeShare({ kin: { label: 'm', kinematics: k, csv: null } }, { angleDecimals: e }));
+    const back = await decodeShare(
+      await encodeShare({ kin: { label: 'm', kinematics: k, csv: null } }, { angleDecimals: e }),
+    );
     for (const a of /** @type {const} */ (['alpha', 'beta', 'gamma'])) {
       const ang = back.kin.kinematics[a];
       assert.equal(ang.kind, 'sampled');
@@ -91,18 +171,37 @@ test('a sampled angle comes back as the same Fourier series the core makes of it
     }
   }
   // Fourier angles and the flap frequency are exact.
-  const f = { flap_freq_hz: 27.123456789, alpha: { kind: 'fourier', mean: 0.0123456789, harmonics: [{ n: 1, amplitude: 0.812345678901, phase: 0.1 }, { n: 3, amplitude: 0.05, phase: -1.234567 }] }, beta: { kind: 'fourier', harmonics: [] }, gamma: { kind: 'fourier', mean: 0 } };
+  const f = {
+    flap_freq_hz: 27.123456789,
+    alpha: {
+      kind: 'fourier',
+      mean: 0.0123456789,
+      harmonics: [
+        { n: 1, amplitude: 0.812345678901, phase: 0.1 },
+        { n: 3, amplitude: 0.05, phase: -1.234567 },
+      ],
+    },
+    beta: { kind: 'fourier', harmonics: [] },
+    gamma: { kind: 'fourier', mean: 0 },
+  };
   const back = await decodeShare(await encodeShare({ kin: { label: 'f', kinematics: f, csv: null } }));
   assert.deepEqual(back.kin.kinematics, f);
 });
 
 test('a v1 link written by the earlier lab still decodes to its state', async () => {
   // Written by www/share.js v1 (encodeShare before the v2 packing), saved here unchanged.
-  const V1 = 'fZFdasQwDISvUuZZMba7KcV36AmMCdpE25h1nDQ_S-mSuxe37FJK6YsQjPTNIF1xgTOEcVtTzALnvabqEMgbrWqqjFW2DuQPmiqjS1MrY2uqbCBvNRlVh3BfbxIfJcFBurhK9_DCudtarlI8CwjnmOGuuA0Nwss2S6fa5fKtysBrbJcydEo8NadZ3pr-A87WBE5Tz0U6x9zBYeFhStKBcOG0yQLntTJUYmv1TFo9UqWVLeUpEAZ-b3qehzHHFi5vKe2Eo6w_kadxm6PMoJItw2nCbaXgr8hfxyrGcd06gStumHpeBM4ou4ed8MrD8C9VafMH2P4C2ztY72HfCeVMt-DLOnPMzTTGvMJ5a8uznsP-CQ';
+  const V1 =
+    'fZFdasQwDISvUuZZMba7KcV36AmMCdpE25h1nDQ_S-mSuxe37FJK6YsQjPTNIF1xgTOEcVtTzALnvabqEMgbrWqqjFW2DuQPmiqjS1MrY2uqbCBvNRlVh3BfbxIfJcFBurhK9_DCudtarlI8CwjnmOGuuA0Nwss2S6fa5fKtysBrbJcydEo8NadZ3pr-A87WBE5Tz0U6x9zBYeFhStKBcOG0yQLntTJUYmv1TFo9UqWVLeUpEAZ-b3qehzHHFi5vKe2Eo6w_kadxm6PMoJItw2nCbaXgr8hfxyrGcd06gStumHpeBM4ou4ed8MrD8C9VafMH2P4C2ztY72HfCeVMt-DLOnPMzTTGvMJ5a8uznsP-CQ';
   const st = await decodeShare(V1);
   assert.deepEqual(st, {
     v: 1,
-    outline: [[0, -4], [10.5, -12.25], [40, -10], [45.125, -2], [20, 1.5]],
+    outline: [
+      [0, -4],
+      [10.5, -12.25],
+      [40, -10],
+      [45.125, -2],
+      [20, 1.5],
+    ],
     outline_label: 'edited Manduca-like',
     kin: {
       label: 'measured.csv',
@@ -121,12 +220,15 @@ test('a v1 link written by the earlier lab still decodes to its state', async ()
 
 test('the default-size state makes a link of at most 2000 characters (measured)', async (t) => {
   const state = {
-    outline: draggedOutline(), outline_label: 'edited Manduca-like (synthetic, default)',
+    outline: draggedOutline(),
+    outline_label: 'edited Manduca-like (synthetic, default)',
     kin: { label: 'high-speed-video-run-03.csv', kinematics: measuredKin(200, 0.02), csv: null },
     strain_point: [24.123456789, -10.987654321],
   };
   const r = await shareLink(state, BASE);
-  t.diagnostic(`base ${BASE.length} chars; fragment ${r.hash.length}; link ${r.length}; angles at 1e-${r.angleDecimals} rad`);
+  t.diagnostic(
+    `base ${BASE.length} chars; fragment ${r.hash.length}; link ${r.length}; angles at 1e-${r.angleDecimals} rad`,
+  );
   assert.equal(r.message, '');
   assert.ok(r.length <= MAX_LINK, `link ${r.length} > ${MAX_LINK}`);
   assert.equal(r.length, BASE.length + r.hash.length);
@@ -142,7 +244,9 @@ test('the default-size state makes a link of at most 2000 characters (measured)'
   assert.ok(only.hash.length <= 450);
   // Noisier tables fall back to coarser rounding, then say so.
   const noisy = await shareLink({ ...state, kin: { label: 'n', kinematics: measuredKin(200, 0.1), csv: null } }, BASE);
-  t.diagnostic(`noise 0.1 rad: link ${noisy.length}, angles at 1e-${noisy.angleDecimals} rad, message ${noisy.message ? 'yes' : 'no'}`);
+  t.diagnostic(
+    `noise 0.1 rad: link ${noisy.length}, angles at 1e-${noisy.angleDecimals} rad, message ${noisy.message ? 'yes' : 'no'}`,
+  );
   assert.ok(noisy.length <= MAX_LINK || noisy.message);
 });
 
@@ -152,7 +256,13 @@ test('the CSV goes in only while the link stays short, never cut', async () => {
   const r = await shareLink({ kin }, BASE);
   assert.equal(r.csv, true);
   assert.deepEqual((await decodeShare(/** @type {string} */ (fragmentValue(r.hash)))).kin.csv, csv);
-  const big = { ...csv, text: Array.from({ length: 400 }, (_, i) => `${i / 1000},${sig6(Math.sin(i) * 40)},${sig6(Math.cos(i) * 20)},${sig6(Math.sin(2 * i))}`).join('\n') };
+  const big = {
+    ...csv,
+    text: Array.from(
+      { length: 400 },
+      (_, i) => `${i / 1000},${sig6(Math.sin(i) * 40)},${sig6(Math.cos(i) * 20)},${sig6(Math.sin(2 * i))}`,
+    ).join('\n'),
+  };
   const r2 = await shareLink({ kin: { ...kin, csv: big } }, BASE);
   assert.equal(r2.csv, false);
   assert.ok(r2.length <= MAX_LINK);
@@ -167,14 +277,23 @@ test('a link over the limit is written whole with a plain message; a huge one is
   const long = await shareLink({ outline }, BASE, (m) => told.push(m));
   assert.deepEqual(told, [long.message]);
   assert.ok(long.length > MAX_LINK);
-  assert.match(long.message, /This link is \d+ characters long \(it carries an outline of 2000 points\); links over 2000 characters may be cut short/);
+  assert.match(
+    long.message,
+    /This link is \d+ characters long \(it carries an outline of 2000 points\); links over 2000 characters may be cut short/,
+  );
   const back = await decodeShare(/** @type {string} */ (fragmentValue(long.hash)));
   assert.equal(back.outline.length, 2000, 'not truncated');
   const junk = Array.from({ length: 240000 }, () => String.fromCharCode(33 + Math.floor(r() * 90))).join('');
   const huge = await shareLink({ kin: { label: 'x', kinematics: measuredKin(10, 0), csv: null }, note: junk }, BASE);
   assert.equal(huge.hash, '');
   assert.match(huge.message, new RegExp(`cannot carry .*at most ${MAX_FRAGMENT}`));
-  assert.deepEqual(await shareLink({}, BASE), { hash: '', length: BASE.length, angleDecimals: null, csv: false, message: '' });
+  assert.deepEqual(await shareLink({}, BASE), {
+    hash: '',
+    length: BASE.length,
+    angleDecimals: null,
+    csv: false,
+    message: '',
+  });
 });
 
 test('a damaged, foreign or future fragment is refused with a reason', async () => {
@@ -191,7 +310,10 @@ test('a damaged, foreign or future fragment is refused with a reason', async () 
   await assert.rejects(decodeShare(await raw({ v: 3 })), /version 3; this lab reads versions 1 and 2/);
   await assert.rejects(decodeShare(await raw({ v: 2, o: { u: 4, d: [1, 2, 3] } })), /o\.d/);
   await assert.rejects(decodeShare(await raw({ v: 2, k: { f: 25, a: { s: [10, 9, 5], c: [0] } } })), /k\.a\.s/);
-  await assert.rejects(decodeShare(await raw({ v: 2, k: { f: 25, a: { s: [10, 2, 5], c: [0, 1] } } })), /k\.a\.c: expected 5 integers/);
+  await assert.rejects(
+    decodeShare(await raw({ v: 2, k: { f: 25, a: { s: [10, 2, 5], c: [0, 1] } } })),
+    /k\.a\.c: expected 5 integers/,
+  );
   await assert.rejects(decodeShare(await raw({ v: 2, k: { a: 1 } })), /k\.f/);
   await assert.rejects(encodeShare({ o: 1 }), /reserved/);
 });
@@ -200,7 +322,33 @@ test('fragmentValue and checkPoints', () => {
   assert.equal(fragmentValue('#s=abc-_'), 'abc-_');
   assert.equal(fragmentValue('#x=abc'), null);
   assert.equal(fragmentValue(''), null);
-  assert.deepEqual(checkPoints([[0, 0], [1, 0], [1, 1]]), [[0, 0], [1, 0], [1, 1]]);
-  assert.throws(() => checkPoints([[0, 0], [1, 0]]), /outline: expected 3/);
-  assert.throws(() => checkPoints([[0, 0], [1, 0], [1, 'x']]), /outline\[2\]/);
+  assert.deepEqual(
+    checkPoints([
+      [0, 0],
+      [1, 0],
+      [1, 1],
+    ]),
+    [
+      [0, 0],
+      [1, 0],
+      [1, 1],
+    ],
+  );
+  assert.throws(
+    () =>
+      checkPoints([
+        [0, 0],
+        [1, 0],
+      ]),
+    /outline: expected 3/,
+  );
+  assert.throws(
+    () =>
+      checkPoints([
+        [0, 0],
+        [1, 0],
+        [1, 'x'],
+      ]),
+    /outline\[2\]/,
+  );
 });

@@ -13,7 +13,11 @@ test('empty query gives the paper defaults', () => {
 
 test('round trip of every parameter', () => {
   const s = defaults();
-  s.gamma0 = 0.125; s.alpha_phase = -1.5; s.detrend = 'mean'; s.mode = '2'; s.duration = 1.5;
+  s.gamma0 = 0.125;
+  s.alpha_phase = -1.5;
+  s.detrend = 'mean';
+  s.mode = '2';
+  s.duration = 1.5;
   const { state, rejected } = parseQuery('?' + toQuery(s));
   assert.deepEqual(rejected, []);
   assert.deepEqual(state, s);
@@ -64,9 +68,13 @@ test('snap keeps values on the slider grid', () => {
 
 test('overridesOf names every numeric parameter by key (the core applies them)', () => {
   const s = defaults();
-  s.zeta = 0.01; s.gamma_phase = 0.5;
+  s.zeta = 0.01;
+  s.gamma_phase = 0.5;
   const o = overridesOf(s);
-  assert.deepEqual(Object.keys(o), NUMERIC.map((p) => p.key));
+  assert.deepEqual(
+    Object.keys(o),
+    NUMERIC.map((p) => p.key),
+  );
   assert.equal(o.zeta, 0.01);
   assert.equal(o.gamma_phase, 0.5);
   assert.equal(o.gamma0, 0.2);
@@ -79,7 +87,9 @@ test('wing parameters: URL round trip, written only when not default, clamp=root
   const d = defaults();
   assert.equal(customWing(d), false);
   assert.ok(!/camber|n_modes|planform|outline|clamp/.test(toQuery(d)), 'short links stay short');
-  const { state, rejected } = parseQuery('?camber=0.05&clamp=2.5&n_modes=6&mesh_mm=0&e_pa=2e9&outline=slender&planform=examples/w.csv&mode=6&modes=fe');
+  const { state, rejected } = parseQuery(
+    '?camber=0.05&clamp=2.5&n_modes=6&mesh_mm=0&e_pa=2e9&outline=slender&planform=examples/w.csv&mode=6&modes=fe',
+  );
   assert.deepEqual(rejected, []);
   assert.equal(state.camber, 0.05);
   assert.equal(state.clamp, 2.5);
@@ -101,7 +111,18 @@ test('wing parameters: URL round trip, written only when not default, clamp=root
 test('planform= takes only a relative same-origin .csv/.json path', async () => {
   const { safePlanformPath } = await import('../../www/state.js');
   for (const ok of ['w.csv', 'examples/planform-tapered.csv', 'a/b_c-d.JSON']) assert.equal(safePlanformPath(ok), ok);
-  for (const bad of ['https://evil.example/w.csv', '//evil.example/w.csv', '/abs/w.csv', '../w.csv', 'a/../../w.csv', 'w.txt', 'javascript:alert(1)//.csv', 'w.csv?x=1', 'w .csv', 'x'.repeat(201) + '.csv']) {
+  for (const bad of [
+    'https://evil.example/w.csv',
+    '//evil.example/w.csv',
+    '/abs/w.csv',
+    '../w.csv',
+    'a/../../w.csv',
+    'w.txt',
+    'javascript:alert(1)//.csv',
+    'w.csv?x=1',
+    'w .csv',
+    'x'.repeat(201) + '.csv',
+  ]) {
     assert.equal(safePlanformPath(bad), null, bad);
   }
   assert.match(parseQuery('?planform=https://evil.example/w.csv').rejected[0].why, /relative same-origin/);

@@ -16,11 +16,16 @@ test('subscribers run only for their keys, once per set, with the changed keys',
   const calls = [];
   s.subscribe(['a'], (st, ch) => calls.push(['a', st.a, ch]));
   s.subscribe(['b', 'c'], (st, ch) => calls.push(['bc', st.b, ch]));
-  s.subscribe('*', (st, ch) => calls.push(['*', ch]));
+  s.subscribe('*', (_st, ch) => calls.push(['*', ch]));
   s.set({ a: 5 });
   s.set({ b: 2 }); // unchanged: nobody runs
   s.set({ b: 7, c: 1 });
-  assert.deepEqual(calls, [['a', 5, ['a']], ['*', ['a']], ['bc', 7, ['b', 'c']], ['*', ['b', 'c']]]);
+  assert.deepEqual(calls, [
+    ['a', 5, ['a']],
+    ['*', ['a']],
+    ['bc', 7, ['b', 'c']],
+    ['*', ['b', 'c']],
+  ]);
 });
 
 test('unsubscribe stops notifications; NaN and -0 compare with Object.is', () => {

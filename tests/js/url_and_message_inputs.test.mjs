@@ -8,24 +8,85 @@
 // character) and never echoed; everything taken lies inside its range.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { parseQuery, parsePairs, defaults, NUMERIC, WING, ENUMS, PANELS, BODY_RATE, shortKey, MAX_PAIRS } from '../../www/state.js';
+import {
+  parseQuery,
+  parsePairs,
+  defaults,
+  NUMERIC,
+  WING,
+  ENUMS,
+  PANELS,
+  BODY_RATE,
+  shortKey,
+  MAX_PAIRS,
+} from '../../www/state.js';
 import { checkEnvelope, paramPairs, API_VERSION } from '../../www/embed-api.js';
 import { prng } from './prng.mjs';
 
-
-const KEYS = [...NUMERIC.map((p) => p.key), ...WING.map((w) => w.key), ...ENUMS.map((e) => e.key),
-  'panels', 'embed', 'exp', 'outline', 'planform', 'body_rate', 'body_axis'];
-const VALUES = ['', ' ', '0', '-0', '+1', '1e308', '1e-308', '1e999', '-1e999', 'NaN', 'Infinity', '-Infinity', '0x10', '1_000',
-  '.5', '5.', '1e+2', '1E-2', '2.5e', '٣', '１', '0.1 ', '\t0.2', '1,2', 'root', 'fe', 'paper', 'z', 'controls,numbers',
-  '../../etc/passwd.csv', '//evil.example/x.json', 'examples/planform-narrow.json', '<script>alert(1)</script>',
-  '\u{1F98B}', '\uD800', '\u202Egamma', '\u0000', String(2 ** 53), String(Number.MAX_VALUE), '9'.repeat(400)];
+const KEYS = [
+  ...NUMERIC.map((p) => p.key),
+  ...WING.map((w) => w.key),
+  ...ENUMS.map((e) => e.key),
+  'panels',
+  'embed',
+  'exp',
+  'outline',
+  'planform',
+  'body_rate',
+  'body_axis',
+];
+const VALUES = [
+  '',
+  ' ',
+  '0',
+  '-0',
+  '+1',
+  '1e308',
+  '1e-308',
+  '1e999',
+  '-1e999',
+  'NaN',
+  'Infinity',
+  '-Infinity',
+  '0x10',
+  '1_000',
+  '.5',
+  '5.',
+  '1e+2',
+  '1E-2',
+  '2.5e',
+  '٣',
+  '１',
+  '0.1 ',
+  '\t0.2',
+  '1,2',
+  'root',
+  'fe',
+  'paper',
+  'z',
+  'controls,numbers',
+  '../../etc/passwd.csv',
+  '//evil.example/x.json',
+  'examples/planform-narrow.json',
+  '<script>alert(1)</script>',
+  '\u{1F98B}',
+  '\uD800',
+  '\u202Egamma',
+  '\u0000',
+  String(2 ** 53),
+  String(Number.MAX_VALUE),
+  '9'.repeat(400),
+];
 
 function randomKey(r) {
   const x = r();
   if (x < 0.6) return KEYS[Math.floor(r() * KEYS.length)];
   if (x < 0.7) return '\u{1F98B}'.repeat(1 + Math.floor(r() * 30)) + '\uD800';
   if (x < 0.8) return 'k'.repeat(1 + Math.floor(r() * 5000));
-  if (x < 0.9) return ['__proto__', 'constructor', 'toString', 'hasOwnProperty', '', ' ', 'GAMMA0', 'gamma0 '][Math.floor(r() * 8)];
+  if (x < 0.9)
+    return ['__proto__', 'constructor', 'toString', 'hasOwnProperty', '', ' ', 'GAMMA0', 'gamma0 '][
+      Math.floor(r() * 8)
+    ];
   return String.fromCharCode(...Array.from({ length: 1 + Math.floor(r() * 10) }, () => Math.floor(r() * 0xffff)));
 }
 
@@ -41,7 +102,10 @@ function randomValue(r) {
 function assertInRange(state) {
   for (const p of [...NUMERIC, ...WING, BODY_RATE]) {
     const v = state[p.key];
-    assert.ok(typeof v === 'number' && Number.isFinite(v) && v >= p.min && v <= p.max, `${p.key} = ${v} in [${p.min}, ${p.max}]`);
+    assert.ok(
+      typeof v === 'number' && Number.isFinite(v) && v >= p.min && v <= p.max,
+      `${p.key} = ${v} in [${p.min}, ${p.max}]`,
+    );
   }
   for (const e of ENUMS) assert.ok(e.choices.includes(state[e.key]), `${e.key} = ${state[e.key]}`);
   assert.ok(Array.isArray(state.panels) && state.panels.every((p) => PANELS.includes(p)));
@@ -51,7 +115,11 @@ function assertInRange(state) {
 function assertReadableKey(k) {
   assert.equal(typeof k, 'string');
   assert.ok(Array.from(k).length <= 41, `short key (${Array.from(k).length} code points)`);
-  assert.ok(!/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/.test(k), `no lone surrogate in ${JSON.stringify(k)}`);
+  assert.ok(
+    !/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/.test(k),
+    `no lone surrogate in ${JSON.stringify(k)}`,
+  );
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: the test looks for control characters on purpose
   assert.ok(!/[\u0000-\u001f\u007f-\u009f\u2028\u2029]/.test(k), `no control character in ${JSON.stringify(k)}`);
 }
 
@@ -83,7 +151,11 @@ test('random hostile URL queries: nothing throws, every refusal names its key, a
     }
     // every repeated key is reported as repeated, by name
     for (const [k, c] of seen) {
-      if (c > 1 && !['', undefined].includes(k)) assert.ok(rejected.some((rj) => rj.key === shortKey(k) && /more than once/.test(rj.why)), `repeated ${JSON.stringify(k.slice(0, 20))}`);
+      if (c > 1 && !['', undefined].includes(k))
+        assert.ok(
+          rejected.some((rj) => rj.key === shortKey(k) && /more than once/.test(rj.why)),
+          `repeated ${JSON.stringify(k.slice(0, 20))}`,
+        );
     }
   }
   assert.ok(refusals > 1000, `the generator produces refusals (${refusals})`);
@@ -91,9 +163,20 @@ test('random hostile URL queries: nothing throws, every refusal names its key, a
 
 test('URL values at and beyond the edges of every range, in every float syntax', () => {
   for (const p of [...NUMERIC, ...WING.filter((w) => w.key !== 'n_modes')]) {
-    for (const [text, ok] of [[String(p.min), true], [String(p.max), true], [`${p.max}e0`, true], [`+${p.max}`, true],
-      [String(p.max * (1 + 1e-12) + (p.max === 0 ? 1e-9 : 0)), false], [String(p.min - Math.max(Math.abs(p.min) * 1e-12, 1e-9)), false],
-      ['1e999', false], ['-1e999', false], ['NaN', false], ['Infinity', false], ['0x1', false], ['1e9999', false]]) {
+    for (const [text, ok] of [
+      [String(p.min), true],
+      [String(p.max), true],
+      [`${p.max}e0`, true],
+      [`+${p.max}`, true],
+      [String(p.max * (1 + 1e-12) + (p.max === 0 ? 1e-9 : 0)), false],
+      [String(p.min - Math.max(Math.abs(p.min) * 1e-12, 1e-9)), false],
+      ['1e999', false],
+      ['-1e999', false],
+      ['NaN', false],
+      ['Infinity', false],
+      ['0x1', false],
+      ['1e9999', false],
+    ]) {
       const { state, rejected } = parsePairs([[p.key, text]]);
       if (ok) {
         assert.deepEqual(rejected, [], `${p.key}=${text}`);
@@ -108,7 +191,22 @@ test('URL values at and beyond the edges of every range, in every float syntax',
 });
 
 test('names and values that are not text are refused by name, and the pair count is bounded', () => {
-  const { rejected } = parsePairs(/** @type {any} */ ([[Symbol('s'), '1'], ['gamma0', 0.1], ['alpha0', { toString() { throw new Error('x'); } }], 'junk', [1n, 2n]]));
+  const { rejected } = parsePairs(
+    /** @type {any} */ ([
+      [Symbol('s'), '1'],
+      ['gamma0', 0.1],
+      [
+        'alpha0',
+        {
+          toString() {
+            throw new Error('x');
+          },
+        },
+      ],
+      'junk',
+      [1n, 2n],
+    ]),
+  );
   assert.equal(rejected.length, 5);
   assert.match(rejected[1].why, /expected text/);
   assert.equal(rejected[1].key, 'gamma0');
@@ -130,12 +228,39 @@ test('shortKey keeps whole code points and hides control characters', () => {
 /** A random hostile message value (structured-clone-able, as postMessage delivers). */
 function hostileValue(r, depth = 0) {
   const kinds = [
-    () => undefined, () => null, () => NaN, () => Infinity, () => -0, () => 2 ** 53, () => 1e308, () => (r() - 0.5) * 100,
-    () => true, () => 10n, () => '', () => randomValue(r), () => 'x'.repeat(2e6), () => [], () => new Array(1e6).fill('controls'),
-    () => ['controls', 'numbers'], () => [1, 2], () => new Float64Array(8), () => new Map([['gamma0', 0.1]]), () => new Date(0),
-    () => ({}), () => { const o = { a: 1 }; o.self = o; return o; }, () => Object.create(null),
+    () => undefined,
+    () => null,
+    () => NaN,
+    () => Infinity,
+    () => -0,
+    () => 2 ** 53,
+    () => 1e308,
+    () => (r() - 0.5) * 100,
+    () => true,
+    () => 10n,
+    () => '',
+    () => randomValue(r),
+    () => 'x'.repeat(2e6),
+    () => [],
+    () => new Array(1e6).fill('controls'),
+    () => ['controls', 'numbers'],
+    () => [1, 2],
+    () => new Float64Array(8),
+    () => new Map([['gamma0', 0.1]]),
+    () => new Date(0),
+    () => ({}),
+    () => {
+      const o = { a: 1 };
+      o.self = o;
+      return o;
+    },
+    () => Object.create(null),
   ];
-  if (depth < 2) kinds.push(() => ({ gamma0: hostileValue(r, depth + 1), nested: [hostileValue(r, depth + 1)] }), () => [hostileValue(r, depth + 1)]);
+  if (depth < 2)
+    kinds.push(
+      () => ({ gamma0: hostileValue(r, depth + 1), nested: [hostileValue(r, depth + 1)] }),
+      () => [hostileValue(r, depth + 1)],
+    );
   return kinds[Math.floor(r() * kinds.length)]();
 }
 
@@ -143,7 +268,11 @@ test('random hostile postMessage payloads: nothing throws, every refusal names i
   const r = prng(4242);
   let errors = 0;
   for (let i = 0; i < 3000; i++) {
-    const d = { type: 'wingbeat:set', version: r() < 0.8 ? API_VERSION : hostileValue(r), id: r() < 0.7 ? i : hostileValue(r) };
+    const d = {
+      type: 'wingbeat:set',
+      version: r() < 0.8 ? API_VERSION : hostileValue(r),
+      id: r() < 0.7 ? i : hostileValue(r),
+    };
     const env = checkEnvelope(d);
     if (env.error) {
       errors++;
@@ -178,7 +307,16 @@ test('random hostile postMessage payloads: nothing throws, every refusal names i
 
 test('message envelopes and params that used to throw or mislead are refused by field', () => {
   // a BigInt or cyclic version made JSON.stringify throw inside the message handler
-  for (const v of [10n, (() => { const o = {}; o.o = o; return o; })(), Symbol.for('x').description, undefined]) {
+  for (const v of [
+    10n,
+    (() => {
+      const o = {};
+      o.o = o;
+      return o;
+    })(),
+    Symbol.for('x').description,
+    undefined,
+  ]) {
     const env = checkEnvelope({ type: 'wingbeat:get', version: v });
     assert.equal(env.error.field, 'version');
     assert.match(env.error.message, /^version: this lab speaks version 1/);
@@ -189,11 +327,21 @@ test('message envelopes and params that used to throw or mislead are refused by 
   const p = paramPairs(JSON.parse('{"toString": 1, "constructor": "x", "__proto__": 2, "gamma0": 0.1}'));
   assert.deepEqual(p.errors, []);
   const parsed = parsePairs(p.pairs);
-  assert.deepEqual(parsed.rejected.map((x) => [x.key, x.why]), [['toString', 'unknown parameter'], ['constructor', 'unknown parameter'], ['__proto__', 'unknown parameter']]);
+  assert.deepEqual(
+    parsed.rejected.map((x) => [x.key, x.why]),
+    [
+      ['toString', 'unknown parameter'],
+      ['constructor', 'unknown parameter'],
+      ['__proto__', 'unknown parameter'],
+    ],
+  );
   assert.equal(parsed.state.gamma0, 0.1);
   // a non-finite number is "expected a finite number", not "expected a number"
   const nan = paramPairs({ gamma0: NaN, alpha0: Infinity, embed: 1 });
-  assert.deepEqual(nan.errors.map((e) => e.field), ['gamma0', 'alpha0', 'embed']);
+  assert.deepEqual(
+    nan.errors.map((e) => e.field),
+    ['gamma0', 'alpha0', 'embed'],
+  );
   assert.match(nan.errors[0].message, /^gamma0: expected a finite number; got the number NaN/);
   // huge lists and non-plain objects
   assert.equal(paramPairs({ panels: new Array(1e6).fill('controls') }).errors[0].field, 'panels');
@@ -202,7 +350,17 @@ test('message envelopes and params that used to throw or mislead are refused by 
     assert.equal(r.fatal, true);
     assert.equal(r.errors[0].field, 'params');
   }
-  assert.equal(paramPairs(Object.fromEntries(Array.from({ length: 41 }, (_, i) => [`k${i}`, 1]))).errors[0].field, 'params');
-  assert.deepEqual(paramPairs({ gamma0: 0.1, panels: ['controls', 'numbers'] }), { pairs: [['gamma0', '0.1'], ['panels', 'controls,numbers']], errors: [], fatal: false });
+  assert.equal(
+    paramPairs(Object.fromEntries(Array.from({ length: 41 }, (_, i) => [`k${i}`, 1]))).errors[0].field,
+    'params',
+  );
+  assert.deepEqual(paramPairs({ gamma0: 0.1, panels: ['controls', 'numbers'] }), {
+    pairs: [
+      ['gamma0', '0.1'],
+      ['panels', 'controls,numbers'],
+    ],
+    errors: [],
+    fatal: false,
+  });
   assert.ok(defaults());
 });

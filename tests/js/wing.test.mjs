@@ -21,7 +21,10 @@ async function loadReal() {
 test('the wing table has the core’s keys, ranges and steps (the lab’s own defaults aside)', async () => {
   const wb = await loadReal();
   const core = wb.wingParameters();
-  assert.deepEqual(WING.map((w) => w.core), core.map((c) => c.key));
+  assert.deepEqual(
+    WING.map((w) => w.core),
+    core.map((c) => c.key),
+  );
   for (const w of WING) {
     const c = core.find((q) => q.key === w.core);
     assert.equal(w.min, c.min, `${w.key}.min`);
@@ -32,10 +35,29 @@ test('the wing table has the core’s keys, ranges and steps (the lab’s own de
 
 test('the wing input through wasm wingInput equals the plain mapping (own outline, strip clamp, automatic mesh)', async () => {
   const wb = await loadReal();
-  const e = createEngine({ load: async () => wb, createWorker: () => /** @type {any} */ ({ postMessage() {}, terminate() {} }) });
+  const e = createEngine({
+    load: async () => wb,
+    createWorker: () => /** @type {any} */ ({ postMessage() {}, terminate() {} }),
+  });
   await e.load();
-  const p = { ...defaults(), camber: 0.07, clamp: 1.5, e_pa: 2e9, rho: 1200, nu: 0.35, thickness_um: 50, mesh_mm: 0, n_modes: 6 };
-  const pts = [[0, -4], [20, -3.5], [22, -2], [20, -0.3], [0, 0]];
+  const p = {
+    ...defaults(),
+    camber: 0.07,
+    clamp: 1.5,
+    e_pa: 2e9,
+    rho: 1200,
+    nu: 0.35,
+    thickness_um: 50,
+    mesh_mm: 0,
+    n_modes: 6,
+  };
+  const pts = [
+    [0, -4],
+    [20, -3.5],
+    [22, -2],
+    [20, -0.3],
+    [0, 0],
+  ];
   const core = e.wingInput(p, pts);
   const plain = plainWingInput(p, pts);
   for (const k of ['camber', 'clamp', 'material', 'n_modes', 'planform_mm']) assert.deepEqual(core[k], plain[k], k);

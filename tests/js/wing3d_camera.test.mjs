@@ -9,12 +9,15 @@ import * as S from '../../www/scene3d.js';
 
 // A flat rectangular "wing": span 0.05 m along x, chord 0.02 m toward −y, on a 11 × 5 grid.
 function wing() {
-  const nodes = [], tris = [];
+  const nodes = [],
+    tris = [];
   for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
-  for (let i = 0; i < 10; i++) for (let j = 0; j < 4; j++) {
-    const a = i * 5 + j, b = a + 5;
-    tris.push(a, b, a + 1, b, b + 1, a + 1);
-  }
+  for (let i = 0; i < 10; i++)
+    for (let j = 0; j < 4; j++) {
+      const a = i * 5 + j,
+        b = a + 5;
+      tris.push(a, b, a + 1, b, b + 1, a + 1);
+    }
   return { nodes: Float64Array.from(nodes), triangles: Uint32Array.from(tris) };
 }
 
@@ -25,13 +28,32 @@ function fakeView(span) {
   const asArray = (c) => Float64Array.of(...c.target, c.yaw, c.pitch, c.distance);
   return {
     calls,
-    get cam() { return cam; },
-    setCamera(tx, ty, tz, yaw, pitch, distance) { calls.setCamera++; cam = { ...cam, target: [tx, ty, tz], yaw, pitch, distance }; },
+    get cam() {
+      return cam;
+    },
+    setCamera(tx, ty, tz, yaw, pitch, distance) {
+      calls.setCamera++;
+      cam = { ...cam, target: [tx, ty, tz], yaw, pitch, distance };
+    },
     // the renderer's fit moves its camera: same direction, the stroke fitted by distance (here: the page's own fitDistance)
-    fitPoints(pts, margin) { calls.fitPoints++; cam = { ...cam, distance: S.fitDistance(cam, pts, 640, 480, margin / 2) }; return asArray(cam); },
-    orbit(dx, dy) { calls.orbit.push([dx, dy]); cam = S.orbit(cam, dx, dy); },
-    zoom(f) { calls.zoom.push(f); cam = S.zoom(cam, f); },
-    key(k) { const c = S.key(cam, k); if (c) cam = c; return !!c; },
+    fitPoints(pts, margin) {
+      calls.fitPoints++;
+      cam = { ...cam, distance: S.fitDistance(cam, pts, 640, 480, margin / 2) };
+      return asArray(cam);
+    },
+    orbit(dx, dy) {
+      calls.orbit.push([dx, dy]);
+      cam = S.orbit(cam, dx, dy);
+    },
+    zoom(f) {
+      calls.zoom.push(f);
+      cam = S.zoom(cam, f);
+    },
+    key(k) {
+      const c = S.key(cam, k);
+      if (c) cam = c;
+      return !!c;
+    },
   };
 }
 
@@ -64,7 +86,9 @@ test('a pointer up within 4 px of its down is a click; the wheel zooms out for p
 
 test('strokePoses samples one flap period of the run', () => {
   const n = 400;
-  const alpha = Float64Array.from({ length: n }, (_, i) => i), beta = alpha.map((v) => -v), gamma = alpha.map((v) => 2 * v);
+  const alpha = Float64Array.from({ length: n }, (_, i) => i),
+    beta = alpha.map((v) => -v),
+    gamma = alpha.map((v) => 2 * v);
   const result = { angles: { alpha, beta, gamma }, analysis: { sim: { sample_rate_hz: 1000, flap_freq_hz: 25 } } };
   const ps = C.strokePoses(result, 32);
   assert.equal(ps.length, 32);

@@ -8,7 +8,20 @@ import * as F from '../../www/wing3d/fields.js';
 import * as S from '../../www/scene3d.js';
 
 /** A run at 25 Hz whose mode 0 beats every `period` s (null: no beat). */
-const run = (period) => ({ k: 0, analysis: { sim: { flap_freq_hz: 25, modes: [{ freq_hz: 60, floquet: { beat_harmonic: 2, effective_freq_hz: 50.5, beat_period_s: period, stable: true, max_modulus: 1 } }] } } });
+const run = (period) => ({
+  k: 0,
+  analysis: {
+    sim: {
+      flap_freq_hz: 25,
+      modes: [
+        {
+          freq_hz: 60,
+          floquet: { beat_harmonic: 2, effective_freq_hz: 50.5, beat_period_s: period, stable: true, max_modulus: 1 },
+        },
+      ],
+    },
+  },
+});
 
 test('speeds: one flap per second, one beat in 4 s (a flap per second without a beat), or a fixed factor', () => {
   assert.equal(T.speedFactor('flap1', run(2)), 1 / 25);
@@ -21,15 +34,26 @@ test('speeds: one flap per second, one beat in 4 s (a flap per second without a 
 });
 
 test('status and deflection lines: mm and share of the span for the FE wing, paper units otherwise', () => {
-  assert.equal(T.statusLine('webgl2', 3142, [-0.7391, -0.4624, -0.1851], true, 0.01493, 1),
-    'WebGL2 · 3142 triangles · α -0.739, β -0.462, γ -0.185 rad · true largest deflection 14.9 mm, drawn ×1');
-  assert.match(T.statusLine('webgpu', 10, [0, 0, 0], false, 0.5, 10), /^WebGPU · .*largest deflection 500 \(paper q units, not SI\), drawn ×10$/);
+  assert.equal(
+    T.statusLine('webgl2', 3142, [-0.7391, -0.4624, -0.1851], true, 0.01493, 1),
+    'WebGL2 · 3142 triangles · α -0.739, β -0.462, γ -0.185 rad · true largest deflection 14.9 mm, drawn ×1',
+  );
+  assert.match(
+    T.statusLine('webgpu', 10, [0, 0, 0], false, 0.5, 10),
+    /^WebGPU · .*largest deflection 500 \(paper q units, not SI\), drawn ×10$/,
+  );
   const nodes = Float64Array.of(0, 0, 0, 0.049, -0.01, 0);
-  assert.equal(T.deflectionText(0.0197, true, nodes), 'Largest deflection over the whole run: 19.7 mm (true scale, SI), about 40 % of the 49 mm span.');
+  assert.equal(
+    T.deflectionText(0.0197, true, nodes),
+    'Largest deflection over the whole run: 19.7 mm (true scale, SI), about 40 % of the 49 mm span.',
+  );
   assert.match(T.deflectionText(0.0197, false, nodes), /^Paper mode set: .*not mm/);
   assert.equal(T.deflectionText(null, true, nodes), '');
   assert.match(T.noteText(true, 'rect', 1653, 6), /\(rect; 1653 nodes\) with all 6 of its modes/);
-  assert.match(T.summaryText(0.25, [0.1, 0.2, 0.3], 0.002, true, 0.01, 'legend'), /^Wing at t = 0\.2500 s: .*deflection now 2 mm, largest over the run 10\. legend$/);
+  assert.match(
+    T.summaryText(0.25, [0.1, 0.2, 0.3], 0.002, true, 0.01, 'legend'),
+    /^Wing at t = 0\.2500 s: .*deflection now 2 mm, largest over the run 10\. legend$/,
+  );
 });
 
 test('the colour limit: the map’s own (5), 1 for detectability (6), the run’s range (1–4), else none', () => {
@@ -45,15 +69,42 @@ test('the colour limit: the map’s own (5), 1 for detectability (6), the run’
 
 /** An FE wing of 4 nodes with one mode, a run of it, and a stand-in WingView that logs uploads. */
 function setting(colour) {
-  const fe = { nodes: new Float64Array(12), n_nodes: 4, strain_nodes: Float64Array.from({ length: 12 }, (_, j) => (j % 3 === 0 ? j + 1 : 0)), shapes: new Float64Array(4) };
+  const fe = {
+    nodes: new Float64Array(12),
+    n_nodes: 4,
+    strain_nodes: Float64Array.from({ length: 12 }, (_, j) => (j % 3 === 0 ? j + 1 : 0)),
+    shapes: new Float64Array(4),
+  };
   const result = { cfg: { a: 1 }, analysis: { sim: { modes: [{ q: { total: Float64Array.of(1, -2, 0.5) } }] } } };
-  const sense = { fe, n_nodes: 4, field: Float64Array.of(0, 0.5, 1, 0.25), cfg_json: JSON.stringify(result.cfg), sensors: [] };
+  const sense = {
+    fe,
+    n_nodes: 4,
+    field: Float64Array.of(0, 0.5, 1, 0.25),
+    cfg_json: JSON.stringify(result.cfg),
+    sensors: [],
+  };
   let state = { modes: 'fe', result, sense_map: sense, strain_map: { component: 'eps_x', stat: 'rms' } };
-  const store = { get: () => state, set: (p) => { state = { ...state, ...p }; } };
-  const uploads = [], limits = [];
-  const view = { setNodeField: (f, lim) => uploads.push([Array.from(f), lim]), set_strain_range: (l) => limits.push(l) };
+  const store = {
+    get: () => state,
+    set: (p) => {
+      state = { ...state, ...p };
+    },
+  };
+  const uploads = [],
+    limits = [];
+  const view = {
+    setNodeField: (f, lim) => uploads.push([Array.from(f), lim]),
+    set_strain_range: (l) => limits.push(l),
+  };
   const c = { colour };
-  const fields = F.createFields({ store, engine: {}, view: () => view, fe: () => fe, colour: () => c.colour, draw() {} });
+  const fields = F.createFields({
+    store,
+    engine: {},
+    view: () => view,
+    fe: () => fe,
+    colour: () => c.colour,
+    draw() {},
+  });
   return { fe, result, sense, store, uploads, limits, fields, c };
 }
 
@@ -88,7 +139,9 @@ test('colour 5 uploads the run’s strain map with the strain panel’s limit; t
   const rms = Math.sqrt(5.25 / 3);
   const want = [1, 4, 7, 10].map((e) => e * rms);
   assert.equal(s.uploads.length, 1);
-  s.uploads[0][0].forEach((v, i) => assert.ok(Math.abs(v - want[i]) < 1e-12, `node ${i}`));
+  s.uploads[0][0].forEach((v, i) => {
+    assert.ok(Math.abs(v - want[i]) < 1e-12, `node ${i}`);
+  });
   assert.equal(s.uploads[0][1], S.mapLimit(Float64Array.from(want)));
   assert.equal(s.limits[0], s.uploads[0][1]);
   assert.equal(s.fields.legendInfo().fieldLabel, 'RMS over the run of ε_x, spanwise strain');

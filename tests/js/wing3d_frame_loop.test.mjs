@@ -30,21 +30,49 @@ test('the frame gate draws every frame at 60 Hz and ≤ 1 per 30 ms once frames 
 function rig({ playing = true, t3d = 0.5 } = {}) {
   let state = { playing, t3d };
   const sets = [];
-  const store = { get: () => state, set: (p) => { sets.push(p); state = { ...state, ...p }; } };
+  const store = {
+    get: () => state,
+    set: (p) => {
+      sets.push(p);
+      state = { ...state, ...p };
+    },
+  };
   const box = { dataset: {} };
   let queue = [];
   let nextId = 1;
   let clock = 0;
   const listeners = {};
-  const doc = { hidden: false, addEventListener: (k, f) => { listeners[k] = f; }, removeEventListener: (k) => { delete listeners[k]; } };
+  const doc = {
+    hidden: false,
+    addEventListener: (k, f) => {
+      listeners[k] = f;
+    },
+    removeEventListener: (k) => {
+      delete listeners[k];
+    },
+  };
   const env = {
-    raf: (f) => { const id = nextId++; queue.push({ id, f }); return id; },
-    caf: (id) => { queue = queue.filter((q) => q.id !== id); },
+    raf: (f) => {
+      const id = nextId++;
+      queue.push({ id, f });
+      return id;
+    },
+    caf: (id) => {
+      queue = queue.filter((q) => q.id !== id);
+    },
     now: () => clock,
     doc,
   };
   const drawn = [];
-  const loop = F.createFrameLoop({ box, store, ready: () => true, draw: (t) => drawn.push(t), speed: () => 0.01, duration: () => 2, env });
+  const loop = F.createFrameLoop({
+    box,
+    store,
+    ready: () => true,
+    draw: (t) => drawn.push(t),
+    speed: () => 0.01,
+    duration: () => 2,
+    env,
+  });
   /** Runs the pending animation frames every `dt` ms until `until`. */
   const run = (until, dt = 16) => {
     while (clock + dt <= until && queue.length) {
@@ -100,7 +128,20 @@ test('the loop does not start without a view or while not playing', () => {
   assert.equal(r.pending(), 0);
   assert.equal(r.box.dataset.loop, undefined);
   const box = { dataset: {} };
-  const none = F.createFrameLoop({ box, store: { get: () => ({ playing: true }), set() {} }, ready: () => false, draw() {}, speed: () => 1, duration: () => 1, env: { raf: () => 1, caf() {}, now: () => 0, doc: { hidden: false, addEventListener() {}, removeEventListener() {} } } });
+  const none = F.createFrameLoop({
+    box,
+    store: { get: () => ({ playing: true }), set() {} },
+    ready: () => false,
+    draw() {},
+    speed: () => 1,
+    duration: () => 1,
+    env: {
+      raf: () => 1,
+      caf() {},
+      now: () => 0,
+      doc: { hidden: false, addEventListener() {}, removeEventListener() {} },
+    },
+  });
   none.start();
   assert.equal(box.dataset.loop, undefined);
 });

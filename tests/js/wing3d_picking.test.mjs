@@ -8,12 +8,15 @@ import * as S from '../../www/scene3d.js';
 // A flat rectangular "wing": span 0.05 m along x, chord 0.02 m toward −y, on a 11 × 5 grid; one
 // mode whose shape is the node's x (a bending-like deflection growing to the tip).
 function wing() {
-  const nodes = [], tris = [];
+  const nodes = [],
+    tris = [];
   for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
-  for (let i = 0; i < 10; i++) for (let j = 0; j < 4; j++) {
-    const a = i * 5 + j, b = a + 5;
-    tris.push(a, b, a + 1, b, b + 1, a + 1);
-  }
+  for (let i = 0; i < 10; i++)
+    for (let j = 0; j < 4; j++) {
+      const a = i * 5 + j,
+        b = a + 5;
+      tris.push(a, b, a + 1, b, b + 1, a + 1);
+    }
   const n = nodes.length / 3;
   const shapes = Float64Array.from({ length: n }, (_, i) => nodes[3 * i]);
   return { nodes: Float64Array.from(nodes), triangles: Uint32Array.from(tris), shapes };
@@ -23,7 +26,10 @@ function wing() {
 function topView(nodes) {
   const n = nodes.length / 3;
   const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) { xy[2 * i] = nodes[3 * i] * 1e4; xy[2 * i + 1] = -nodes[3 * i + 1] * 1e4; }
+  for (let i = 0; i < n; i++) {
+    xy[2 * i] = nodes[3 * i] * 1e4;
+    xy[2 * i + 1] = -nodes[3 * i + 1] * 1e4;
+  }
   return { xy, depth: new Float64Array(n).fill(1) };
 }
 
@@ -54,7 +60,10 @@ test('a planform point is drawn at its barycentric place among the drawn nodes (
   // any affine screen map is reproduced exactly by the weights
   const n = fe.nodes.length / 3;
   const xy = new Float64Array(2 * n);
-  for (let i = 0; i < n; i++) { xy[2 * i] = 1000 * fe.nodes[3 * i] + 5; xy[2 * i + 1] = 2000 * fe.nodes[3 * i + 1] + 300; }
+  for (let i = 0; i < n; i++) {
+    xy[2 * i] = 1000 * fe.nodes[3 * i] + 5;
+    xy[2 * i + 1] = 2000 * fe.nodes[3 * i + 1] + 300;
+  }
   const at = P.drawnAt(hit, { xy });
   assert.ok(Math.abs(at[0] - 17.3) < 1e-9 && Math.abs(at[1] - 291) < 1e-9, `${at}`);
   assert.equal(hits(fe, 60, -5), null, 'past the tip');
@@ -65,8 +74,19 @@ test('a planform point is drawn at its barycentric place among the drawn nodes (
 test('screenNodes and sensorPoints draw nodes where projectNodes does (pose, deflection, camera)', () => {
   const fe = wing();
   const n = fe.nodes.length / 3;
-  const alpha = Float64Array.of(0, 0.3, 0.6), beta = Float64Array.of(0, -0.2, -0.4), gamma = Float64Array.of(0, 0.1, 0.2);
-  const result = { angles: { alpha, beta, gamma }, analysis: { sim: { t: Float64Array.of(0, 0.001, 0.002), sample_rate_hz: 1000, modes: [{ q: { total: Float64Array.of(0, 0.2, 0.4) } }] } } };
+  const alpha = Float64Array.of(0, 0.3, 0.6),
+    beta = Float64Array.of(0, -0.2, -0.4),
+    gamma = Float64Array.of(0, 0.1, 0.2);
+  const result = {
+    angles: { alpha, beta, gamma },
+    analysis: {
+      sim: {
+        t: Float64Array.of(0, 0.001, 0.002),
+        sample_rate_hz: 1000,
+        modes: [{ q: { total: Float64Array.of(0, 0.2, 0.4) } }],
+      },
+    },
+  };
   const cam = S.defaultCamera(0.05);
   assert.equal(P.screenNodes(fe, result, null, 0.001, 1, 640, 480), null, 'no camera yet');
   assert.equal(P.screenNodes(fe, { analysis: result.analysis }, cam, 0.001, 1, 640, 480), null, 'no angles yet');
@@ -76,15 +96,42 @@ test('screenNodes and sensorPoints draw nodes where projectNodes does (pose, def
   const ref = S.projectNodes(fe.nodes, fe.shapes, [0.2], 3, [0.3, -0.2, 0.1], cam, 640, 480);
   assert.deepEqual(sn.proj.xy, ref.xy);
   const tip = n - 1; // (0.05, −0.02): deflected by 3 · 0.05 · 0.2 = 0.03 m
-  const pts = P.sensorPoints(fe, [{ node: tip, rank: 1 }, { node: 0, rank: 2 }], sn.ang, sn.q, 3, cam, 640, 480);
-  assert.deepEqual(pts.map((p) => p.rank), [1, 2]);
+  const pts = P.sensorPoints(
+    fe,
+    [
+      { node: tip, rank: 1 },
+      { node: 0, rank: 2 },
+    ],
+    sn.ang,
+    sn.q,
+    3,
+    cam,
+    640,
+    480,
+  );
+  assert.deepEqual(
+    pts.map((p) => p.rank),
+    [1, 2],
+  );
   assert.ok(Math.abs(pts[0].x - ref.xy[2 * tip]) < 1e-9 && Math.abs(pts[0].y - ref.xy[2 * tip + 1]) < 1e-9);
   assert.ok(Math.abs(pts[1].x - ref.xy[0]) < 1e-9 && Math.abs(pts[1].y - ref.xy[1]) < 1e-9);
   const flat = P.sensorPoints(fe, [{ node: tip, rank: 1 }], sn.ang, sn.q, 0, cam, 640, 480)[0];
   assert.ok(Math.hypot(flat.x - pts[0].x, flat.y - pts[0].y) > 5, 'the deflection moves the sensor on screen');
   // a camera at x = 10 mm looking toward −x: the tip (x = 50 mm) is behind the eye, the root in front
   const near = { target: [0, 0, 0], yaw: 0, pitch: 0, distance: 0.01, fov: cam.fov };
-  const [tipPt, rootPt] = P.sensorPoints(fe, [{ node: tip, rank: 1 }, { node: 0, rank: 2 }], [0, 0, 0], [0], 0, near, 640, 480);
+  const [tipPt, rootPt] = P.sensorPoints(
+    fe,
+    [
+      { node: tip, rank: 1 },
+      { node: 0, rank: 2 },
+    ],
+    [0, 0, 0],
+    [0],
+    0,
+    near,
+    640,
+    480,
+  );
   assert.ok(Number.isNaN(tipPt.x) && Number.isNaN(tipPt.y));
   assert.ok(Math.abs(rootPt.x - 320) < 1e-9 && Math.abs(rootPt.y - 240) < 1e-9, 'the target is drawn at the centre');
 });

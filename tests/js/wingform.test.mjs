@@ -3,7 +3,15 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { WING } from '../../www/state.js';
-import { SHOW, clean, readWingValue, matchingPreset, outlineBox, insertMidpoint, editedLabel } from '../../www/wingform.js';
+import {
+  SHOW,
+  clean,
+  readWingValue,
+  matchingPreset,
+  outlineBox,
+  insertMidpoint,
+  editedLabel,
+} from '../../www/wingform.js';
 import { looksLikeModes, feFromModesDocument } from '../../www/modesdoc.js';
 
 const row = (key) => WING.find((w) => w.key === key);
@@ -15,8 +23,11 @@ test('every wing parameter has a display rule', () => {
 test('a typed wing value is read in the core’s unit (E typed in GPa), and refused with its range outside it', () => {
   const e = row('e_pa');
   assert.deepEqual(readWingValue(e, '13.11'), { value: 1.311e10 });
-  const low = readWingValue(e, String(e.min * 1e-9 / 2));
-  assert.ok('error' in low && low.error.startsWith('Young’s modulus E: expected a number in [') && low.error.endsWith('GPa.'), JSON.stringify(low));
+  const low = readWingValue(e, String((e.min * 1e-9) / 2));
+  assert.ok(
+    'error' in low && low.error.startsWith('Young’s modulus E: expected a number in [') && low.error.endsWith('GPa.'),
+    JSON.stringify(low),
+  );
   for (const bad of ['', ' ', 'x', String(e.max * 1e-9 * 2)]) assert.ok('error' in readWingValue(e, bad), bad);
   // the ends of the range are accepted
   assert.ok('value' in readWingValue(e, String(clean(e.min * 1e-9))));
@@ -26,7 +37,10 @@ test('a typed wing value is read in the core’s unit (E typed in GPa), and refu
   const frac = readWingValue(n, String(n.min + 0.5));
   assert.ok('error' in frac && frac.error.includes('a whole number'));
   const mesh = readWingValue(row('mesh_mm'), '-1');
-  assert.ok('error' in mesh && /mm\.$/.test(mesh.error) && !mesh.error.includes('automatic'), 'the unit without its note');
+  assert.ok(
+    'error' in mesh && /mm\.$/.test(mesh.error) && !mesh.error.includes('automatic'),
+    'the unit without its note',
+  );
 });
 
 test('the preset that matches the material parameters, to 1e-9 relative; none for a custom material', () => {
@@ -42,18 +56,36 @@ test('the preset that matches the material parameters, to 1e-9 relative; none fo
 });
 
 test('the outline’s drawing box: bounds in SVG coordinates (y down) with a 6 % margin', () => {
-  const b = outlineBox([[0, 0], [40, -2], [30, -20], [0, -12]]);
+  const b = outlineBox([
+    [0, 0],
+    [40, -2],
+    [30, -20],
+    [0, -12],
+  ]);
   assert.equal(b.w, 40);
   assert.equal(b.h, 20);
   assert.equal(b.scale, 40);
   const [x, y, w, h] = b.viewBox.split(' ').map(Number);
-  assert.ok(Math.abs(x + 2.4) < 1e-12 && Math.abs(y + 2.4) < 1e-12 && Math.abs(w - 44.8) < 1e-12 && Math.abs(h - 24.8) < 1e-12, b.viewBox);
+  assert.ok(
+    Math.abs(x + 2.4) < 1e-12 && Math.abs(y + 2.4) < 1e-12 && Math.abs(w - 44.8) < 1e-12 && Math.abs(h - 24.8) < 1e-12,
+    b.viewBox,
+  );
   // a degenerate outline still has a finite box
-  assert.ok(outlineBox([[1, 1], [1, 1], [1, 1]]).scale > 0);
+  assert.ok(
+    outlineBox([
+      [1, 1],
+      [1, 1],
+      [1, 1],
+    ]).scale > 0,
+  );
 });
 
 test('a point added halfway to the next one (the last wraps to the first), to 0.001 mm', () => {
-  const pts = [[0, 0], [10, 0.0005], [10, -10]];
+  const pts = [
+    [0, 0],
+    [10, 0.0005],
+    [10, -10],
+  ];
   insertMidpoint(pts, 0);
   assert.deepEqual(pts[1], [5, 0]);
   assert.equal(pts.length, 4);
@@ -82,16 +114,27 @@ test('a read modes document becomes the lab’s FE wing: typed arrays, per-mode 
   const nodes = [0, 0, 0, 0.01, 0, 0, 0, -0.01, 0];
   const sn = [1, 0, 0, 0, 2, 0, 0, 0, 3];
   const strains = [{ point: 'P', eps_x: 1 / 3, eps_y: 2 / 3, gamma_xy: 1 }];
-  const r = { modes: [{ name: 'bending', freq_hz: 20, strains }], fe: { nodes, triangles: [0, 1, 2], shapes: [0, 0, 1, 0, 0, 1, 0, 0, 1], strain_nodes: sn } };
+  const r = {
+    modes: [{ name: 'bending', freq_hz: 20, strains }],
+    fe: { nodes, triangles: [0, 1, 2], shapes: [0, 0, 1, 0, 0, 1, 0, 0, 1], strain_nodes: sn },
+  };
   const fe = feFromModesDocument(r, '{"modes":[]}');
-  assert.ok(fe.nodes instanceof Float64Array && fe.triangles instanceof Uint32Array && fe.shapes instanceof Float64Array && fe.strain_nodes instanceof Float64Array);
+  assert.ok(
+    fe.nodes instanceof Float64Array &&
+      fe.triangles instanceof Uint32Array &&
+      fe.shapes instanceof Float64Array &&
+      fe.strain_nodes instanceof Float64Array,
+  );
   assert.deepEqual(Array.from(fe.freq_hz), [20]);
   assert.deepEqual(fe.kinds, ['bending']);
   assert.equal(fe.n_modes, 1);
   assert.equal(fe.n_nodes, 3);
   assert.equal(fe.imported, true);
   assert.equal(fe.modes_json, '{"modes":[]}');
-  assert.ok(Math.abs(fe.strain_point_mm[0] - 10 / 3) < 1e-6 && Math.abs(fe.strain_point_mm[1] + 10 / 3) < 1e-6, JSON.stringify(fe.strain_point_mm));
+  assert.ok(
+    Math.abs(fe.strain_point_mm[0] - 10 / 3) < 1e-6 && Math.abs(fe.strain_point_mm[1] + 10 / 3) < 1e-6,
+    JSON.stringify(fe.strain_point_mm),
+  );
   // no strains: no point; no mesh: refused
   assert.equal(feFromModesDocument({ ...r, modes: [{ freq_hz: 20 }] }, '').strain_point_mm, undefined);
   assert.throws(() => feFromModesDocument({ modes: r.modes, fe: null }, ''), /no FE mesh/);

@@ -93,7 +93,9 @@ export function createWings({ initial, solve, size = FE_CACHE }) {
       });
       const entry = { id: job.id, promise };
       pending.set(key, entry);
-      const settle = () => { if (pending.get(key) === entry) pending.delete(key); };
+      const settle = () => {
+        if (pending.get(key) === entry) pending.delete(key);
+      };
       promise.then(settle, settle);
       return entry;
     },
@@ -143,6 +145,9 @@ export function createPointStrains(strainsAt) {
     const key = `${point[0]},${point[1]}`;
     if (!memo || memo.fe !== fe || memo.key !== key) memo = { fe, key, strains: strainsAt(fe, [point[0], point[1]]) };
     const st = memo.strains;
-    return fe.modes.map((m, k) => ({ ...m, strains: [{ point: 'S', eps_x: st[k].eps_x, eps_y: st[k].eps_y, gamma_xy: st[k].gamma_xy }] }));
+    return fe.modes.map((m, k) => ({
+      ...m,
+      strains: [{ point: 'S', eps_x: st[k].eps_x, eps_y: st[k].eps_y, gamma_xy: st[k].gamma_xy }],
+    }));
   };
 }

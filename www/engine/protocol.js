@@ -48,8 +48,19 @@ export function readRequest(data) {
 }
 
 export const readyMessage = () => ({ ready: true });
-export const progressMessage = (/** @type {unknown} */ id, /** @type {number} */ done, /** @type {number} */ total) => ({ id, progress: [done, total] });
-export const resultMessage = (/** @type {unknown} */ id, /** @type {unknown} */ result, /** @type {number} */ ms) => ({ id, result, ms });
+export const progressMessage = (
+  /** @type {unknown} */ id,
+  /** @type {number} */ done,
+  /** @type {number} */ total,
+) => ({
+  id,
+  progress: [done, total],
+});
+export const resultMessage = (/** @type {unknown} */ id, /** @type {unknown} */ result, /** @type {number} */ ms) => ({
+  id,
+  result,
+  ms,
+});
 export const errorMessage = (/** @type {unknown} */ id, /** @type {string} */ error) => ({ id, error });
 
 /**

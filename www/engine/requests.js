@@ -15,7 +15,15 @@ import { JOB, jobMessage, readReply } from './protocol.js';
 export const LIVE_SEGMENT_LEN = 8192;
 
 /** The slider keys that custom kinematics replace (the table is the whole stroke). */
-export const STROKE_KEYS = Object.freeze(['alpha0', 'beta0', 'gamma0', 'alpha_phase', 'beta_phase', 'gamma_phase', 'flap_hz']);
+export const STROKE_KEYS = Object.freeze([
+  'alpha0',
+  'beta0',
+  'gamma0',
+  'alpha_phase',
+  'beta_phase',
+  'gamma_phase',
+  'flap_hz',
+]);
 
 /**
  * The overrides the core applies for URL parameters: every numeric parameter by key, less the
@@ -76,7 +84,9 @@ export function createLiveQueue({ start, here, fromWorker }) {
   function post(/** @type {LiveRequest<R>} */ req) {
     inflight = req;
     stats.posted++;
-    /** @type {Worker} */ (live).postMessage(jobMessage(req.seq, JOB.analyze, { cfg: req.cfg, opts: req.opts, k: req.k }));
+    /** @type {Worker} */ (live).postMessage(
+      jobMessage(req.seq, JOB.analyze, { cfg: req.cfg, opts: req.opts, k: req.k }),
+    );
   }
 
   /** Computes a request on the main thread (or resolves null when it is no longer the newest). */

@@ -19,7 +19,10 @@ let compiled = null;
 async function compileWasm(/** @type {URL} */ url) {
   const res = await fetch(url);
   if (!res.ok) throw new Error(`${url.pathname}: HTTP ${res.status}`);
-  if (typeof WebAssembly.compileStreaming === 'function' && (res.headers.get('content-type') || '').startsWith('application/wasm')) {
+  if (
+    typeof WebAssembly.compileStreaming === 'function' &&
+    (res.headers.get('content-type') || '').startsWith('application/wasm')
+  ) {
     return WebAssembly.compileStreaming(res);
   }
   return WebAssembly.compile(await res.arrayBuffer());
@@ -36,7 +39,9 @@ export function loadWasm() {
       return m;
     });
     shared = p;
-    p.catch(() => { shared = null; });
+    p.catch(() => {
+      shared = null;
+    });
     return p;
   }
   return shared;
@@ -57,7 +62,10 @@ let bootstrapUrl = null;
 export function defaultWorker() {
   const url = new URL('worker.js', WWW);
   if (typeof location === 'undefined' || url.origin === location.origin) return new Worker(url, { type: 'module' });
-  if (!bootstrapUrl) bootstrapUrl = URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};\n`], { type: 'text/javascript' }));
+  if (!bootstrapUrl)
+    bootstrapUrl = URL.createObjectURL(
+      new Blob([`import ${JSON.stringify(url.href)};\n`], { type: 'text/javascript' }),
+    );
   return new Worker(bootstrapUrl, { type: 'module' });
 }
 
@@ -78,7 +86,9 @@ export function startWorker(make, module) {
  */
 export function splitAngles(flat) {
   const n = Math.floor(flat.length / 3);
-  const alpha = new Float64Array(n), beta = new Float64Array(n), gamma = new Float64Array(n);
+  const alpha = new Float64Array(n),
+    beta = new Float64Array(n),
+    gamma = new Float64Array(n);
   for (let i = 0; i < n; i++) {
     alpha[i] = flat[3 * i];
     beta[i] = flat[3 * i + 1];

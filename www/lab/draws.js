@@ -58,7 +58,8 @@ export function createDraws({ store, section, live, rendered }) {
 
   /** Runs the queued redraws one task each, the panels on screen first; then `done`. */
   function drain(/** @type {() => void} */ done) {
-    const ch = port || (port = new MessageChannel());
+    if (!port) port = new MessageChannel();
+    const ch = port;
     // A measurement after each panel's redraw would force a layout every task: once per drain.
     const visible = ranker();
     const g = gen;
@@ -69,10 +70,14 @@ export function createDraws({ store, section, live, rendered }) {
         return;
       }
       // One panel per task, the most visible first (ties: the order they subscribed in).
-      let best = 0, bestV = 3;
+      let best = 0,
+        bestV = 3;
       for (let i = 0; i < queue.length; i++) {
         const v = visible(queue[i].name);
-        if (v < bestV) { best = i; bestV = v; }
+        if (v < bestV) {
+          best = i;
+          bestV = v;
+        }
       }
       const [e] = queue.splice(best, 1);
       try {
@@ -94,7 +99,10 @@ export function createDraws({ store, section, live, rendered }) {
 
   const startDrain = () => {
     drawing = true;
-    drain(() => { drawing = false; finish(); });
+    drain(() => {
+      drawing = false;
+      finish();
+    });
   };
 
   return {

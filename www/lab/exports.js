@@ -7,7 +7,8 @@ import { plain } from '../format.js';
 import { download, figurePNG, figureSVG, tablePNG, canvasPainter, context2d } from '../export.js';
 
 /** The figures' size in CSS pixels (PNG at 2×). */
-export const FIG_W = 900, FIG_H = 560;
+export const FIG_W = 900,
+  FIG_H = 560;
 
 /** @typedef {import('../lab.js').ExportReg} ExportReg */
 /** @typedef {{ name: string, kind: string, width?: number, height?: number, legend?: string[] }} ExportDone */
@@ -20,7 +21,8 @@ export const FIG_W = 900, FIG_H = 560;
  * @returns {Promise<{ blob: Blob | null, width: number, height: number }>}
  */
 function canvasPNG(title, params, src) {
-  const w = Math.max(600, src.width + 32), h = src.height + 90;
+  const w = Math.max(600, src.width + 32),
+    h = src.height + 90;
   const c = document.createElement('canvas');
   c.width = 2 * w;
   c.height = 2 * h;
@@ -60,16 +62,26 @@ export async function exportPanel(reg, name, kind, label, { notice, describe }) 
   if (kind === 'svg') {
     if (!fig) return nothing();
     const probe = canvasPainter(context2d(document.createElement('canvas')));
-    download(`wingbeat-${name}.svg`, new Blob([figureSVG(fig, FIG_W, FIG_H, (s, size) => probe.measure(s, size))], { type: 'image/svg+xml' }));
+    download(
+      `wingbeat-${name}.svg`,
+      new Blob([figureSVG(fig, FIG_W, FIG_H, (s, size) => probe.measure(s, size))], { type: 'image/svg+xml' }),
+    );
     return { name, kind };
   }
   let out;
   if (fig) out = await figurePNG(fig, FIG_W, FIG_H, 2);
   else if (reg.table && reg.table()) out = await tablePNG(plain(label), describe(), reg.table(), 2);
-  else if (reg.canvas && reg.canvas()) out = await canvasPNG(plain(label), describe(), /** @type {HTMLCanvasElement} */ (reg.canvas()));
+  else if (reg.canvas && reg.canvas())
+    out = await canvasPNG(plain(label), describe(), /** @type {HTMLCanvasElement} */ (reg.canvas()));
   else return nothing();
   download(`wingbeat-${name}.png`, out.blob);
-  return { name, kind, width: out.width, height: out.height, legend: fig ? fig.series.filter((s) => s.show !== false).map((s) => s.color) : [] };
+  return {
+    name,
+    kind,
+    width: out.width,
+    height: out.height,
+    legend: fig ? fig.series.filter((s) => s.show !== false).map((s) => s.color) : [],
+  };
 }
 
 /**
@@ -82,7 +94,13 @@ export async function exportPanel(reg, name, kind, label, { notice, describe }) 
  */
 export function exportButtons(name, label, kinds, onExport) {
   const box = el('span', { class: 'wl-export' });
-  const toggle = el('button', { type: 'button', class: 'wl-export-toggle', 'aria-expanded': 'false', 'aria-label': `Export ${plain(label)}…`, text: 'Export…' });
+  const toggle = el('button', {
+    type: 'button',
+    class: 'wl-export-toggle',
+    'aria-expanded': 'false',
+    'aria-label': `Export ${plain(label)}…`,
+    text: 'Export…',
+  });
   toggle.addEventListener('click', () => {
     const open = toggle.getAttribute('aria-expanded') !== 'true';
     toggle.setAttribute('aria-expanded', String(open));
@@ -90,14 +108,16 @@ export function exportButtons(name, label, kinds, onExport) {
   });
   box.append(toggle);
   for (const kind of kinds) {
-    box.append(el('button', {
-      type: 'button',
-      text: kind.toUpperCase(),
-      'data-export': kind,
-      'data-target': name,
-      'aria-label': `Export ${plain(label)} as ${kind.toUpperCase()}`,
-      onclick: () => onExport(name, kind, label),
-    }));
+    box.append(
+      el('button', {
+        type: 'button',
+        text: kind.toUpperCase(),
+        'data-export': kind,
+        'data-target': name,
+        'aria-label': `Export ${plain(label)} as ${kind.toUpperCase()}`,
+        onclick: () => onExport(name, kind, label),
+      }),
+    );
   }
   return box;
 }

@@ -12,15 +12,29 @@ import { SCREENS } from '../screens.js';
  *   page; `open(screen)` is called when a tab is chosen.
  */
 export function createNav({ id, labName, open }) {
-  const list = el('div', { class: 'wl-screens', role: 'tablist', 'aria-label': labName ? `Screens — ${labName}` : 'Screens of the lab' });
+  const list = el('div', {
+    class: 'wl-screens',
+    role: 'tablist',
+    'aria-label': labName ? `Screens — ${labName}` : 'Screens of the lab',
+  });
   const about = el('p', { class: 'wl-screen-about', id: id('screen-about') });
   /** @type {Record<string, HTMLButtonElement>} the tabs by screen id */
   const tabs = {};
   for (const sc of SCREENS) {
-    const tab = /** @type {HTMLButtonElement} */ (el('button', {
-      type: 'button', role: 'tab', class: 'wl-tab', id: id(`tab-${sc.id}`), 'data-screen': sc.id,
-      'aria-controls': id('screen'), 'aria-selected': 'false', tabindex: '-1', text: sc.label, title: sc.about,
-    }));
+    const tab = /** @type {HTMLButtonElement} */ (
+      el('button', {
+        type: 'button',
+        role: 'tab',
+        class: 'wl-tab',
+        id: id(`tab-${sc.id}`),
+        'data-screen': sc.id,
+        'aria-controls': id('screen'),
+        'aria-selected': 'false',
+        tabindex: '-1',
+        text: sc.label,
+        title: sc.about,
+      })
+    );
     tab.addEventListener('click', () => open(sc.id));
     tabs[sc.id] = tab;
     list.append(tab);
@@ -29,7 +43,14 @@ export function createNav({ id, labName, open }) {
     const all = Object.values(tabs);
     const at = all.indexOf(/** @type {HTMLButtonElement} */ (e.target));
     if (at < 0) return;
-    const to = { ArrowRight: at + 1, ArrowDown: at + 1, ArrowLeft: at - 1, ArrowUp: at - 1, Home: 0, End: all.length - 1 }[e.key];
+    const to = {
+      ArrowRight: at + 1,
+      ArrowDown: at + 1,
+      ArrowLeft: at - 1,
+      ArrowUp: at - 1,
+      Home: 0,
+      End: all.length - 1,
+    }[e.key];
     if (to === undefined) return;
     e.preventDefault();
     const next = all[(to + all.length) % all.length];

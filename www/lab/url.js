@@ -15,11 +15,38 @@ import { errorText } from '../format.js';
 /** @typedef {import('../lab.js').KinState} KinState */
 
 /** Attributes that are not lab parameters. */
-export const NOT_PARAMS = ['id', 'class', 'style', 'sync-url', 'embed', 'layout', 'hidden', 'title', 'lang', 'dir', 'slot', 'part', 'tabindex', 'nonce', 'role', 'inert', 'translate', 'is'];
+export const NOT_PARAMS = [
+  'id',
+  'class',
+  'style',
+  'sync-url',
+  'embed',
+  'layout',
+  'hidden',
+  'title',
+  'lang',
+  'dir',
+  'slot',
+  'part',
+  'tabindex',
+  'nonce',
+  'role',
+  'inert',
+  'translate',
+  'is',
+];
 /** The keys that decide which wing is wanted. */
 export const WING_KEYS = [...WING.map((w) => w.key), 'outline', 'planform', 'wing'];
 /** Parameter attributes that apply live when changed after connection (planform= needs a fetch: not live). */
-export const LIVE_ATTRS = [...NUMERIC.map((p) => p.key), ...ENUMS.map((e) => e.key), ...WING.map((w) => w.key), 'outline', 'panels', 'exp', 'screen'];
+export const LIVE_ATTRS = [
+  ...NUMERIC.map((p) => p.key),
+  ...ENUMS.map((e) => e.key),
+  ...WING.map((w) => w.key),
+  'outline',
+  'panels',
+  'exp',
+  'screen',
+];
 
 /**
  * The first state of an element: its attributes, then (with sync-url) the query string's
@@ -52,7 +79,10 @@ export function initialState({ attrs, search }) {
   if (!given.has('modes') && WING_KEYS.some((k) => given.has(k) && accepted(k))) params.modes = 'fe';
   const nModes = params.modes === 'fe' ? params.n_modes : 2;
   if (Number(params.mode) > nModes) {
-    rejected.push({ key: 'mode', why: `expected 1 to ${nModes} (the modes of the ${params.modes === 'fe' ? 'FE wing' : 'paper table'})` });
+    rejected.push({
+      key: 'mode',
+      why: `expected 1 to ${nModes} (the modes of the ${params.modes === 'fe' ? 'FE wing' : 'paper table'})`,
+    });
     params.mode = '1';
   }
   // A guided experiment opens the screen that shows what it talks about (screen= wins).
@@ -70,10 +100,15 @@ export function kinFromShare(k, engine) {
   if (!k || typeof k !== 'object') throw new Error('kin: expected an object');
   const label = String(k.label || 'shared kinematics').slice(0, 80);
   if (k.csv && typeof k.csv.text === 'string') {
-    const r = engine.kinematicsFromCsv(k.csv.text, { units: k.csv.units, flap_hz: k.csv.flap_hz, max_harmonic: k.csv.max_harmonic });
+    const r = engine.kinematicsFromCsv(k.csv.text, {
+      units: k.csv.units,
+      flap_hz: k.csv.flap_hz,
+      max_harmonic: k.csv.max_harmonic,
+    });
     return { kinematics: k.kinematics || r.kinematics, source: 'share', label, samples: r.samples, csv: k.csv };
   }
-  if (!k.kinematics || typeof k.kinematics !== 'object') throw new Error('kin.kinematics: expected the core’s Kinematics object');
+  if (!k.kinematics || typeof k.kinematics !== 'object')
+    throw new Error('kin.kinematics: expected the core’s Kinematics object');
   // Checked by the core on the first computation (applyOverrides validates the config).
   return { kinematics: k.kinematics, source: 'share', label, samples: null, csv: null };
 }
@@ -112,11 +147,20 @@ export function createUrlSync({ store, engine, notice, params }) {
     const patch = {};
     if (st.outline) {
       const points = checkPoints(st.outline);
-      patch.wing = { input: null, source: 'share', label: typeof st.outline_label === 'string' ? st.outline_label.slice(0, 80) : 'shared outline', outline: 'shared', points };
+      patch.wing = {
+        input: null,
+        source: 'share',
+        label: typeof st.outline_label === 'string' ? st.outline_label.slice(0, 80) : 'shared outline',
+        outline: 'shared',
+        points,
+      };
       patch.planform = '';
     }
     if (st.kin) patch.kin = kinFromShare(st.kin, engine);
-    if (st.strain_point) patch.strain_point = /** @type {[number, number]} */ (checkPoints([st.strain_point, st.strain_point, st.strain_point], 'strain_point')[0]);
+    if (st.strain_point)
+      patch.strain_point = /** @type {[number, number]} */ (
+        checkPoints([st.strain_point, st.strain_point, st.strain_point], 'strain_point')[0]
+      );
     return patch;
   }
 
@@ -161,7 +205,9 @@ export function createUrlSync({ store, engine, notice, params }) {
           const points = await fetchPlanform(s.planform);
           store.set({ wing: { input: null, source: 'url', label: s.planform, outline: 'file', points } });
         } catch (e) {
-          notes.push(`The planform file “${s.planform}” could not be used (${errorText(e)}); using the built-in outline.`);
+          notes.push(
+            `The planform file “${s.planform}” could not be used (${errorText(e)}); using the built-in outline.`,
+          );
           store.set({ planform: '' });
         }
       }
@@ -170,7 +216,9 @@ export function createUrlSync({ store, engine, notice, params }) {
         try {
           store.set(await fromFragment(frag));
         } catch (e) {
-          notes.push(`The shared wing/kinematics in the link (#s=…) could not be restored: ${errorText(e)}. The lab uses its defaults for them.`);
+          notes.push(
+            `The shared wing/kinematics in the link (#s=…) could not be restored: ${errorText(e)}. The lab uses its defaults for them.`,
+          );
         }
       }
       if (notes.length) notice(notes.join(' '));

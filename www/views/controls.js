@@ -3,14 +3,23 @@
 // phone), then "More parameters" (phases, duration, mode set, selected mode, PSD detrend), the
 // preset, warnings and the compute/draw timing. Reads and writes only the store.
 import { NUMERIC, ENUMS, MAIN_KEYS, FE_LAB_INPUT, defaults, snap } from '../state.js';
-import { el, rich, activeIn } from '../dom.js';
+import { el, activeIn } from '../dom.js';
 import { fmt, plain, PAPER_UNITS_NOTE } from '../format.js';
 
 export const title = 'Parameters';
 
 const ENUM_TEXT = {
   modes: { paper: 'Paper table (Tables 3–4)', fe: 'FE wing (shell FE, computed here)' },
-  mode: { 1: 'Mode 1: spanwise bending', 2: 'Mode 2: spanwise torsion', 3: 'Mode 3', 4: 'Mode 4', 5: 'Mode 5', 6: 'Mode 6', 7: 'Mode 7', 8: 'Mode 8' },
+  mode: {
+    1: 'Mode 1: spanwise bending',
+    2: 'Mode 2: spanwise torsion',
+    3: 'Mode 3',
+    4: 'Mode 4',
+    5: 'Mode 5',
+    6: 'Mode 6',
+    7: 'Mode 7',
+    8: 'Mode 8',
+  },
   detrend: { none: 'none (DC visible)', mean: 'mean', linear: 'linear' },
 };
 
@@ -32,8 +41,24 @@ export function mount(ctx) {
   const inputs = {};
   const row = (p) => {
     const label = `${plain(p.label)}${p.unit ? ', in ' + p.unit : ''}`;
-    const range = el('input', { type: 'range', id: id(p.key), min: p.min, max: p.max, step: p.step, 'data-key': p.key, 'aria-label': label });
-    const num = el('input', { type: 'number', id: id(`${p.key}-n`), min: p.min, max: p.max, step: p.step, 'data-key': p.key, 'aria-label': `${label}, exact value` });
+    const range = el('input', {
+      type: 'range',
+      id: id(p.key),
+      min: p.min,
+      max: p.max,
+      step: p.step,
+      'data-key': p.key,
+      'aria-label': label,
+    });
+    const num = el('input', {
+      type: 'number',
+      id: id(`${p.key}-n`),
+      min: p.min,
+      max: p.max,
+      step: p.step,
+      'data-key': p.key,
+      'aria-label': `${label}, exact value`,
+    });
     range.addEventListener('input', () => store.set({ [p.key]: snap(p, Number(range.value)) }));
     num.addEventListener('change', () => {
       const v = Number(num.value);
@@ -47,16 +72,34 @@ export function mount(ctx) {
       if (s !== v) num.value = String(s);
     });
     inputs[p.key] = { range, num, p };
-    const lab = el('label', { for: id(p.key), class: 'wl-label' }, el('span', { class: 'wl-sym', rich: p.sym }), el('span', { class: 'wl-long', rich: p.label.includes(',') ? p.label.replace(/^[^,]*, /, '') : p.label.replace(p.sym, '').trim() }), p.unit ? el('span', { class: 'wl-unit', text: ` (${p.unit})` }) : null);
+    const lab = el(
+      'label',
+      { for: id(p.key), class: 'wl-label' },
+      el('span', { class: 'wl-sym', rich: p.sym }),
+      el('span', {
+        class: 'wl-long',
+        rich: p.label.includes(',') ? p.label.replace(/^[^,]*, /, '') : p.label.replace(p.sym, '').trim(),
+      }),
+      p.unit ? el('span', { class: 'wl-unit', text: ` (${p.unit})` }) : null,
+    );
     return el('div', { class: 'wl-row', 'data-row': p.key }, lab, range, num);
   };
-  const main = el('div', { class: 'wl-sliders wl-main-sliders' }, ...MAIN_KEYS.map((k) => row(NUMERIC.find((p) => p.key === k))));
-  const more = el('div', { class: 'wl-sliders wl-more-sliders' }, ...NUMERIC.filter((p) => !MAIN_KEYS.includes(p.key)).map(row));
+  const main = el(
+    'div',
+    { class: 'wl-sliders wl-main-sliders' },
+    ...MAIN_KEYS.map((k) => row(NUMERIC.find((p) => p.key === k))),
+  );
+  const more = el(
+    'div',
+    { class: 'wl-sliders wl-more-sliders' },
+    ...NUMERIC.filter((p) => !MAIN_KEYS.includes(p.key)).map(row),
+  );
   const selects = {};
   const selBox = el('div', { class: 'wl-selects' });
   for (const e of ENUMS) {
     const s = el('select', { id: id(e.key), 'data-key': e.key });
-    for (const c of e.choices) s.append(el('option', { value: c, text: ENUM_TEXT[e.key][c], disabled: (e.disabled || []).includes(c) }));
+    for (const c of e.choices)
+      s.append(el('option', { value: c, text: ENUM_TEXT[e.key][c], disabled: (e.disabled || []).includes(c) }));
     s.addEventListener('change', () => store.set({ [e.key]: s.value }));
     selBox.append(el('div', { class: 'wl-row wl-select' }, el('label', { for: id(e.key), text: e.label }), s));
     selects[e.key] = s;
@@ -64,24 +107,34 @@ export function mount(ctx) {
   const warnEl = el('p', { class: 'wl-warn', role: 'status', hidden: true });
   const timingEl = el('p', { class: 'wl-timing', 'aria-live': 'off', text: 'loading wasm…' });
   const moreId = id('more');
-  const moreBtn = el('button', { type: 'button', class: 'wl-more-toggle', 'aria-expanded': 'true', 'aria-controls': moreId, text: 'More parameters' });
-  const moreBox = el('div', { class: 'wl-more', id: moreId },
-      el('h3', { class: 'wl-more-title', text: 'More parameters' }),
-      more,
-      selBox,
-      el('div', { class: 'wl-presets' }, preset),
-      el('p', { class: 'wl-note', rich: `Sampling: 10 kHz. ${PAPER_UNITS_NOTE}` }),
-      el('p', { class: 'wl-note', rich: `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker. Your own outline, material, clamp and up to 8 modes: the Wing panel.` }),
+  const moreBtn = el('button', {
+    type: 'button',
+    class: 'wl-more-toggle',
+    'aria-expanded': 'true',
+    'aria-controls': moreId,
+    text: 'More parameters',
+  });
+  const moreBox = el(
+    'div',
+    { class: 'wl-more', id: moreId },
+    el('h3', { class: 'wl-more-title', text: 'More parameters' }),
+    more,
+    selBox,
+    el('div', { class: 'wl-presets' }, preset),
+    el('p', { class: 'wl-note', rich: `Sampling: 10 kHz. ${PAPER_UNITS_NOTE}` }),
+    el('p', {
+      class: 'wl-note',
+      rich: `FE wing: shell finite elements of the synthetic Manduca-like outline (not digitised), 13 % camber, root edge clamped, E = 13.11 GPa, ${FE_LAB_INPUT.mesh_size_mm} mm elements, first ${FE_LAB_INPUT.n_modes} modes; SI a_k and strain at P = (3, −6) mm. Computed once, in a worker. Your own outline, material, clamp and up to 8 modes: the Wing panel.`,
+    }),
   );
-  const kinNote = el('p', { class: 'wl-note', 'data-note': 'kin', hidden: true, rich: 'Custom kinematics in use (Kinematics panel): α_0, β_0, γ_0, the phases and f_d do not apply; ζ and the duration do.' });
+  const kinNote = el('p', {
+    class: 'wl-note',
+    'data-note': 'kin',
+    hidden: true,
+    rich: 'Custom kinematics in use (Kinematics panel): α_0, β_0, γ_0, the phases and f_d do not apply; ζ and the duration do.',
+  });
   section.append(kinNote);
-  section.append(
-    main,
-    moreBtn,
-    moreBox,
-    warnEl,
-    timingEl,
-  );
+  section.append(main, moreBtn, moreBox, warnEl, timingEl);
 
   let narrow = false;
   /** @type {boolean | null} on a focused screen (null: not told yet) */
@@ -113,7 +166,9 @@ export function mount(ctx) {
       o.hidden = !on;
       o.disabled = !on;
       if (!on) continue;
-      o.textContent = useFe ? `Mode ${k + 1}: ${fe.kinds && fe.kinds[k] ? fe.kinds[k] : 'FE'} (FE, ${fmt(fe.modes[k].freq_hz, 4)} Hz)` : ENUM_TEXT.mode[o.value];
+      o.textContent = useFe
+        ? `Mode ${k + 1}: ${fe.kinds && fe.kinds[k] ? fe.kinds[k] : 'FE'} (FE, ${fmt(fe.modes[k].freq_hz, 4)} Hz)`
+        : ENUM_TEXT.mode[o.value];
     }
     kinNote.hidden = !s.kin;
   };
@@ -156,8 +211,7 @@ export function mount(ctx) {
       setMore(!(narrow || focused));
     },
     destroy() {
-      unsub.forEach((f) => f());
+      for (const f of unsub) f();
     },
   };
 }
-

@@ -20,14 +20,21 @@ export function experimentHref(id) {
 /** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
   const { store, section, engine } = ctx;
-  section.append(el('p', {
-    class: 'wl-note wl-exp-intro',
-    text: 'Each experiment sets the parameters for one effect of the model and says what to look for. The prediction is computed from the current results and checked against the simulation; it stays live if you move the sliders. Every link can be shared.',
-  }));
+  section.append(
+    el('p', {
+      class: 'wl-note wl-exp-intro',
+      text: 'Each experiment sets the parameters for one effect of the model and says what to look for. The prediction is computed from the current results and checked against the simulation; it stays live if you move the sliders. Every link can be shared.',
+    }),
+  );
   const list = el('ul', { class: 'wl-exp-list' });
   const links = new Map();
   for (const e of EXPERIMENTS) {
-    const a = el('a', { class: 'wl-exp-link', href: experimentHref(e.id), 'data-exp': e.id }, el('span', { rich: e.title }), el('span', { class: 'wl-exp-fig', text: `· ${e.figure}` }));
+    const a = el(
+      'a',
+      { class: 'wl-exp-link', href: experimentHref(e.id), 'data-exp': e.id },
+      el('span', { rich: e.title }),
+      el('span', { class: 'wl-exp-fig', text: `· ${e.figure}` }),
+    );
     a.addEventListener('click', (ev) => {
       if (ev.button !== 0 || ev.ctrlKey || ev.metaKey || ev.shiftKey || ev.altKey) return; // new tab / window
       ev.preventDefault();
@@ -66,9 +73,13 @@ export function mount(ctx) {
       studies.set(key, entry);
       const job = engine.run(e.study.kind, { cfg, opts });
       job.promise.then(
-        ({ result }) => { entry.result = result; refresh(); },
+        ({ result }) => {
+          entry.result = result;
+          refresh();
+        },
         (err) => {
-          if (errorText(err) === 'cancelled') studies.delete(key); // another study was cancelled: rerun later
+          if (errorText(err) === 'cancelled')
+            studies.delete(key); // another study was cancelled: rerun later
           else entry.error = errorText(err);
           refresh();
         },
@@ -101,17 +112,27 @@ export function mount(ctx) {
       for (const line of p.lines) pred.append(el('p', { class: 'wl-exp-line', rich: line }));
       if (entry && entry.error) pred.append(el('p', { class: 'wl-error', text: `The study failed: ${entry.error}` }));
       if (p.checks.length) {
-        const ul = el('ul', { class: 'wl-exp-checks', 'aria-label': 'Checks of the prediction against the simulation' });
+        const ul = el('ul', {
+          class: 'wl-exp-checks',
+          'aria-label': 'Checks of the prediction against the simulation',
+        });
         for (const c of p.checks) {
-          ul.append(el('li', { class: c.holds ? 'wl-ok' : 'wl-bad', 'data-check': c.id, 'data-holds': String(c.holds) },
-            el('span', { class: 'wl-exp-mark', 'aria-hidden': 'true', text: c.holds ? '✓' : '✗' }),
-            el('span', { rich: `${c.holds ? 'Holds' : 'Does not hold'}: ${c.label}` })));
+          ul.append(
+            el(
+              'li',
+              { class: c.holds ? 'wl-ok' : 'wl-bad', 'data-check': c.id, 'data-holds': String(c.holds) },
+              el('span', { class: 'wl-exp-mark', 'aria-hidden': 'true', text: c.holds ? '✓' : '✗' }),
+              el('span', { rich: `${c.holds ? 'Holds' : 'Does not hold'}: ${c.label}` }),
+            ),
+          );
         }
         pred.append(ul);
       }
       parts.push(pred);
       section.dataset.checks = p.checks.map((c) => `${c.id}:${c.holds ? 1 : 0}`).join(',');
-      section.dataset.values = JSON.stringify(p.values, (k, v) => (typeof v === 'number' && !Number.isFinite(v) ? String(v) : v));
+      section.dataset.values = JSON.stringify(p.values, (_k, v) =>
+        typeof v === 'number' && !Number.isFinite(v) ? String(v) : v,
+      );
       const say = `${plain(e.title)}: ${p.checks.length ? p.checks.map((c) => (c.holds ? 'holds' : 'does not hold')).join(', ') : 'computing'}`;
       if (say !== lastAnnounced) {
         live.textContent = say;
@@ -120,7 +141,11 @@ export function mount(ctx) {
     }
     if (e.study) {
       const target = e.study.kind === 'resonance' ? 'resonance' : 'studies';
-      const label = { resonance: 'Go to the resonance map', sweep: 'Go to the sweep study (Fig. 6)', icmap: 'Go to the initial-condition map (Fig. 7)' }[e.study.kind];
+      const label = {
+        resonance: 'Go to the resonance map',
+        sweep: 'Go to the sweep study (Fig. 6)',
+        icmap: 'Go to the initial-condition map (Fig. 7)',
+      }[e.study.kind];
       const go = el('button', { type: 'button', class: 'wl-exp-go', text: label });
       go.addEventListener('click', () => {
         const sec = section.parentElement && section.parentElement.querySelector(`[data-panel="${target}"]`);
@@ -160,7 +185,9 @@ export function mount(ctx) {
       }
       const names = SCREENS.filter((sc) => other.has(sc.id)).map((sc) => `“${sc.label}”`);
       elsewhere.hidden = names.length === 0;
-      elsewhere.textContent = names.length ? `More experiments on the ${names.join(', ').replace(/, ([^,]*)$/, ' and $1')} screen${names.length > 1 ? 's' : ''}.` : '';
+      elsewhere.textContent = names.length
+        ? `More experiments on the ${names.join(', ').replace(/, ([^,]*)$/, ' and $1')} screen${names.length > 1 ? 's' : ''}.`
+        : '';
     },
     choose,
     refresh,

@@ -24,7 +24,11 @@ const PREVIEW_POINTS = 241;
  * @param {any} a
  */
 function fourierOf(a) {
-  if (a && a.kind === 'fourier') return { mean: a.mean || 0, harmonics: (a.harmonics || []).map((h) => ({ n: h.n, amplitude: h.amplitude, phase: h.phase || 0 })) };
+  if (a && a.kind === 'fourier')
+    return {
+      mean: a.mean || 0,
+      harmonics: (a.harmonics || []).map((h) => ({ n: h.n, amplitude: h.amplitude, phase: h.phase || 0 })),
+    };
   return { mean: 0, harmonics: [] };
 }
 
@@ -34,10 +38,29 @@ export function mount(ctx) {
 
   // ---------- CSV ----------
   const fileIn = el('input', { type: 'file', id: id('kin-file'), accept: '.csv,.txt,text/csv', 'data-kin': 'file' });
-  const unitsSel = el('select', { id: id('kin-units'), 'data-kin': 'units' },
-    el('option', { value: 'deg', text: 'degrees' }), el('option', { value: 'rad', text: 'radians' }));
-  const flapIn = el('input', { type: 'number', id: id('kin-flap'), min: 0.1, max: 1000, step: 0.1, 'data-kin': 'flap_hz' });
-  const harmIn = el('input', { type: 'number', id: id('kin-harm'), min: 1, max: 1000, step: 1, placeholder: String(DEFAULT_SAMPLED_MAX_HARMONIC), 'data-kin': 'max_harmonic' });
+  const unitsSel = el(
+    'select',
+    { id: id('kin-units'), 'data-kin': 'units' },
+    el('option', { value: 'deg', text: 'degrees' }),
+    el('option', { value: 'rad', text: 'radians' }),
+  );
+  const flapIn = el('input', {
+    type: 'number',
+    id: id('kin-flap'),
+    min: 0.1,
+    max: 1000,
+    step: 0.1,
+    'data-kin': 'flap_hz',
+  });
+  const harmIn = el('input', {
+    type: 'number',
+    id: id('kin-harm'),
+    min: 1,
+    max: 1000,
+    step: 1,
+    placeholder: String(DEFAULT_SAMPLED_MAX_HARMONIC),
+    'data-kin': 'max_harmonic',
+  });
   const statusEl = el('p', { class: 'wl-note', role: 'status', 'data-kin': 'status' });
   /** @type {{ text: string, name: string } | null} */
   let lastCsv = null;
@@ -57,12 +80,22 @@ export function mount(ctx) {
       const r = engine.kinematicsFromCsv(lastCsv.text, opts);
       store.set({
         kin: {
-          kinematics: r.kinematics, source: 'csv', label: lastCsv.name,
-          samples: r.samples, csv: { text: lastCsv.text, units: opts.units, flap_hz: flap, ...(opts.max_harmonic ? { max_harmonic: opts.max_harmonic } : {}) },
+          kinematics: r.kinematics,
+          source: 'csv',
+          label: lastCsv.name,
+          samples: r.samples,
+          csv: {
+            text: lastCsv.text,
+            units: opts.units,
+            flap_hz: flap,
+            ...(opts.max_harmonic ? { max_harmonic: opts.max_harmonic } : {}),
+          },
         },
       });
       const n = r.samples && r.samples.t ? r.samples.t.length : 0;
-      say(`Read ${lastCsv.name}: ${n} samples over ${r.n_periods} period(s) at ${fmt(flap, 4)} Hz, in ${opts.units === 'deg' ? 'degrees' : 'radians'}.${r.warnings && r.warnings.length ? ' ' + r.warnings.join(' ') : ''}`);
+      say(
+        `Read ${lastCsv.name}: ${n} samples over ${r.n_periods} period(s) at ${fmt(flap, 4)} Hz, in ${opts.units === 'deg' ? 'degrees' : 'radians'}.${r.warnings && r.warnings.length ? ' ' + r.warnings.join(' ') : ''}`,
+      );
       ctx.emit('wl-kin', { state: 'loaded' });
     } catch (e) {
       say(`Could not use ${lastCsv.name}: ${errorText(e)}`, true);
@@ -79,7 +112,10 @@ export function mount(ctx) {
     fileIn.value = '';
     readCsv();
   });
-  for (const c of [unitsSel, flapIn, harmIn]) c.addEventListener('change', () => { if (lastCsv) readCsv(); });
+  for (const c of [unitsSel, flapIn, harmIn])
+    c.addEventListener('change', () => {
+      if (lastCsv) readCsv();
+    });
 
   // ---------- preview (samples + the core's periodic interpolant) ----------
   const NS = 'http://www.w3.org/2000/svg';
@@ -90,9 +126,12 @@ export function mount(ctx) {
   svg.setAttribute('viewBox', '0 0 400 160');
   svg.setAttribute('preserveAspectRatio', 'none');
   const desc = el('p', { class: 'wl-note', id: id('kin-desc'), 'data-kin': 'summary' });
-  const legend = el('p', { class: 'wl-kin-legend', 'aria-hidden': 'true' },
+  const legend = el(
+    'p',
+    { class: 'wl-kin-legend', 'aria-hidden': 'true' },
     ...ANGLES.map((a) => el('span', { style: `color:${COL[a]}`, text: `— ${SYM[a]}  ` })),
-    el('span', { class: 'wl-kin-dots', text: '● measured samples', hidden: true }));
+    el('span', { class: 'wl-kin-dots', text: '● measured samples', hidden: true }),
+  );
   const preview = (s) => {
     svg.replaceChildren();
     if (!engine.ready) return;
@@ -114,16 +153,33 @@ export function mount(ctx) {
     }
     const samp = s.kin && s.kin.samples;
     /** @type {HTMLElement} */ (legend.querySelector('.wl-kin-dots')).hidden = !samp;
-    let lo = Infinity, hi = -Infinity;
-    for (const a of ANGLES) for (const v of ang[a]) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
-    if (samp) for (const a of ANGLES) for (const v of samp[a]) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
-    if (!(hi > lo)) { lo -= 1; hi += 1; }
+    let lo = Infinity,
+      hi = -Infinity;
+    for (const a of ANGLES)
+      for (const v of ang[a]) {
+        lo = Math.min(lo, v);
+        hi = Math.max(hi, v);
+      }
+    if (samp)
+      for (const a of ANGLES)
+        for (const v of samp[a]) {
+          lo = Math.min(lo, v);
+          hi = Math.max(hi, v);
+        }
+    if (!(hi > lo)) {
+      lo -= 1;
+      hi += 1;
+    }
     const pad = 0.08 * (hi - lo);
-    lo -= pad; hi += pad;
-    const X = (tt) => (400 * tt) / T, Y = (v) => 160 - (160 * (v - lo)) / (hi - lo);
+    lo -= pad;
+    hi += pad;
+    const X = (tt) => (400 * tt) / T,
+      Y = (v) => 160 - (160 * (v - lo)) / (hi - lo);
     const zero = document.createElementNS(NS, 'line');
-    zero.setAttribute('x1', '0'); zero.setAttribute('x2', '400');
-    zero.setAttribute('y1', String(Y(0))); zero.setAttribute('y2', String(Y(0)));
+    zero.setAttribute('x1', '0');
+    zero.setAttribute('x2', '400');
+    zero.setAttribute('y1', String(Y(0)));
+    zero.setAttribute('y2', String(Y(0)));
     zero.setAttribute('class', 'wl-kin-zero');
     svg.append(zero);
     for (const a of ANGLES) {
@@ -150,9 +206,22 @@ export function mount(ctx) {
         svg.append(g);
       }
     }
-    const range = (arr) => { let a = Infinity, b = -Infinity; for (const v of arr) { a = Math.min(a, v); b = Math.max(b, v); } return [a, b]; };
-    desc.textContent = `One flap period (${fmt(T * 1e3, 4)} ms at ${fmt(kinematics.flap_freq_hz, 4)} Hz) of the kinematics in use${samp ? ', measured samples as dots and the core’s periodic interpolant as lines' : ''}: ` +
-      ANGLES.map((a) => { const [mn, mx] = range(ang[a]); return `${SYM[a]} from ${fmt(mn, 3)} to ${fmt(mx, 3)} rad`; }).join('; ') + `. Vertical range ${fmt(lo, 3)} to ${fmt(hi, 3)} rad.`;
+    const range = (arr) => {
+      let a = Infinity,
+        b = -Infinity;
+      for (const v of arr) {
+        a = Math.min(a, v);
+        b = Math.max(b, v);
+      }
+      return [a, b];
+    };
+    desc.textContent =
+      `One flap period (${fmt(T * 1e3, 4)} ms at ${fmt(kinematics.flap_freq_hz, 4)} Hz) of the kinematics in use${samp ? ', measured samples as dots and the core’s periodic interpolant as lines' : ''}: ` +
+      ANGLES.map((a) => {
+        const [mn, mx] = range(ang[a]);
+        return `${SYM[a]} from ${fmt(mn, 3)} to ${fmt(mx, 3)} rad`;
+      }).join('; ') +
+      `. Vertical range ${fmt(lo, 3)} to ${fmt(hi, 3)} rad.`;
   };
 
   // ---------- hand editing: mean and harmonics of each angle ----------
@@ -167,7 +236,10 @@ export function mount(ctx) {
     const inp = el('input', { type: 'number', id: id(idS), step, value: String(value), 'aria-label': label });
     inp.addEventListener('change', () => {
       const v = Number(inp.value);
-      if (inp.value.trim() === '' || !Number.isFinite(v)) { inp.setAttribute('aria-invalid', 'true'); return; }
+      if (inp.value.trim() === '' || !Number.isFinite(v)) {
+        inp.setAttribute('aria-invalid', 'true');
+        return;
+      }
       inp.removeAttribute('aria-invalid');
       onchange(v);
     });
@@ -198,25 +270,87 @@ export function mount(ctx) {
       const box = el('fieldset', { class: 'wl-kin-angle' }, el('legend', { text: `${SYM[a]}, rad` }));
       const e = edit[a];
       if (sampled[a]) {
-        box.append(el('p', { class: 'wl-note', text: `Measured table (${sampled[a].values.length} samples per period): the mean offset and the harmonics below are added to it.` }),
+        box.append(
+          el('p', {
+            class: 'wl-note',
+            text: `Measured table (${sampled[a].values.length} samples per period): the mean offset and the harmonics below are added to it.`,
+          }),
           el('label', { for: id(`kin-${a}-mean`), text: 'Mean offset (rad) ' }),
-          num(`kin-${a}-mean`, `${SYM[a]} mean offset, rad`, e.mean, (v) => { e.mean = v; }));
+          num(`kin-${a}-mean`, `${SYM[a]} mean offset, rad`, e.mean, (v) => {
+            e.mean = v;
+          }),
+        );
       } else {
-        box.append(el('label', { for: id(`kin-${a}-mean`), text: 'Mean (rad) ' }), num(`kin-${a}-mean`, `${SYM[a]} mean, rad`, e.mean, (v) => { e.mean = v; }));
+        box.append(
+          el('label', { for: id(`kin-${a}-mean`), text: 'Mean (rad) ' }),
+          num(`kin-${a}-mean`, `${SYM[a]} mean, rad`, e.mean, (v) => {
+            e.mean = v;
+          }),
+        );
       }
       {
-        const tbl = el('table', { class: 'wl-kin-harm' },
+        const tbl = el(
+          'table',
+          { class: 'wl-kin-harm' },
           el('caption', { class: 'wl-sr', text: `Harmonics of ${SYM[a]}: amplitude · sin(n ω_d t + phase)` }),
-          el('thead', {}, el('tr', {}, el('th', { scope: 'col', text: 'n' }), el('th', { scope: 'col', text: 'amplitude (rad)' }), el('th', { scope: 'col', text: 'phase (rad)' }), el('th', { scope: 'col', text: 'remove' }))));
+          el(
+            'thead',
+            {},
+            el(
+              'tr',
+              {},
+              el('th', { scope: 'col', text: 'n' }),
+              el('th', { scope: 'col', text: 'amplitude (rad)' }),
+              el('th', { scope: 'col', text: 'phase (rad)' }),
+              el('th', { scope: 'col', text: 'remove' }),
+            ),
+          ),
+        );
         const body = el('tbody');
         e.harmonics.forEach((h, i) => {
-          const rm = el('button', { type: 'button', text: 'Remove', 'aria-label': `Remove harmonic ${i + 1} of ${SYM[a]}` });
-          rm.addEventListener('click', () => { e.harmonics.splice(i, 1); drawEditor(); });
-          body.append(el('tr', {},
-            el('td', {}, num(`kin-${a}-n${i}`, `${SYM[a]} harmonic ${i + 1}: order n`, h.n, (v) => { h.n = Math.max(1, Math.round(v)); }, 1)),
-            el('td', {}, num(`kin-${a}-A${i}`, `${SYM[a]} harmonic ${i + 1}: amplitude, rad`, h.amplitude, (v) => { h.amplitude = v; })),
-            el('td', {}, num(`kin-${a}-p${i}`, `${SYM[a]} harmonic ${i + 1}: phase, rad`, h.phase, (v) => { h.phase = v; })),
-            el('td', {}, rm)));
+          const rm = el('button', {
+            type: 'button',
+            text: 'Remove',
+            'aria-label': `Remove harmonic ${i + 1} of ${SYM[a]}`,
+          });
+          rm.addEventListener('click', () => {
+            e.harmonics.splice(i, 1);
+            drawEditor();
+          });
+          body.append(
+            el(
+              'tr',
+              {},
+              el(
+                'td',
+                {},
+                num(
+                  `kin-${a}-n${i}`,
+                  `${SYM[a]} harmonic ${i + 1}: order n`,
+                  h.n,
+                  (v) => {
+                    h.n = Math.max(1, Math.round(v));
+                  },
+                  1,
+                ),
+              ),
+              el(
+                'td',
+                {},
+                num(`kin-${a}-A${i}`, `${SYM[a]} harmonic ${i + 1}: amplitude, rad`, h.amplitude, (v) => {
+                  h.amplitude = v;
+                }),
+              ),
+              el(
+                'td',
+                {},
+                num(`kin-${a}-p${i}`, `${SYM[a]} harmonic ${i + 1}: phase, rad`, h.phase, (v) => {
+                  h.phase = v;
+                }),
+              ),
+              el('td', {}, rm),
+            ),
+          );
         });
         tbl.append(body);
         const add = el('button', { type: 'button', text: 'Add harmonic', 'aria-label': `Add harmonic to ${SYM[a]}` });
@@ -230,10 +364,28 @@ export function mount(ctx) {
       }
       editor.append(box);
     }
-    const flapRow = el('div', { class: 'wl-kin-row' }, el('label', { for: id('kin-edit-flap'), text: 'Flap frequency (Hz) ' }), num('kin-edit-flap', 'Flap frequency of the edited kinematics, Hz', editFlap, (v) => { editFlap = v; }, 0.1));
+    const flapRow = el(
+      'div',
+      { class: 'wl-kin-row' },
+      el('label', { for: id('kin-edit-flap'), text: 'Flap frequency (Hz) ' }),
+      num(
+        'kin-edit-flap',
+        'Flap frequency of the edited kinematics, Hz',
+        editFlap,
+        (v) => {
+          editFlap = v;
+        },
+        0.1,
+      ),
+    );
     editor.append(flapRow);
   };
-  const applyBtn = el('button', { type: 'button', class: 'wl-primary', text: 'Use edited kinematics', 'data-kin': 'apply' });
+  const applyBtn = el('button', {
+    type: 'button',
+    class: 'wl-primary',
+    text: 'Use edited kinematics',
+    'data-kin': 'apply',
+  });
   applyBtn.addEventListener('click', () => {
     /** @type {any} */
     const k = { flap_freq_hz: editFlap };
@@ -242,8 +394,21 @@ export function mount(ctx) {
         // Added on the table's own grid t_j = j T / N, so the core's interpolant carries them.
         const e = edit[a];
         const n = sampled[a].values.length;
-        k[a] = { ...sampled[a], values: sampled[a].values.map((v, j) => v + e.mean + e.harmonics.reduce((acc, h) => acc + h.amplitude * Math.sin((2 * Math.PI * h.n * j) / n + h.phase), 0)) };
-      } else k[a] = { kind: 'fourier', mean: edit[a].mean, harmonics: edit[a].harmonics.map((h) => ({ n: h.n, amplitude: h.amplitude, phase: h.phase })) };
+        k[a] = {
+          ...sampled[a],
+          values: sampled[a].values.map(
+            (v, j) =>
+              v +
+              e.mean +
+              e.harmonics.reduce((acc, h) => acc + h.amplitude * Math.sin((2 * Math.PI * h.n * j) / n + h.phase), 0),
+          ),
+        };
+      } else
+        k[a] = {
+          kind: 'fourier',
+          mean: edit[a].mean,
+          harmonics: edit[a].harmonics.map((h) => ({ n: h.n, amplitude: h.amplitude, phase: h.phase })),
+        };
     }
     // Checked by the core right away (the message names the field), before it reaches the store.
     try {
@@ -253,7 +418,15 @@ export function mount(ctx) {
       return;
     }
     const prev = store.get().kin;
-    store.set({ kin: { kinematics: k, source: 'edited', label: prev ? `edited ${prev.label}`.replace(/^(edited )+/, 'edited ') : 'edited kinematics', samples: prev && prev.samples ? prev.samples : null, csv: null } });
+    store.set({
+      kin: {
+        kinematics: k,
+        source: 'edited',
+        label: prev ? `edited ${prev.label}`.replace(/^(edited )+/, 'edited ') : 'edited kinematics',
+        samples: prev && prev.samples ? prev.samples : null,
+        csv: null,
+      },
+    });
     say('Using the edited kinematics.');
     ctx.emit('wl-kin', { state: 'edited' });
   });
@@ -268,36 +441,54 @@ export function mount(ctx) {
   const inUse = el('p', { class: 'wl-note', 'data-kin': 'in-use' });
 
   section.append(
-    el('p', { class: 'wl-note', text: 'Measured kinematics: a CSV with a header row naming t (s) and any of alpha, beta, gamma (a missing angle is 0), one or more whole flap periods, t increasing; the angles in the units chosen below. The core folds them onto one period and interpolates them periodically.' }),
+    el('p', {
+      class: 'wl-note',
+      text: 'Measured kinematics: a CSV with a header row naming t (s) and any of alpha, beta, gamma (a missing angle is 0), one or more whole flap periods, t increasing; the angles in the units chosen below. The core folds them onto one period and interpolates them periodically.',
+    }),
     el('div', { class: 'wl-kin-row' }, el('label', { for: id('kin-file'), text: 'Load a CSV ' }), fileIn),
-    el('div', { class: 'wl-kin-row' },
-      el('label', { for: id('kin-units'), text: 'Angle units ' }), unitsSel,
-      el('label', { for: id('kin-flap'), text: ' Flap frequency (Hz) ' }), flapIn,
-      el('label', { for: id('kin-harm'), text: ' Highest harmonic ' }), harmIn),
+    el(
+      'div',
+      { class: 'wl-kin-row' },
+      el('label', { for: id('kin-units'), text: 'Angle units ' }),
+      unitsSel,
+      el('label', { for: id('kin-flap'), text: ' Flap frequency (Hz) ' }),
+      flapIn,
+      el('label', { for: id('kin-harm'), text: ' Highest harmonic ' }),
+      harmIn,
+    ),
     statusEl,
     inUse,
     svg,
     legend,
     desc,
-    el('details', { class: 'wl-kin-edit' },
+    el(
+      'details',
+      { class: 'wl-kin-edit' },
       el('summary', { text: 'Edit means and harmonics by hand' }),
       el('div', { class: 'wl-kin-actions' }, reloadBtn),
       editor,
-      el('div', { class: 'wl-kin-actions' }, applyBtn, resetBtn)),
+      el('div', { class: 'wl-kin-actions' }, applyBtn, resetBtn),
+    ),
   );
 
   const showInUse = (s) => {
     const k = s.kin;
-    inUse.textContent = !k ? 'In use: the sliders’ kinematics (first harmonics α0, β0, γ0 with their phases, at f_d).'
+    inUse.textContent = !k
+      ? 'In use: the sliders’ kinematics (first harmonics α0, β0, γ0 with their phases, at f_d).'
       : `In use: ${k.label} (${k.source === 'csv' ? 'measured table' : k.source === 'edited' ? 'edited by hand' : 'from the shared link'}, ${fmt(k.kinematics.flap_freq_hz, 4)} Hz). The Parameters panel’s amplitudes, phases and f_d do not apply; ζ and the duration do.`;
   };
   const unsub = [
-    store.subscribe(['kin', 'alpha0', 'beta0', 'gamma0', 'alpha_phase', 'beta_phase', 'gamma_phase', 'flap_hz', 'result'], (s, changed) => {
-      if (changed.includes('result') && changed.length === 1 && svg.childNodes.length) return;
-      preview(s);
-      showInUse(s);
+    store.subscribe(
+      ['kin', 'alpha0', 'beta0', 'gamma0', 'alpha_phase', 'beta_phase', 'gamma_phase', 'flap_hz', 'result'],
+      (s, changed) => {
+        if (changed.includes('result') && changed.length === 1 && svg.childNodes.length) return;
+        preview(s);
+        showInUse(s);
+      },
+    ),
+    store.subscribe(['flap_hz'], (s) => {
+      if (!lastCsv && activeIn(flapIn) !== flapIn) flapIn.value = String(s.flap_hz);
     }),
-    store.subscribe(['flap_hz'], (s) => { if (!lastCsv && activeIn(flapIn) !== flapIn) flapIn.value = String(s.flap_hz); }),
   ];
   flapIn.value = String(store.get().flap_hz);
   showInUse(store.get());
@@ -310,7 +501,7 @@ export function mount(ctx) {
   return {
     destroy() {
       clearInterval(whenReady);
-      unsub.forEach((f) => f());
+      for (const f of unsub) f();
     },
   };
 }

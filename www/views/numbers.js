@@ -42,15 +42,33 @@ export const ROWS = [
 export function mount(ctx) {
   const { store, section } = ctx;
   const table = el('table', { class: 'wl-numtable' });
-  const caption = el('caption', { class: 'wl-sr', text: 'Floquet analysis and force-term shares of every mode for the current parameters' });
+  const caption = el('caption', {
+    class: 'wl-sr',
+    text: 'Floquet analysis and force-term shares of every mode for the current parameters',
+  });
   const headRow = el('tr');
   const tbody = el('tbody');
   table.append(caption, el('thead', {}, headRow), tbody);
   // The table scrolls sideways on its own when there are more modes than fit (8 at most).
   // Named after its section (which carries the lab's name when a page has several labs), so
   // each lab's region is a distinct landmark.
-  const scroller = el('div', { class: 'wl-numscroll', role: 'region', tabindex: '0', 'aria-label': `${section.getAttribute('aria-label') || 'Floquet and contributions'}: table, scrolls sideways for many modes` }, table);
-  section.append(scroller, el('p', { class: 'wl-note', rich: 'Shares are 100·Σq_{term}^2/Σq_{total}^2 (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms). One column per mode of the current mode set; the selected mode is highlighted.' }));
+  const scroller = el(
+    'div',
+    {
+      class: 'wl-numscroll',
+      role: 'region',
+      tabindex: '0',
+      'aria-label': `${section.getAttribute('aria-label') || 'Floquet and contributions'}: table, scrolls sideways for many modes`,
+    },
+    table,
+  );
+  section.append(
+    scroller,
+    el('p', {
+      class: 'wl-note',
+      rich: 'Shares are 100·Σq_{term}^2/Σq_{total}^2 (paper §4.1). They need not sum to 100 % because the partial responses are not orthogonal (cross terms). One column per mode of the current mode set; the selected mode is highlighted.',
+    }),
+  );
   /** @type {Record<string, HTMLTableCellElement>} */
   const cells = {};
   /** @type {HTMLTableCellElement[][]} cells by [row][mode], for the selection mark */
@@ -63,21 +81,26 @@ export function mount(ctx) {
     nModes = n;
     for (const k of Object.keys(cells)) delete cells[k];
     cols = Array.from({ length: n }, () => []);
-    headRow.replaceChildren(el('th', { scope: 'col', text: 'Quantity' }), ...Array.from({ length: n }, (_, k) => {
-      const th = el('th', { scope: 'col', text: `Mode ${k + 1}`, 'data-mode': String(k + 1) });
-      cols[k].push(th);
-      return th;
-    }));
-    tbody.replaceChildren(...ROWS.map(([key, label]) => {
-      const tr = el('tr', {}, el('th', { scope: 'row' }, rich(label)));
-      for (let k = 0; k < n; k++) {
-        const td = el('td', { 'data-field': `${key}-${k}`, text: '—' });
-        cells[`${key}-${k}`] = td;
-        cols[k].push(td);
-        tr.append(td);
-      }
-      return tr;
-    }));
+    headRow.replaceChildren(
+      el('th', { scope: 'col', text: 'Quantity' }),
+      ...Array.from({ length: n }, (_, k) => {
+        const th = el('th', { scope: 'col', text: `Mode ${k + 1}`, 'data-mode': String(k + 1) });
+        cols[k].push(th);
+        return th;
+      }),
+    );
+    tbody.replaceChildren(
+      ...ROWS.map(([key, label]) => {
+        const tr = el('tr', {}, el('th', { scope: 'row' }, rich(label)));
+        for (let k = 0; k < n; k++) {
+          const td = el('td', { 'data-field': `${key}-${k}`, text: '—' });
+          cells[`${key}-${k}`] = td;
+          cols[k].push(td);
+          tr.append(td);
+        }
+        return tr;
+      }),
+    );
   };
   layout(2);
 
@@ -85,7 +108,9 @@ export function mount(ctx) {
     if (!s.result) return;
     const a = s.result.analysis;
     layout(a.sim.modes.length);
-    const set = (key, k, text) => { if (cells[`${key}-${k}`]) cells[`${key}-${k}`].textContent = text; };
+    const set = (key, k, text) => {
+      if (cells[`${key}-${k}`]) cells[`${key}-${k}`].textContent = text;
+    };
     a.sim.modes.forEach((m, k) => {
       const f = m.floquet;
       const c = m.contribution_percent;
@@ -94,9 +119,19 @@ export function mount(ctx) {
       set('favg', k, fmt(f.averaged_freq_hz, 6));
       set('beat2', k, f.beat_period_vs_2fd_s == null ? '— (none)' : fmt(f.beat_period_vs_2fd_s, 4));
       set('beat', k, f.beat_period_s == null ? '— (none)' : `${fmt(f.beat_period_s, 4)} (n = ${f.beat_harmonic})`);
-      set('mult', k, f.multipliers.map(([re, im]) => `${fmt(re, 4)}${im >= 0 ? ' + ' : ' − '}${fmt(Math.abs(im), 4)}i`).join(', '));
+      set(
+        'mult',
+        k,
+        f.multipliers.map(([re, im]) => `${fmt(re, 4)}${im >= 0 ? ' + ' : ' − '}${fmt(Math.abs(im), 4)}i`).join(', '),
+      );
       set('mod', k, fmt(f.max_modulus, 8));
-      set('stable', k, f.stable ? `stable (growth ${fmt(f.growth_rate_per_s, 2)} 1/s)` : `UNSTABLE (growth ${fmt(f.growth_rate_per_s, 3)} 1/s)`);
+      set(
+        'stable',
+        k,
+        f.stable
+          ? `stable (growth ${fmt(f.growth_rate_per_s, 2)} 1/s)`
+          : `UNSTABLE (growth ${fmt(f.growth_rate_per_s, 3)} 1/s)`,
+      );
       set('euler', k, fmt(c.euler, 4));
       set('centrifugal', k, fmt(c.centrifugal, 4));
       set('coriolis', k, fmt(c.coriolis, 4));
@@ -104,19 +139,33 @@ export function mount(ctx) {
       // The core's run-wide peak (Analysis.peaks): no scan of every sample on the page's thread.
       set('peak', k, fmt(peakOf(a, k, 'total'), 4));
     });
-    cols.forEach((col, k) => col.forEach((c) => c.classList.toggle('wl-selmode', k === s.result.k)));
+    cols.forEach((col, k) => {
+      for (const c of col) c.classList.toggle('wl-selmode', k === s.result.k);
+    });
     table.dataset.selected = String(s.result.k + 1);
     table.dataset.modes = String(nModes);
   };
   const unsub = store.subscribe(['result'], draw);
   const header = () => ['Quantity', ...Array.from({ length: nModes }, (_, k) => `Mode ${k + 1}`)];
-  const rows = () => ROWS.map(([key, label]) => [label, ...Array.from({ length: nModes }, (_, k) => cells[`${key}-${k}`].textContent || '')]);
+  const rows = () =>
+    ROWS.map(([key, label]) => [
+      label,
+      ...Array.from({ length: nModes }, (_, k) => cells[`${key}-${k}`].textContent || ''),
+    ]);
   ctx.registerExport('numbers', {
     csv: () => {
       const s = store.get();
       if (!s.result) return null;
       const case_ = `wingbeat lab; ${toQuery(s)}`;
-      return ['# ' + case_, header().map((h) => h.toLowerCase()).join(','), ...rows().map((r) => r.map((c) => `"${c.replace(/"/g, '""')}"`).join(','))].join('\n') + '\n';
+      return (
+        [
+          '# ' + case_,
+          header()
+            .map((h) => h.toLowerCase())
+            .join(','),
+          ...rows().map((r) => r.map((c) => `"${c.replace(/"/g, '""')}"`).join(',')),
+        ].join('\n') + '\n'
+      );
     },
     table: () => (store.get().result ? [header(), ...rows()] : null),
   });

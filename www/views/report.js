@@ -16,14 +16,37 @@ export function mount(ctx) {
     btn.disabled = true;
     prog.hidden = false;
     status.textContent = 'computing…';
-    engine.run('reproduce').promise
-      .then(({ result: r, ms }) => {
+    engine
+      .run('reproduce')
+      .promise.then(({ result: r, ms }) => {
         out.replaceChildren();
         const t = el('table', { class: 'wl-reporttable' });
-        t.append(el('thead', {}, el('tr', {}, ...['Claim', '§', 'Paper says', 'wingbeat computes', 'Verdict'].map((h) => el('th', { scope: 'col', text: h })))));
+        t.append(
+          el(
+            'thead',
+            {},
+            el(
+              'tr',
+              {},
+              ...['Claim', '§', 'Paper says', 'wingbeat computes', 'Verdict'].map((h) =>
+                el('th', { scope: 'col', text: h }),
+              ),
+            ),
+          ),
+        );
         const tb = el('tbody');
         for (const c of r.claims) {
-          tb.append(el('tr', { class: `wl-v-${c.verdict}` }, el('td', { text: c.id }), el('td', { text: c.section }), el('td', { text: c.paper_says }), el('td', { text: c.computed }), el('td', { text: c.verdict })));
+          tb.append(
+            el(
+              'tr',
+              { class: `wl-v-${c.verdict}` },
+              el('td', { text: c.id }),
+              el('td', { text: c.section }),
+              el('td', { text: c.paper_says }),
+              el('td', { text: c.computed }),
+              el('td', { text: c.verdict }),
+            ),
+          );
         }
         t.append(tb);
         out.append(t);
@@ -31,9 +54,21 @@ export function mount(ctx) {
         status.textContent = `${s.holds} hold, ${s.partly} partly, ${s.fails} fail, ${s.input} inputs (${ms.toFixed(0)} ms, worker)`;
         ctx.emit('wl-study', { kind: 'reproduce' });
       })
-      .catch((e) => { status.textContent = `Error: ${errorText(e)}`; })
-      .finally(() => { btn.disabled = false; prog.hidden = true; });
+      .catch((e) => {
+        status.textContent = `Error: ${errorText(e)}`;
+      })
+      .finally(() => {
+        btn.disabled = false;
+        prog.hidden = true;
+      });
   });
-  section.append(el('div', { class: 'wl-study-controls' }, btn, prog, status), el('p', { class: 'wl-note', text: 'The paper preset as printed, zero initial conditions; every verdict is computed.' }), out);
+  section.append(
+    el('div', { class: 'wl-study-controls' }, btn, prog, status),
+    el('p', {
+      class: 'wl-note',
+      text: 'The paper preset as printed, zero initial conditions; every verdict is computed.',
+    }),
+    out,
+  );
   return { destroy() {} };
 }

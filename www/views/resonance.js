@@ -59,7 +59,11 @@ export function resonanceCSV(r, caseLine) {
     cols.push({ name: `mode${k + 1}_beat_period`, unit: 's', values: m.beat_period_s });
     cols.push({ name: `mode${k + 1}_stable`, unit: '1 = stable', values: Array.from(m.stable) });
   });
-  return toCSV(cols, [caseLine, 'Floquet analysis per flap frequency (wasm resonanceMap); natural frequencies ' + r.modes.map((m, k) => `f${k + 1} = ${m.freq_hz} Hz`).join(', ')]);
+  return toCSV(cols, [
+    caseLine,
+    'Floquet analysis per flap frequency (wasm resonanceMap); natural frequencies ' +
+      r.modes.map((m, k) => `f${k + 1} = ${m.freq_hz} Hz`).join(', '),
+  ]);
 }
 
 /**
@@ -77,15 +81,23 @@ export function drawResonanceHeatmap(canvas, r) {
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.fillStyle = '#fff';
   ctx.fillRect(0, 0, cssW, cssH);
-  const L = 64, R = 96, T = 10, B = 44;
+  const L = 64,
+    R = 96,
+    T = 10,
+    B = 44;
   const pw = cssW - L - R;
   const ph = cssH - T - B;
   const nx = r.flap_hz.length;
   const ny = r.alpha0.length;
   const z = new Float64Array(nx * ny);
   for (let i = 0; i < z.length; i++) z[i] = Math.max(...r.modes.map((m) => m.max_modulus[i]));
-  let zmin = Infinity, zmax = -Infinity;
-  for (const v of z) if (Number.isFinite(v)) { zmin = Math.min(zmin, v); zmax = Math.max(zmax, v); }
+  let zmin = Infinity,
+    zmax = -Infinity;
+  for (const v of z)
+    if (Number.isFinite(v)) {
+      zmin = Math.min(zmin, v);
+      zmax = Math.max(zmax, v);
+    }
   if (!(zmax > zmin)) zmax = zmin + 1e-6;
   const img = ctx.createImageData(nx, ny);
   for (let j = 0; j < ny; j++) {
@@ -93,7 +105,10 @@ export function drawResonanceHeatmap(canvas, r) {
       const v = z[j * nx + i];
       const [cr, cg, cb] = Number.isFinite(v) ? viridis((v - zmin) / (zmax - zmin)) : [200, 200, 200];
       const o = ((ny - 1 - j) * nx + i) * 4;
-      img.data[o] = cr; img.data[o + 1] = cg; img.data[o + 2] = cb; img.data[o + 3] = 255;
+      img.data[o] = cr;
+      img.data[o + 1] = cg;
+      img.data[o + 2] = cb;
+      img.data[o + 3] = 255;
     }
   }
   const tmp = document.createElement('canvas');
@@ -102,8 +117,10 @@ export function drawResonanceHeatmap(canvas, r) {
   context2d(tmp).putImageData(img, 0, 0);
   ctx.imageSmoothingEnabled = false;
   ctx.drawImage(tmp, L, T, pw, ph);
-  const f0 = r.flap_hz[0], f1 = r.flap_hz[nx - 1];
-  const a0 = r.alpha0[0], a1 = r.alpha0[ny - 1];
+  const f0 = r.flap_hz[0],
+    f1 = r.flap_hz[nx - 1];
+  const a0 = r.alpha0[0],
+    a1 = r.alpha0[ny - 1];
   const X = (f) => L + ((f - f0) / (f1 - f0 || 1)) * pw;
   const Y = (a) => T + ph - ((a - a0) / (a1 - a0 || 1)) * ph;
   // Resonance curves: where each mode's f_eff crosses n·f_d, row by row.
@@ -179,15 +196,41 @@ export function drawResonanceHeatmap(canvas, r) {
 function summaryTable(sum, caption) {
   const t = el('table', { class: 'wl-numtable wl-res-table' });
   t.append(el('caption', { class: 'wl-note', rich: caption }));
-  t.append(el('thead', {}, el('tr', {}, ...['Mode', 'Unstable for f_d in (Hz)', 'Largest |λ| (at f_d)', 'f_{eff} = n·f_d at f_d (Hz)'].map((h) => el('th', { scope: 'col', rich: h })))));
+  t.append(
+    el(
+      'thead',
+      {},
+      el(
+        'tr',
+        {},
+        ...['Mode', 'Unstable for f_d in (Hz)', 'Largest |λ| (at f_d)', 'f_{eff} = n·f_d at f_d (Hz)'].map((h) =>
+          el('th', { scope: 'col', rich: h }),
+        ),
+      ),
+    ),
+  );
   const tb = el('tbody');
   for (const m of sum.modes) {
-    tb.append(el('tr', {},
-      el('th', { scope: 'row', text: `${m.mode} (f = ${plain(fmt(m.freq_hz, 4))} Hz)` }),
-      el('td', { text: m.unstable.length ? m.unstable.map(([a, b]) => (a === b ? plain(fmt(a, 4)) : `${plain(fmt(a, 4))}–${plain(fmt(b, 4))}`)).join(', ') : 'none' }),
-      el('td', { text: `${plain(fmt(m.max_modulus, 6))} (${plain(fmt(m.max_at_hz, 4))} Hz)` }),
-      el('td', { text: m.resonances.length ? m.resonances.map((c) => `${plain(fmt(c.flap_hz, 4))} (n = ${c.n})`).join(', ') : 'none' }),
-    ));
+    tb.append(
+      el(
+        'tr',
+        {},
+        el('th', { scope: 'row', text: `${m.mode} (f = ${plain(fmt(m.freq_hz, 4))} Hz)` }),
+        el('td', {
+          text: m.unstable.length
+            ? m.unstable
+                .map(([a, b]) => (a === b ? plain(fmt(a, 4)) : `${plain(fmt(a, 4))}–${plain(fmt(b, 4))}`))
+                .join(', ')
+            : 'none',
+        }),
+        el('td', { text: `${plain(fmt(m.max_modulus, 6))} (${plain(fmt(m.max_at_hz, 4))} Hz)` }),
+        el('td', {
+          text: m.resonances.length
+            ? m.resonances.map((c) => `${plain(fmt(c.flap_hz, 4))} (n = ${c.n})`).join(', ')
+            : 'none',
+        }),
+      ),
+    );
   }
   t.append(tb);
   return t;
@@ -199,7 +242,11 @@ function plotBands(row) {
   const out = [];
   row.modes.forEach((m, k) => {
     const c = MODE_COLORS[k % MODE_COLORS.length];
-    for (const [a, b] of bands(row.fd, m.stable.map((s) => !s))) out.push({ x0: a - dx, x1: b + dx, fill: hexA(c, 0.16), color: c, mode: k + 1 });
+    for (const [a, b] of bands(
+      row.fd,
+      m.stable.map((s) => !s),
+    ))
+      out.push({ x0: a - dx, x1: b + dx, fill: hexA(c, 0.16), color: c, mode: k + 1 });
   });
   return out;
 }
@@ -227,7 +274,8 @@ function bandMarks(getBands) {
       ctx.strokeStyle = hexA(b.color, 0.45);
       ctx.lineWidth = r;
       for (let x = x0 - height; x < x1; x += 9 * r) {
-        const a = Math.max(x, x0), e = Math.min(x + height, x1);
+        const a = Math.max(x, x0),
+          e = Math.min(x + height, x1);
         ctx.beginPath();
         ctx.moveTo(a, top + height - (a - x));
         ctx.lineTo(e, top + height - (e - x));
@@ -253,9 +301,12 @@ function bandMarks(getBands) {
  */
 function clipLines(series, nModes) {
   let hi = 10;
-  for (const s of series.slice(0, nModes)) for (const v of s.y) if (v != null && Number.isFinite(v)) hi = Math.max(hi, v);
+  for (const s of series.slice(0, nModes))
+    for (const v of s.y) if (v != null && Number.isFinite(v)) hi = Math.max(hi, v);
   const top = 1.15 * hi;
-  return series.map((s, i) => (i < nModes ? s : { ...s, y: Array.from(s.y, (v) => (v != null && v <= top ? v : null)) }));
+  return series.map((s, i) =>
+    i < nModes ? s : { ...s, y: Array.from(s.y, (v) => (v != null && v <= top ? v : null)) },
+  );
 }
 
 /** @param {import('../lab.js').ViewContext} ctx */
@@ -279,21 +330,44 @@ export function mount(ctx) {
   const [lt, to] = num('to (Hz)', 60, 0.1, 1000, 'any');
   const [ln, pts] = num('points', 221, 2, 2001, 1);
   const two = el('input', { type: 'checkbox', id: `${uid}-2d` });
-  const l2 = el('label', { class: 'wl-inline wl-check', for: `${uid}-2d` }, two, ' ', el('span', { rich: 'α_0 as a second axis' }));
+  const l2 = el(
+    'label',
+    { class: 'wl-inline wl-check', for: `${uid}-2d` },
+    two,
+    ' ',
+    el('span', { rich: 'α_0 as a second axis' }),
+  );
   const [la0, a0from] = num('α_0 from (rad)', 0.2, 0, 1.5, 0.05);
   const [la1, a0to] = num('α_0 to (rad)', 1.2, 0, 1.5, 0.05);
   const [lan, a0n] = num('α_0 values', 11, 2, 201, 1);
   const axis2 = el('span', { class: 'wl-res-axis2', hidden: true }, la0, la1, lan);
-  two.addEventListener('change', () => { axis2.hidden = !two.checked; });
+  two.addEventListener('change', () => {
+    axis2.hidden = !two.checked;
+  });
   const runBtn = el('button', { type: 'button', class: 'wl-run', text: 'Run', 'data-run': 'resonance' });
-  const cancelBtn = el('button', { type: 'button', class: 'wl-cancel', text: 'Cancel', 'data-cancel': 'resonance', hidden: true });
-  const prog = el('progress', { class: 'wl-progress', max: 1, value: 0, hidden: true, 'aria-label': 'Resonance map progress' });
+  const cancelBtn = el('button', {
+    type: 'button',
+    class: 'wl-cancel',
+    text: 'Cancel',
+    'data-cancel': 'resonance',
+    hidden: true,
+  });
+  const prog = el('progress', {
+    class: 'wl-progress',
+    max: 1,
+    value: 0,
+    hidden: true,
+    'aria-label': 'Resonance map progress',
+  });
   const status = el('span', { class: 'wl-status', role: 'status' });
   const box = el('div', { class: 'wl-study wl-resonance', 'data-study': 'resonance' });
   const out = el('div', { class: 'wl-study-out' });
   box.append(
     el('div', { class: 'wl-study-controls' }, lf, lt, ln, l2, axis2, runBtn, cancelBtn, prog, status),
-    el('p', { class: 'wl-note', rich: 'Floquet analysis of Eq. 13 at each flap frequency, with the other parameters as set (no time series): the effective natural frequency f_{eff} of each mode (top) and the largest |multiplier| of the monodromy matrix over one flap period (bottom; above 1 the mode grows without bound — a parametric instability; shaded bands). Where f_{eff} meets a grey line n·f_d the flapping drives the mode at resonance and the beat period 1/|f_{eff} − n·f_d| becomes infinite.' }),
+    el('p', {
+      class: 'wl-note',
+      rich: 'Floquet analysis of Eq. 13 at each flap frequency, with the other parameters as set (no time series): the effective natural frequency f_{eff} of each mode (top) and the largest |multiplier| of the monodromy matrix over one flap period (bottom; above 1 the mode grows without bound — a parametric instability; shaded bands). Where f_{eff} meets a grey line n·f_d the flapping drives the mode at resonance and the beat period 1/|f_{eff} − n·f_d| becomes infinite.',
+    }),
     out,
   );
   section.append(box);
@@ -327,14 +401,28 @@ export function mount(ctx) {
       });
       out.append(canvas);
       const rowSel = el('select', { id: `${uid}-row` });
-      r.alpha0.forEach((a, j) => rowSel.append(el('option', { value: String(j), text: `α0 = ${plain(fmt(a, 4))} rad` })));
+      r.alpha0.forEach((a, j) => {
+        rowSel.append(el('option', { value: String(j), text: `α0 = ${plain(fmt(a, 4))} rad` }));
+      });
       let best = 0;
       const a0 = store.get().alpha0;
-      r.alpha0.forEach((a, j) => { if (Math.abs(a - a0) < Math.abs(r.alpha0[best] - a0)) best = j; });
+      r.alpha0.forEach((a, j) => {
+        if (Math.abs(a - a0) < Math.abs(r.alpha0[best] - a0)) best = j;
+      });
       rowSel.value = String(best);
       rowIndex = best;
-      rowSel.addEventListener('change', () => { rowIndex = Number(rowSel.value); drawRow(r, sumBox); });
-      out.append(el('p', { class: 'wl-inline' }, el('label', { for: `${uid}-row`, text: 'Curves and table below for ' }), rowSel));
+      rowSel.addEventListener('change', () => {
+        rowIndex = Number(rowSel.value);
+        drawRow(r, sumBox);
+      });
+      out.append(
+        el(
+          'p',
+          { class: 'wl-inline' },
+          el('label', { for: `${uid}-row`, text: 'Curves and table below for ' }),
+          rowSel,
+        ),
+      );
       const paint = () => drawResonanceHeatmap(canvas, r);
       requestAnimationFrame(paint);
       if (typeof ResizeObserver === 'function') {
@@ -343,9 +431,21 @@ export function mount(ctx) {
       }
     } else rowIndex = 0;
     const row0 = resonanceRow(r, rowIndex);
-    const modeSeries = row0.modes.map((m, k) => ({ label: `mode ${k + 1}: f_{eff} (f_${k + 1} = ${fmt(m.freq_hz, 4)} Hz)`, unit: 'Hz', color: MODE_COLORS[k % MODE_COLORS.length], width: 2 }));
+    const modeSeries = row0.modes.map((m, k) => ({
+      label: `mode ${k + 1}: f_{eff} (f_${k + 1} = ${fmt(m.freq_hz, 4)} Hz)`,
+      unit: 'Hz',
+      color: MODE_COLORS[k % MODE_COLORS.length],
+      width: 2,
+    }));
     const lineSeries = [];
-    for (let n = 1; n <= N_LINES; n++) lineSeries.push({ label: `${n}·f_d`, unit: 'Hz', color: ['#6b6b6b', '#8a8a8a', '#9e9e9e', '#b0b0b0'][n - 1], dash: [6, 3 + n], width: 1 });
+    for (let n = 1; n <= N_LINES; n++)
+      lineSeries.push({
+        label: `${n}·f_d`,
+        unit: 'Hz',
+        color: ['#6b6b6b', '#8a8a8a', '#9e9e9e', '#b0b0b0'][n - 1],
+        dash: [6, 3 + n],
+        width: 1,
+      });
     fPlot = linePlot(out, {
       name: 'resonance-feff',
       title: 'Effective frequency vs flap frequency',
@@ -356,14 +456,16 @@ export function mount(ctx) {
       height: 260,
       bands: () => plotBands(resonanceRow(r, rowIndex)),
       hooks: { draw: [bandMarks(() => plotBands(resonanceRow(r, rowIndex)))] },
-      ariaLabel: 'Effective frequency of each mode against flap frequency, with the lines n·f_d and the unstable bands shaded',
+      ariaLabel:
+        'Effective frequency of each mode against flap frequency, with the lines n·f_d and the unstable bands shaded',
       keys: true,
     });
     // Keep the n·f_d lines from stretching the axis: the y range follows the f_eff curves.
     const nm = row0.modes.length;
     fPlot.u.scales.y.range = (u) => {
       let hi = 10;
-      for (let k = 1; k <= nm; k++) for (const v of u.data[k] || []) if (v != null && Number.isFinite(v)) hi = Math.max(hi, v);
+      for (let k = 1; k <= nm; k++)
+        for (const v of u.data[k] || []) if (v != null && Number.isFinite(v)) hi = Math.max(hi, v);
       return [0, hi * 1.15];
     };
     mPlot = linePlot(out, {
@@ -372,7 +474,12 @@ export function mount(ctx) {
       xLabel: 'flap frequency f_d',
       xUnit: 'Hz',
       yLabel: 'largest |multiplier| per flap period (–)',
-      series: row0.modes.map((m, k) => ({ label: `mode ${k + 1}: max |λ|`, unit: '', color: MODE_COLORS[k % MODE_COLORS.length], width: 2 })),
+      series: row0.modes.map((_m, k) => ({
+        label: `mode ${k + 1}: max |λ|`,
+        unit: '',
+        color: MODE_COLORS[k % MODE_COLORS.length],
+        width: 2,
+      })),
       height: 170,
       bands: () => plotBands(resonanceRow(r, rowIndex)),
       hooks: { draw: [bandMarks(() => plotBands(resonanceRow(r, rowIndex)))] },
@@ -380,8 +487,14 @@ export function mount(ctx) {
       keys: true,
     });
     mPlot.u.scales.y.range = (u) => {
-      let lo = 1, hi = 1;
-      for (let k = 1; k <= nm; k++) for (const v of u.data[k] || []) if (v != null && Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+      let lo = 1,
+        hi = 1;
+      for (let k = 1; k <= nm; k++)
+        for (const v of u.data[k] || [])
+          if (v != null && Number.isFinite(v)) {
+            lo = Math.min(lo, v);
+            hi = Math.max(hi, v);
+          }
       const pad = Math.max(1e-3, (hi - lo) * 0.08);
       return [lo - pad, hi + pad];
     };
@@ -413,7 +526,8 @@ export function mount(ctx) {
     const o = opts || { from_hz: Number(from.value), to_hz: Number(to.value), points: Math.round(Number(pts.value)) };
     if (!opts && two.checked) {
       const n = Math.max(2, Math.round(Number(a0n.value)));
-      const lo = Number(a0from.value), hi = Number(a0to.value);
+      const lo = Number(a0from.value),
+        hi = Number(a0to.value);
       o.alpha0_values = Array.from({ length: n }, (_, j) => lo + ((hi - lo) * j) / (n - 1));
     }
     runBtn.disabled = true;
@@ -467,8 +581,16 @@ export function mount(ctx) {
         xLabel: 'flap frequency f_d (Hz)',
         yLabel: 'frequency f (Hz)',
         series: clipLines(fPlot.exportSeries(), row.modes.length),
-        bands: plotBands(row).map((b) => ({ x0: b.x0, x1: b.x1, color: b.color, fill: b.fill, label: b.x1 - b.x0 > 0.06 * (row.fd[row.fd.length - 1] - row.fd[0]) ? `mode ${b.mode} unstable` : '' })),
-        note: 'Shaded: Floquet-unstable (largest |multiplier| > 1). Grey: n·f_d. ' + plain(resonanceSummary(result, rowIndex).sentence),
+        bands: plotBands(row).map((b) => ({
+          x0: b.x0,
+          x1: b.x1,
+          color: b.color,
+          fill: b.fill,
+          label: b.x1 - b.x0 > 0.06 * (row.fd[row.fd.length - 1] - row.fd[0]) ? `mode ${b.mode} unstable` : '',
+        })),
+        note:
+          'Shaded: Floquet-unstable (largest |multiplier| > 1). Grey: n·f_d. ' +
+          plain(resonanceSummary(result, rowIndex).sentence),
       };
     },
   });

@@ -21,7 +21,9 @@ export function drawSensorMarkers(c2, marks) {
   c2.textBaseline = 'middle';
   for (const m of marks) {
     c2.fillStyle = '#111';
-    c2.beginPath(); c2.arc(m.x, m.y, 2, 0, 2 * Math.PI); c2.fill();
+    c2.beginPath();
+    c2.arc(m.x, m.y, 2, 0, 2 * Math.PI);
+    c2.fill();
   }
   const groups = clusterMarkers(marks, 16);
   for (let j = groups.length - 1; j >= 0; j--) {
@@ -29,10 +31,14 @@ export function drawSensorMarkers(c2, marks) {
     const label = groupLabel(g.ranks);
     const w = Math.max(16, c2.measureText(label).width + 8);
     // the label sits up and to the right of the first sensor of its group, joined by a line
-    const lx = g.x + 6 + w / 2, ly = g.y - 12;
+    const lx = g.x + 6 + w / 2,
+      ly = g.y - 12;
     c2.strokeStyle = '#111';
     c2.lineWidth = 1;
-    c2.beginPath(); c2.moveTo(g.x, g.y); c2.lineTo(lx - w / 2, ly); c2.stroke();
+    c2.beginPath();
+    c2.moveTo(g.x, g.y);
+    c2.lineTo(lx - w / 2, ly);
+    c2.stroke();
     c2.fillStyle = '#fff';
     c2.lineWidth = 1.5;
     c2.beginPath();
@@ -54,10 +60,14 @@ export function drawSensorMarkers(c2, marks) {
 export function drawPickRing(c2, x, y) {
   c2.lineWidth = 3;
   c2.strokeStyle = '#111';
-  c2.beginPath(); c2.arc(x, y, 11, 0, 2 * Math.PI); c2.stroke();
+  c2.beginPath();
+  c2.arc(x, y, 11, 0, 2 * Math.PI);
+  c2.stroke();
   c2.lineWidth = 1.5;
   c2.strokeStyle = '#ff3d7f';
-  c2.beginPath(); c2.arc(x, y, 11, 0, 2 * Math.PI); c2.stroke();
+  c2.beginPath();
+  c2.arc(x, y, 11, 0, 2 * Math.PI);
+  c2.stroke();
 }
 
 /**
@@ -97,15 +107,29 @@ export function sensingMapBox(ctx, touch) {
   // the map and the sensors on the 3-D wing (store `sense_map`; views/wing3d.js colour 6)
   const show3d = el('button', { type: 'button', class: 'wl-small', text: 'Show on the 3-D wing', 'data-show3d': '' });
   show3d.disabled = true;
-  const sensorList = el('ol', { class: 'wl-sense-list', 'aria-label': 'The best sensors, in the order the greedy placement chose them' });
-  const box = el('div', { class: 'wl-smap wl-sense-map', 'data-sensemap': '' },
-    el('div', { class: 'wl-smap-head' },
+  const sensorList = el('ol', {
+    class: 'wl-sense-list',
+    'aria-label': 'The best sensors, in the order the greedy placement chose them',
+  });
+  const box = el(
+    'div',
+    { class: 'wl-smap wl-sense-map', 'data-sensemap': '' },
+    el(
+      'div',
+      { class: 'wl-smap-head' },
       el('h3', { class: 'wl-smap-title', text: 'Where rotation shows up: detectability per point' }),
-      ctx.exportButtons('sensing', 'Sensing map and sensors', ['csv', 'png'])),
+      ctx.exportButtons('sensing', 'Sensing map and sensors', ['csv', 'png']),
+    ),
     canvas,
     el('div', { class: 'wl-smap-legendrow' }, legend, legendText),
     pointText,
-    el('p', { class: 'wl-note wl-sense-3d' }, show3d, ' this map (the same log-D scale) and the K sensors on the flapping 3-D wing.'),
-    el('details', { class: 'wl-sense-details' }, el('summary', { text: 'The chosen sensors' }), sensorList));
+    el(
+      'p',
+      { class: 'wl-note wl-sense-3d' },
+      show3d,
+      ' this map (the same log-D scale) and the K sensors on the flapping 3-D wing.',
+    ),
+    el('details', { class: 'wl-sense-details' }, el('summary', { text: 'The chosen sensors' }), sensorList),
+  );
   return { box, canvas, legend, legendText, pointText, show3d, sensorList };
 }

@@ -50,7 +50,8 @@ export function sensingPlots(body) {
   const curvePlot = linePlot(body, {
     name: 'sensing-curve',
     title: 'Detection against the number of sensors',
-    ariaLabel: 'Plot of the detection probability and of the share of the all-sensor detection index against the number of sensors K',
+    ariaLabel:
+      'Plot of the detection probability and of the share of the all-sensor detection index against the number of sensors K',
     xLabel: 'sensors K',
     xUnit: 'count',
     yLabel: 'P_d, share of d′_{all}',
@@ -73,9 +74,13 @@ export function sensingPlots(body) {
   function showSeries(result, sr) {
     const d = sr.delta;
     const w = seriesPlot.u.bbox ? seriesPlot.u.bbox.width / (globalThis.devicePixelRatio || 1) : 600;
-    seriesPlot.setData(decimate(result.t, [d.eps_x, d.eps_y, d.gamma_xy], Math.min(1500, Math.max(200, Math.round(w)))));
+    seriesPlot.setData(
+      decimate(result.t, [d.eps_x, d.eps_y, d.gamma_xy], Math.min(1500, Math.max(200, Math.round(w)))),
+    );
     const peak = Math.max(peakAbs(d.eps_x), peakAbs(d.eps_y), peakAbs(d.gamma_xy));
-    seriesPlot.setSummary(`Peak |Δε| at the point: ε_x ${fmt(peakAbs(d.eps_x), 3)}, ε_y ${fmt(peakAbs(d.eps_y), 3)}, γ_xy ${fmt(peakAbs(d.gamma_xy), 3)} (dimensionless).`);
+    seriesPlot.setSummary(
+      `Peak |Δε| at the point: ε_x ${fmt(peakAbs(d.eps_x), 3)}, ε_y ${fmt(peakAbs(d.eps_y), 3)}, γ_xy ${fmt(peakAbs(d.gamma_xy), 3)} (dimensionless).`,
+    );
     if (sr.spectrum) {
       const sp = sr.spectrum;
       const freq = sp.eps_x.freq_hz;
@@ -85,9 +90,11 @@ export function sensingPlots(body) {
       specMarkers = marks;
       specPlot.redraw();
       const top = sp.eps_x.peaks && sp.eps_x.peaks[0];
-      specPlot.setSummary(peak > 0
-        ? `Welch PSD of Δε at the point up to ${fmt(fmax, 3)} Hz; grey lines: multiples of the flap frequency ${fmt(result.flap_freq_hz, 3)} Hz.${top ? ` Strongest Δε_x peak at ${fmt(top.freq_hz, 4)} Hz.` : ''}`
-        : 'Δε is zero: no body rotation, no spectrum.');
+      specPlot.setSummary(
+        peak > 0
+          ? `Welch PSD of Δε at the point up to ${fmt(fmax, 3)} Hz; grey lines: multiples of the flap frequency ${fmt(result.flap_freq_hz, 3)} Hz.${top ? ` Strongest Δε_x peak at ${fmt(top.freq_hz, 4)} Hz.` : ''}`
+          : 'Δε is zero: no body rotation, no spectrum.',
+      );
     } else {
       specPlot.setSummary('Spectrum: updating for the picked point…');
     }
@@ -110,7 +117,11 @@ export function sensingPlots(body) {
   }
 
   return {
-    seriesPlot, specPlot, curvePlot, showSeries, showCurve,
+    seriesPlot,
+    specPlot,
+    curvePlot,
+    showSeries,
+    showCurve,
     destroy() {
       seriesPlot.destroy();
       specPlot.destroy();

@@ -35,11 +35,20 @@ export const SENSE_DELAY_MS = 250;
  * @param {import('../lab.js').ViewContext} ctx
  */
 function intro(ctx) {
-  ctx.section.append(el('p', {
-    class: 'wl-note',
-    rich: 'When the body turns while the wings flap, the Coriolis and centrifugal forces change and the wing bends and twists a little differently. Here the FE wing is simulated twice, with and without a constant body rotation; the difference Δε is the strain the rotation causes. The map shows where Δε stands out best against the flapping strain (1 % stroke-to-stroke variation) and sensor noise (σ = 10^{-7}), and where K strain sensors detect the rotation best.',
-  }));
-  const expLink = el('a', { class: 'wl-sense-exp', href: new URL(`../index.html?${experimentQuery('sensing', { panels: 'controls,experiments,sensing' })}`, import.meta.url).href, text: 'Guided experiment: how many sensors does it take?' });
+  ctx.section.append(
+    el('p', {
+      class: 'wl-note',
+      rich: 'When the body turns while the wings flap, the Coriolis and centrifugal forces change and the wing bends and twists a little differently. Here the FE wing is simulated twice, with and without a constant body rotation; the difference Δε is the strain the rotation causes. The map shows where Δε stands out best against the flapping strain (1 % stroke-to-stroke variation) and sensor noise (σ = 10^{-7}), and where K strain sensors detect the rotation best.',
+    }),
+  );
+  const expLink = el('a', {
+    class: 'wl-sense-exp',
+    href: new URL(
+      `../index.html?${experimentQuery('sensing', { panels: 'controls,experiments,sensing' })}`,
+      import.meta.url,
+    ).href,
+    text: 'Guided experiment: how many sensors does it take?',
+  });
   expLink.addEventListener('click', (ev) => {
     if (ev.button !== 0 || ev.ctrlKey || ev.metaKey || ev.shiftKey || ev.altKey) return;
     ev.preventDefault();
@@ -54,9 +63,14 @@ export function mount(ctx) {
   const touch = isTouch();
   intro(ctx);
   const ui = sensingControls(ctx, {
-    onK: () => { drawMap(); drawCurve(); },
+    onK: () => {
+      drawMap();
+      drawCurve();
+    },
     onScale: () => drawMap(),
-    onCancel: () => { if (running) engine.cancel(running.id); },
+    onCancel: () => {
+      if (running) engine.cancel(running.id);
+    },
   });
   const { status, prog, cancel, needFe } = ui;
   const map = sensingMapBox(ctx, touch);
@@ -91,7 +105,8 @@ export function mount(ctx) {
   let frame = null;
   let drawn = 0;
   /** The wing and mode set the map was last drawn for. */
-  let lastFe = null, lastModes = '';
+  let lastFe = null,
+    lastModes = '';
 
   /** What an analysis depends on: the body rate, the point and the config (kinematics, modes, run). */
   const keyOf = (s) => JSON.stringify({ w: bodyRateVector(s), p: point, c: s.result ? s.result.cfg : null });
@@ -109,43 +124,55 @@ export function mount(ctx) {
     const cfg = s.result.cfg;
     const key = keyOf(s);
     if (result && resultFor && resultFor.fe === fe && resultFor.key === key) return;
-    if (running) { dirty = true; return; }
+    if (running) {
+      dirty = true;
+      return;
+    }
     const w = bodyRateVector(s);
     const t0 = performance.now();
     /** @type {Record<string, unknown>} */
     const opts = {};
     if (point) opts.point_mm = point;
-    const job = engine.run('sense', { cfg, fe: { nodes: fe.nodes, triangles: fe.triangles, strain_nodes: fe.strain_nodes }, body_rate: w, opts }, (done, total) => {
-      prog.max = total;
-      prog.value = done;
-    });
+    const job = engine.run(
+      'sense',
+      { cfg, fe: { nodes: fe.nodes, triangles: fe.triangles, strain_nodes: fe.strain_nodes }, body_rate: w, opts },
+      (done, total) => {
+        prog.max = total;
+        prog.value = done;
+      },
+    );
     running = { id: job.id, key };
     dirty = false;
     mapBox.dataset.state = 'computing';
     status.textContent = `Computing: two runs of the FE wing (with and without ω_b), then ${fe.n_nodes} nodes × 3 strain components…`;
     prog.hidden = false;
     cancel.hidden = false;
-    job.promise.then(({ result: r, ms }) => {
-      running = null;
-      result = r;
-      resultFor = { fe, key };
-      resultCfg = JSON.stringify(cfg);
-      const t1 = performance.now();
-      drawAll();
-      const t2 = performance.now();
-      mapBox.dataset.ms = String(Math.round(t2 - t0));
-      mapBox.dataset.workerMs = String(Math.round(ms));
-      status.textContent = `Done in ${fmt((t2 - t0) / 1000, 2)} s (analysis ${fmt(ms / 1000, 2)} s in the worker, drawing ${fmt(t2 - t1, 2)} ms).${r.warnings.length ? ' Warnings: ' + r.warnings.join('; ') : ''}`;
-    }, (e) => {
-      const why = errorText(e);
-      mapBox.dataset.state = why === 'cancelled' ? 'cancelled' : 'error';
-      status.textContent = why === 'cancelled' ? 'Cancelled; change a setting to compute again.' : `Error: ${why}`;
-    }).finally(() => {
-      running = null;
-      prog.hidden = true;
-      cancel.hidden = true;
-      if (dirty) schedule();
-    });
+    job.promise
+      .then(
+        ({ result: r, ms }) => {
+          running = null;
+          result = r;
+          resultFor = { fe, key };
+          resultCfg = JSON.stringify(cfg);
+          const t1 = performance.now();
+          drawAll();
+          const t2 = performance.now();
+          mapBox.dataset.ms = String(Math.round(t2 - t0));
+          mapBox.dataset.workerMs = String(Math.round(ms));
+          status.textContent = `Done in ${fmt((t2 - t0) / 1000, 2)} s (analysis ${fmt(ms / 1000, 2)} s in the worker, drawing ${fmt(t2 - t1, 2)} ms).${r.warnings.length ? ' Warnings: ' + r.warnings.join('; ') : ''}`;
+        },
+        (e) => {
+          const why = errorText(e);
+          mapBox.dataset.state = why === 'cancelled' ? 'cancelled' : 'error';
+          status.textContent = why === 'cancelled' ? 'Cancelled; change a setting to compute again.' : `Error: ${why}`;
+        },
+      )
+      .finally(() => {
+        running = null;
+        prog.hidden = true;
+        cancel.hidden = true;
+        if (dirty) schedule();
+      });
   }
 
   function stale() {
@@ -167,7 +194,10 @@ export function mount(ctx) {
     const fe = senseFe(s);
     needFe.hidden = !!(s.modes === 'fe');
     body.hidden = s.modes !== 'fe';
-    if (s.modes !== 'fe') { mapBox.dataset.state = 'none'; return; }
+    if (s.modes !== 'fe') {
+      mapBox.dataset.state = 'none';
+      return;
+    }
     if (!fe) {
       mapBox.dataset.state = 'none';
       status.textContent = 'Waiting for the FE wing’s modes…';
@@ -189,7 +219,8 @@ export function mount(ctx) {
       return scale ? viridis(0) : [215, 215, 215];
     });
     const K = have ? kNow() : 0;
-    const marks = result && have ? result.sensors.slice(0, K).map((sn) => ({ x: px(sn.x_mm), y: py(sn.y_mm), rank: sn.rank })) : [];
+    const marks =
+      result && have ? result.sensors.slice(0, K).map((sn) => ({ x: px(sn.x_mm), y: py(sn.y_mm), rank: sn.rank })) : [];
     const groups = drawSensorMarkers(c2, marks);
     canvas.dataset.markers = JSON.stringify(groups.map((g) => g.ranks));
     const p = point || (have ? result.point_mm : null);
@@ -212,9 +243,15 @@ export function mount(ctx) {
     if (have && scale) publish(fe, scale, K);
     canvas.dataset.drawn = String(++drawn);
     // the sensors as text
-    sensorList.replaceChildren(...(have ? result.sensors.slice(0, K).map((sn) => el('li', {
-      text: `node ${sn.node}, ${COMP_LABEL[sn.component] || sn.component} at (${fmt(sn.x_mm, 3)}, ${fmt(sn.y_mm, 3)}) mm, D = ${fmt(sn.d, 3)}`,
-    })) : []));
+    sensorList.replaceChildren(
+      ...(have
+        ? result.sensors.slice(0, K).map((sn) =>
+            el('li', {
+              text: `node ${sn.node}, ${COMP_LABEL[sn.component] || sn.component} at (${fmt(sn.x_mm, 3)}, ${fmt(sn.y_mm, 3)}) mm, D = ${fmt(sn.d, 3)}`,
+            }),
+          )
+        : []),
+    );
     if (p) {
       const src = point ? 'the picked point' : 'the best sensor (default)';
       pointText.textContent = `Δε is plotted at ${src}, (x, y) = (${fmt(p[0], 3)}, ${fmt(p[1], 3)}) mm. ${touch ? 'Tap the map to move it.' : 'Click the map, or focus it and use the arrow keys (Shift: bigger steps), to move it.'}`;
@@ -225,7 +262,14 @@ export function mount(ctx) {
   let published = null;
   /** Puts the map (colour positions per node) and the first K sensors in the store for the 3-D view. */
   function publish(/** @type {any} */ fe, /** @type {ReturnType<typeof mapScale>} */ scale, /** @type {number} */ K) {
-    if (published && published.result === result && published.k === K && published.mode === scale.mode && published.show === showCount) return;
+    if (
+      published &&
+      published.result === result &&
+      published.k === K &&
+      published.mode === scale.mode &&
+      published.show === showCount
+    )
+      return;
     published = { result, k: K, mode: scale.mode, show: showCount };
     store.set({ sense_map: senseMapOf(fe, result, scale, K, resultCfg, showCount) });
   }
@@ -234,7 +278,7 @@ export function mount(ctx) {
   function seriesNow() {
     if (!result) return null;
     if (!point) return { delta: result.delta, spectrum: result.spectrum };
-    const same = (result.point_source === 'opts' && result.point_mm[0] === point[0] && result.point_mm[1] === point[1]);
+    const same = result.point_source === 'opts' && result.point_mm[0] === point[0] && result.point_mm[1] === point[1];
     if (same) return { delta: result.delta, spectrum: result.spectrum };
     try {
       return { delta: deltaAt(engine.modalStrainAt(point), result.dq), spectrum: null };
@@ -261,7 +305,10 @@ export function mount(ctx) {
     if (!fe) return false;
     const n = fe.nodes.length / 3;
     const xy = new Float64Array(2 * n);
-    for (let i = 0; i < n; i++) { xy[2 * i] = fe.nodes[3 * i] * 1e3; xy[2 * i + 1] = fe.nodes[3 * i + 1] * 1e3; }
+    for (let i = 0; i < n; i++) {
+      xy[2 * i] = fe.nodes[3 * i] * 1e3;
+      xy[2 * i + 1] = fe.nodes[3 * i + 1] * 1e3;
+    }
     if (!S.pick(fe.nodes, fe.triangles, { xy, depth: new Float64Array(n) }, x, y)) {
       pointText.textContent = `(${fmt(x, 3)}, ${fmt(y, 3)}) mm is outside the wing: choose a point on the wing.`;
       return false;
@@ -273,25 +320,42 @@ export function mount(ctx) {
     schedule();
     return true;
   }
-  pickOnMap(canvas, () => frame, () => point || (result ? result.point_mm : null), choose);
+  pickOnMap(
+    canvas,
+    () => frame,
+    () => point || (result ? result.point_mm : null),
+    choose,
+  );
 
   const unsubs = [
-    store.subscribe(['body_rate', 'body_axis'], () => { ui.sync(); schedule(); }),
+    store.subscribe(['body_rate', 'body_axis'], () => {
+      ui.sync();
+      schedule();
+    }),
     store.subscribe(['result', 'fe', 'modes'], () => {
       // a new live result alone (a slider moved) only asks for a new analysis; the map is
       // redrawn when that arrives, or now when the wing or the mode set changed
       const s = store.get();
       const fe = senseFe(s);
       if (result && resultFor && resultFor.fe !== fe) point = null;
-      if (fe !== lastFe || s.modes !== lastModes) { lastFe = fe; lastModes = s.modes; drawMap(); }
+      if (fe !== lastFe || s.modes !== lastModes) {
+        lastFe = fe;
+        lastModes = s.modes;
+        drawMap();
+      }
       schedule();
     }),
   ];
-  const observers = watchVisibleAndSize(section, mapBox, (v) => {
-    const was = visible;
-    visible = v;
-    if (visible && !was) schedule();
-  }, drawMap);
+  const observers = watchVisibleAndSize(
+    section,
+    mapBox,
+    (v) => {
+      const was = visible;
+      visible = v;
+      if (visible && !was) schedule();
+    },
+    drawMap,
+  );
   ui.sync();
   drawMap();
   schedule();
@@ -304,14 +368,20 @@ export function mount(ctx) {
       const s = store.get();
       const fe = senseFe(s);
       if (!fe || !result || stale()) return null;
-      return ctx.toCSV(senseCsvColumns(fe, result),
-        [`wingbeat lab; ${toQuery(s)}`, `detectability per FE node, body rate [${result.body_rate.join(', ')}] rad/s (body axes); ${result.method}`]);
+      return ctx.toCSV(senseCsvColumns(fe, result), [
+        `wingbeat lab; ${toQuery(s)}`,
+        `detectability per FE node, body rate [${result.body_rate.join(', ')}] rad/s (body axes); ${result.method}`,
+      ]);
     },
     canvas: () => (result && !stale() ? canvas : null),
   });
   return {
-    get result() { return result; },
-    get point() { return point; },
+    get result() {
+      return result;
+    },
+    get point() {
+      return point;
+    },
     choose,
     destroy: () => {
       for (const f of unsubs) f();
@@ -343,7 +413,10 @@ function watchVisibleAndSize(section, box, onVisible, onResize) {
     let lastW = 0;
     ro = new ResizeObserver(() => {
       const w = box.clientWidth;
-      if (w && Math.abs(w - lastW) > 4) { lastW = w; onResize(); }
+      if (w && Math.abs(w - lastW) > 4) {
+        lastW = w;
+        onResize();
+      }
     });
     ro.observe(box);
   }

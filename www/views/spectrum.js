@@ -3,7 +3,7 @@
 // the stiffness force S(t)·q_k (left axis), and of the total response (right axis), with
 // markers at the flap harmonics n·f_d, the natural frequency f_k and the Floquet f_{eff}.
 import { el, rich, isTouch } from '../dom.js';
-import { fmt, plain, UNITS, PAPER_UNITS_NOTE } from '../format.js';
+import { fmt, UNITS, PAPER_UNITS_NOTE } from '../format.js';
 import { linePlot, color, log10OrNull } from '../plot.js';
 import { SAMPLE_RATE_HZ, toQuery, describe } from '../state.js';
 
@@ -16,7 +16,8 @@ export function mount(ctx) {
   const plot = linePlot(section, {
     name: 'spectrum',
     title: 'Spectra',
-    ariaLabel: 'Spectra plot: power spectral densities of the force terms and of the total response against frequency, log scale',
+    ariaLabel:
+      'Spectra plot: power spectral densities of the force terms and of the total response against frequency, log scale',
     xLabel: 'f',
     xUnit: 'Hz',
     yLabel: `force PSD (${UNITS.fpsd.label})`,
@@ -32,17 +33,20 @@ export function mount(ctx) {
     markers: () => markers,
     height: 250,
   });
-  section.append(el('p', {
-    class: 'wl-note',
-    rich: `Welch PSD, Hann window, 8192-sample segments, one-sided. Grey lines: multiples n·f_d of the flap frequency; blue dashed: natural frequency f_k; red: Floquet effective frequency f_{eff}. S(t) = α̇^2cos^2β + β̇^2 is the stiffness coefficient (1/s^2); the stiffness force S(t)·q is in force units. ${isTouch() ? 'Touch the plot for values.' : 'Hover for values (legend); drag to zoom, double-click to reset.'}`,
-  }));
+  section.append(
+    el('p', {
+      class: 'wl-note',
+      rich: `Welch PSD, Hann window, 8192-sample segments, one-sided. Grey lines: multiples n·f_d of the flap frequency; blue dashed: natural frequency f_k; red: Floquet effective frequency f_{eff}. S(t) = α̇^2cos^2β + β̇^2 is the stiffness coefficient (1/s^2); the stiffness force S(t)·q is in force units. ${isTouch() ? 'Touch the plot for values.' : 'Hover for values (legend); drag to zoom, double-click to reset.'}`,
+    }),
+  );
   const unitNote = el('p', { class: 'wl-note wl-units-note' });
   section.append(unitNote);
 
   const draw = (s) => {
     const r = s.result;
     if (!r) return;
-    const a = r.analysis, k = r.k;
+    const a = r.analysis,
+      k = r.k;
     const sp = a.spectra[k];
     const fd = a.sim.flap_freq_hz;
     const f = a.sim.modes[k].floquet;
@@ -57,17 +61,29 @@ export function mount(ctx) {
       return out;
     };
     const stiff = sp.stiffness_force;
-    plot.setData([Array.from(freq.subarray(0, n)), pos(sp.euler.psd), pos(sp.centrifugal.psd), pos(sp.coriolis.psd), pos(stiff.psd), pos(sp.total.psd)]);
+    plot.setData([
+      Array.from(freq.subarray(0, n)),
+      pos(sp.euler.psd),
+      pos(sp.centrifugal.psd),
+      pos(sp.coriolis.psd),
+      pos(stiff.psd),
+      pos(sp.total.psd),
+    ]);
     const marks = [];
     for (let j = 1; j * fd <= fmax; j++) marks.push({ x: j * fd, label: `${j}f_d`, color: '#8a8a8a' });
     marks.push({ x: fk, label: 'f_k', color: '#1f5fbf', dash: [5, 4] });
-    if (Number.isFinite(f.effective_freq_hz)) marks.push({ x: f.effective_freq_hz, label: 'f_{eff}', color: '#d62728', width: 1.5 });
+    if (Number.isFinite(f.effective_freq_hz))
+      marks.push({ x: f.effective_freq_hz, label: 'f_{eff}', color: '#d62728', width: 1.5 });
     markers = marks;
     plot.redraw();
-    const peakOf = (p) => { let b = 1; for (let i = 1; i < n; i++) if (p[i] > p[b]) b = i; return freq[b]; };
+    const peakOf = (p) => {
+      let b = 1;
+      for (let i = 1; i < n; i++) if (p[i] > p[b]) b = i;
+      return freq[b];
+    };
     plot.setSummary(
       `Mode ${k + 1}, 0 to ${fmt(fmax, 3)} Hz. Largest non-DC peaks: Euler force at ${fmt(peakOf(sp.euler.psd), 4)} Hz, centrifugal at ${fmt(peakOf(sp.centrifugal.psd), 4)} Hz, Coriolis at ${fmt(peakOf(sp.coriolis.psd), 4)} Hz, stiffness force at ${fmt(peakOf(stiff.psd), 4)} Hz, total response at ${fmt(peakOf(sp.total.psd), 4)} Hz. ` +
-      `Markers: flap harmonics every ${fmt(fd, 4)} Hz, natural frequency ${fmt(fk, 4)} Hz, Floquet effective frequency ${fmt(f.effective_freq_hz, 6)} Hz.`,
+        `Markers: flap harmonics every ${fmt(fd, 4)} Hz, natural frequency ${fmt(fk, 4)} Hz, Floquet effective frequency ${fmt(f.effective_freq_hz, 6)} Hz.`,
     );
     unitNote.replaceChildren(rich(s.modes === 'paper' ? PAPER_UNITS_NOTE : 'FE wing: SI units throughout.'));
   };
@@ -88,7 +104,10 @@ export function mount(ctx) {
           { name: 'psd_stiffness_force', unit: pu, values: sp.stiffness_force.psd },
           { name: 'psd_total_response', unit: UNITS.qpsd.csv, values: sp.total.psd },
         ],
-        [`wingbeat lab; ${toQuery(s)}`, `mode ${s.result.k + 1}; Welch, Hann, 8192-sample segments, detrend ${s.detrend}; all bins up to Nyquist`],
+        [
+          `wingbeat lab; ${toQuery(s)}`,
+          `mode ${s.result.k + 1}; Welch, Hann, 8192-sample segments, detrend ${s.detrend}; all bins up to Nyquist`,
+        ],
       );
     },
     figure: () => {
@@ -106,9 +125,18 @@ export function mount(ctx) {
         log: { y: true, y2: true },
         series: plot.exportSeries(),
         markers,
-        note: s.modes === 'paper' ? 'Paper units: Table 4 is not SI; spectral shapes and frequencies are unaffected.' : 'SI units.',
+        note:
+          s.modes === 'paper'
+            ? 'Paper units: Table 4 is not SI; spectral shapes and frequencies are unaffected.'
+            : 'SI units.',
       };
     },
   });
-  return { plot, destroy: () => { unsub(); plot.destroy(); } };
+  return {
+    plot,
+    destroy: () => {
+      unsub();
+      plot.destroy();
+    },
+  };
 }

@@ -30,7 +30,12 @@ export const PEAK_DELAY_MS = 300;
  */
 export function strainFieldOf(engine) {
   if (!engine || typeof engine.strainField !== 'function') return null;
-  return (/** @type {Float64Array} */ _sn, /** @type {number} */ _n, /** @type {Float64Array[]} */ qs, /** @type {{ component: string, stat: string }} */ opts) => engine.strainField(qs, opts);
+  return (
+    /** @type {Float64Array} */ _sn,
+    /** @type {number} */ _n,
+    /** @type {Float64Array[]} */ qs,
+    /** @type {{ component: string, stat: string }} */ opts,
+  ) => engine.strainField(qs, opts);
 }
 
 /** @param {import('../lab.js').ViewContext} ctx */
@@ -77,17 +82,29 @@ export function mount(ctx) {
   const legendText = el('span', { class: 'wl-smap-legend-text' });
   const pointText = el('p', { class: 'wl-smap-point', id: `${mapId}-text`, 'aria-live': 'polite' });
   const mapNote = el('p', { class: 'wl-note' });
-  const row = (label, id, input) => el('span', { class: 'wl-smap-field' }, el('label', { for: id, text: label }), input);
-  const mapControls = el('div', { class: 'wl-smap-controls' }, row('component', comp.id, comp), row('statistic', stat.id, stat));
-  const mapBox = el('div', { class: 'wl-smap', 'data-smap': '' },
-    el('div', { class: 'wl-smap-head' },
+  const row = (label, id, input) =>
+    el('span', { class: 'wl-smap-field' }, el('label', { for: id, text: label }), input);
+  const mapControls = el(
+    'div',
+    { class: 'wl-smap-controls' },
+    row('component', comp.id, comp),
+    row('statistic', stat.id, stat),
+  );
+  const mapBox = el(
+    'div',
+    { class: 'wl-smap', 'data-smap': '' },
+    el(
+      'div',
+      { class: 'wl-smap-head' },
       el('h3', { class: 'wl-smap-title', text: 'Whole-wing strain map' }),
-      ctx.exportButtons('strainmap', 'Whole-wing strain map', ['csv', 'png'])),
+      ctx.exportButtons('strainmap', 'Whole-wing strain map', ['csv', 'png']),
+    ),
     mapControls,
     canvas,
     el('div', { class: 'wl-smap-legendrow' }, legend, legendText),
     pointText,
-    mapNote);
+    mapNote,
+  );
   section.append(mapBox);
 
   /** @type {{ x0: number, y1: number, k: number } | null} mm → CSS px of the last drawing */
@@ -98,7 +115,8 @@ export function mount(ctx) {
 
   const unit = (s) => (s.modes === 'fe' ? 'strain (–)' : 'paper units');
   const mapOf = (s) => s.strain_map || S.DEFAULT_MAP;
-  const feOf = (s) => (s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null);
+  const feOf = (s) =>
+    s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null;
   /** The point in use, mm: the store's, else the FE wing's default (the one feModes used). */
   const pointOf = (s) => s.strain_point || (s.fe && s.fe.strain_point_mm) || [3, -6];
 
@@ -106,7 +124,10 @@ export function mount(ctx) {
   const topView = (fe) => {
     const n = fe.nodes.length / 3;
     const xy = new Float64Array(2 * n);
-    for (let i = 0; i < n; i++) { xy[2 * i] = fe.nodes[3 * i] * 1e3; xy[2 * i + 1] = fe.nodes[3 * i + 1] * 1e3; }
+    for (let i = 0; i < n; i++) {
+      xy[2 * i] = fe.nodes[3 * i] * 1e3;
+      xy[2 * i + 1] = fe.nodes[3 * i + 1] * 1e3;
+    }
     return { xy, depth: new Float64Array(n) };
   };
   /** Whether (x, y) mm lies on the meshed wing. */
@@ -135,9 +156,13 @@ export function mount(ctx) {
       legend.hidden = true;
       legendText.textContent = '';
       field = null;
-      mapNote.replaceChildren(rich(s.modes === 'fe'
-        ? 'The map appears once the FE wing’s modes are computed.'
-        : 'The paper’s mode set gives strains only at the paper’s point P (Table 6), so there is no whole-wing map and the point is fixed: choose the FE wing mode set (or your own wing) to map the strain and to choose the point.'));
+      mapNote.replaceChildren(
+        rich(
+          s.modes === 'fe'
+            ? 'The map appears once the FE wing’s modes are computed.'
+            : 'The paper’s mode set gives strains only at the paper’s point P (Table 6), so there is no whole-wing map and the point is fixed: choose the FE wing mode set (or your own wing) to map the strain and to choose the point.',
+        ),
+      );
       pointText.textContent = s.modes === 'fe' ? '' : 'Strain point: the paper’s P (Table 6).';
       return;
     }
@@ -163,11 +188,11 @@ export function mount(ctx) {
     if (cached || force || map.stat !== 'peak') delete mapBox.dataset.pending;
     // Size: the planform's aspect, the panel's width (device pixels for sharpness).
     const fit = fitPlanform(canvas, fe.nodes, 10);
-    const { cssW, cssH } = fit;
     frame = fit.frame;
     const kk = fit.frame.k;
-    const px = (x) => (x - /** @type {any} */ (frame).x0) * kk;
-    const py = (y) => (/** @type {any} */ (frame).y1 - y) * kk;
+    const fr = fit.frame;
+    const px = (x) => (x - fr.x0) * kk;
+    const py = (y) => (fr.y1 - y) * kk;
     const st = stops();
     limit = field ? S.mapLimit(field) : 0;
     const signed = !!field && field.some((v) => v < 0);
@@ -178,13 +203,18 @@ export function mount(ctx) {
     });
     // The strain point: a ring with a dark and a light edge (visible on every colour).
     const [sx, sy] = pointOf(s);
-    const cx = px(sx), cy = py(sy);
+    const cx = px(sx),
+      cy = py(sy);
     c2.lineWidth = 3;
     c2.strokeStyle = '#111';
-    c2.beginPath(); c2.arc(cx, cy, 6, 0, 2 * Math.PI); c2.stroke();
+    c2.beginPath();
+    c2.arc(cx, cy, 6, 0, 2 * Math.PI);
+    c2.stroke();
     c2.lineWidth = 1.5;
     c2.strokeStyle = '#fff';
-    c2.beginPath(); c2.arc(cx, cy, 6, 0, 2 * Math.PI); c2.stroke();
+    c2.beginPath();
+    c2.arc(cx, cy, 6, 0, 2 * Math.PI);
+    c2.stroke();
     canvas.dataset.point = `${sx},${sy}`;
     // Legend bar: the part of the map in use (0…M: the upper half; ±M: all of it).
     const lc = context2d(legend);
@@ -200,9 +230,15 @@ export function mount(ctx) {
     const what = `${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}`;
     legendText.textContent = field
       ? `${signed ? fmt(-limit, 3) : '0'} … ${fmt(limit, 3)} strain (–): ${what}; the hottest ${Math.round(100 * (1 - S.RANGE_QUANTILE))} % of the nodes saturate (largest ${fmt(Math.max(...field), 3)})`
-      : mapBox.dataset.pending ? 'computing the peak map…' : `no map: ${err || 'the wing and the run do not match'}`;
+      : mapBox.dataset.pending
+        ? 'computing the peak map…'
+        : `no map: ${err || 'the wing and the run do not match'}`;
     canvas.dataset.limit = String(limit);
-    mapNote.replaceChildren(rich(`Colours: ${what}, per node of the FE mesh (${fe.nodes.length / 3} nodes), from the modal strain fields and q_k(t) of all ${fe.n_modes} modes; the same colour map as the 3-D view (choose “whole-run strain map” there to see it on the flapping wing). Top view: span to the right, leading edge up.`));
+    mapNote.replaceChildren(
+      rich(
+        `Colours: ${what}, per node of the FE mesh (${fe.nodes.length / 3} nodes), from the modal strain fields and q_k(t) of all ${fe.n_modes} modes; the same colour map as the 3-D view (choose “whole-run strain map” there to see it on the flapping wing). Top view: span to the right, leading edge up.`,
+      ),
+    );
     pointText.textContent = `Strain point (x, y) = (${fmt(sx, 3)}, ${fmt(sy, 3)}) mm. ${touch ? 'Tap the map or the 3-D wing to move it.' : 'Click the map or the 3-D wing, or focus the map and use the arrow keys (Shift: bigger steps), to move it.'}`;
   }
 
@@ -220,7 +256,12 @@ export function mount(ctx) {
     return true;
   }
 
-  pickOnMap(canvas, () => frame, () => pointOf(store.get()), choose);
+  pickOnMap(
+    canvas,
+    () => frame,
+    () => pointOf(store.get()),
+    choose,
+  );
 
   const draw = (s) => {
     const r = s.result;
@@ -228,9 +269,13 @@ export function mount(ctx) {
     const a = r.analysis;
     const st = a.sim.strain;
     const [px, py] = pointOf(s);
-    note.replaceChildren(rich(s.modes === 'fe'
-      ? `Σ_k ε_k q_k(t) over all ${a.sim.modes.length} modes at the strain point (${fmt(px, 3)}, ${fmt(py, 3)}) mm, from the FE modal strain fields (top surface, dimensionless, SI).`
-      : `Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). ${PAPER_UNITS_NOTE}`));
+    note.replaceChildren(
+      rich(
+        s.modes === 'fe'
+          ? `Σ_k ε_k q_k(t) over all ${a.sim.modes.length} modes at the strain point (${fmt(px, 3)}, ${fmt(py, 3)}) mm, from the FE modal strain fields (top surface, dimensionless, SI).`
+          : `Σ_k ε_k q_k(t) with the Table 6 modal strains at P (both modes). ${PAPER_UNITS_NOTE}`,
+      ),
+    );
     plot.setYLabel(s.modes === 'fe' ? 'strain (–)' : 'strain (paper units)');
     if (!st) {
       plot.setData([[0], [null], [null], [null]]);
@@ -240,8 +285,15 @@ export function mount(ctx) {
       plot.setData(decimate(a.sim.t, [st.eps_x, st.eps_y, st.gamma_xy], Math.min(1500, Math.max(200, Math.round(w)))));
       // The core's run-wide peaks (Analysis.peaks.strain); a scan only for an analysis without them.
       const sp = a.peaks && a.peaks.strain;
-      const pk = (/** @type {'eps_x' | 'eps_y' | 'gamma_xy'} */ c) => { if (sp) return sp[c]; let p = 0; for (const v of st[c]) p = Math.max(p, Math.abs(v)); return p; };
-      plot.setSummary(`Peak |strain| at the strain point over the run (${unit(s)}): ε_x ${fmt(pk('eps_x'), 3)}, ε_y ${fmt(pk('eps_y'), 3)}, γ_xy ${fmt(pk('gamma_xy'), 3)}.`);
+      const pk = (/** @type {'eps_x' | 'eps_y' | 'gamma_xy'} */ c) => {
+        if (sp) return sp[c];
+        let p = 0;
+        for (const v of st[c]) p = Math.max(p, Math.abs(v));
+        return p;
+      };
+      plot.setSummary(
+        `Peak |strain| at the strain point over the run (${unit(s)}): ε_x ${fmt(pk('eps_x'), 3)}, ε_y ${fmt(pk('eps_y'), 3)}, γ_xy ${fmt(pk('gamma_xy'), 3)}.`,
+      );
     }
     drawMap();
   };
@@ -255,7 +307,10 @@ export function mount(ctx) {
     let lastW = 0;
     ro = new ResizeObserver(() => {
       const w = mapBox.clientWidth;
-      if (w && Math.abs(w - lastW) > 4) { lastW = w; drawMap(); }
+      if (w && Math.abs(w - lastW) > 4) {
+        lastW = w;
+        drawMap();
+      }
     });
     ro.observe(mapBox);
   }
@@ -274,7 +329,12 @@ export function mount(ctx) {
           { name: 'eps_y', unit: unit(s), values: st.eps_y },
           { name: 'gamma_xy', unit: unit(s), values: st.gamma_xy },
         ],
-        [`wingbeat lab; ${toQuery(s)}`, s.modes === 'fe' ? `strain at the strain point (x, y) = (${pointOf(s).join(', ')}) mm` : `strain at point ${st.point}`],
+        [
+          `wingbeat lab; ${toQuery(s)}`,
+          s.modes === 'fe'
+            ? `strain at the strain point (x, y) = (${pointOf(s).join(', ')}) mm`
+            : `strain at point ${st.point}`,
+        ],
       );
     },
     figure: () => {
@@ -311,15 +371,25 @@ export function mount(ctx) {
           { name: 'y', unit: 'mm', values: Float64Array.from({ length: n }, (_, i) => fe.nodes[3 * i + 1] * 1e3) },
           { name: `${map.stat}_${map.component}`, unit: 'strain (-)', values: field },
         ],
-        [`wingbeat lab; ${toQuery(s)}`, `whole-wing strain map: ${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}, per FE node (${n} nodes, all ${fe.n_modes} modes)`],
+        [
+          `wingbeat lab; ${toQuery(s)}`,
+          `whole-wing strain map: ${S.MAP_LABELS[map.stat]} of ${S.MAP_LABELS[map.component]}, per FE node (${n} nodes, all ${fe.n_modes} modes)`,
+        ],
       );
     },
     canvas: () => (feOf(store.get()) && field ? canvas : null),
   });
   return {
     plot,
-    get field() { return field; },
+    get field() {
+      return field;
+    },
     choose,
-    destroy: () => { unsubs.forEach((f) => f()); clearTimeout(peakTimer); if (ro) ro.disconnect(); plot.destroy(); },
+    destroy: () => {
+      for (const f of unsubs) f();
+      clearTimeout(peakTimer);
+      if (ro) ro.disconnect();
+      plot.destroy();
+    },
   };
 }

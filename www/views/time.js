@@ -41,7 +41,15 @@ export function mount(ctx) {
     const r = store.get().result;
     if (!fate || fate.kind !== 'decays' || fate.goneAt == null || !r) return [];
     const t = r.analysis.sim.t;
-    return [{ x0: fate.goneAt, x1: t[t.length - 1], label: `beat gone (< ${fmt(100 * fate.floor, 2)} %)`, color: '#555', fill: 'rgba(90,90,90,0.13)' }];
+    return [
+      {
+        x0: fate.goneAt,
+        x1: t[t.length - 1],
+        label: `beat gone (< ${fmt(100 * fate.floor, 2)} %)`,
+        color: '#555',
+        fill: 'rgba(90,90,90,0.13)',
+      },
+    ];
   };
   /** @type {number[] | null} window shown [t0, t1] (s) */
   let win = null;
@@ -51,7 +59,8 @@ export function mount(ctx) {
   const main = linePlot(section, {
     name: 'time',
     title: 'Responses',
-    ariaLabel: 'Responses plot: partial responses to the Euler, centrifugal and Coriolis forces, the total response and the Coriolis envelope over time',
+    ariaLabel:
+      'Responses plot: partial responses to the Euler, centrifugal and Coriolis forces, the total response and the Coriolis envelope over time',
     xLabel: 't',
     xUnit: 's',
     yLabel: `q (${Q})`,
@@ -64,7 +73,20 @@ export function mount(ctx) {
       { label: '−envelope', color: color('envelope'), width: 2, legend: false },
     ],
     height: 230,
-    bands: () => [...(bw && bw.mark && beat && beat.period != null ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []), ...goneBand()],
+    bands: () => [
+      ...(bw && bw.mark && beat && beat.period != null
+        ? [
+            {
+              x0: bw.mark[0],
+              x1: bw.mark[1],
+              label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`,
+              color: '#7a3cc2',
+              fill: 'rgba(122,60,194,0.12)',
+            },
+          ]
+        : []),
+      ...goneBand(),
+    ],
     markers: () => {
       /** @type {import('../plot.js').Marker[]} */
       const out = [];
@@ -73,7 +95,8 @@ export function mount(ctx) {
         for (let j = -40; j <= 40; j++) {
           const x = bw.mark[0] + j * beat.period;
           const alive = !fate || fate.kind !== 'decays' || fate.goneAt == null || x <= fate.goneAt;
-          if (j !== 0 && j !== 1 && alive && x0 != null && x1 != null && x >= x0 && x <= x1) out.push({ x, label: '', color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
+          if (j !== 0 && j !== 1 && alive && x0 != null && x1 != null && x >= x0 && x <= x1)
+            out.push({ x, label: '', color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
         }
       }
       const t3 = store.get().t3d;
@@ -81,10 +104,16 @@ export function mount(ctx) {
       return out;
     },
     onReset: () => resetWindow(),
-    onUser: (what) => { if (what !== 'reset') userWin = true; },
+    onUser: (what) => {
+      if (what !== 'reset') userWin = true;
+    },
     hooks: {
       // a drag across the plot zooms (uPlot sets the scale itself): the user's window from now on
-      setSelect: [(u) => { if (u.select.width > 2) userWin = true; }],
+      setSelect: [
+        (u) => {
+          if (u.select.width > 2) userWin = true;
+        },
+      ],
       setScale: [
         (u, key) => {
           if (key !== 'x' || u.scales.x.min == null || u.scales.x.max == null) return;
@@ -97,7 +126,9 @@ export function mount(ctx) {
   // Click (not drag) on the plot: show that instant in the 3-D wing.
   /** @type {number[] | null} */
   let down = null;
-  main.u.over.addEventListener('pointerdown', (e) => { down = [e.clientX, e.clientY]; });
+  main.u.over.addEventListener('pointerdown', (e) => {
+    down = [e.clientX, e.clientY];
+  });
   main.u.over.addEventListener('pointerup', (e) => {
     if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4) {
       const t = main.u.posToVal(e.offsetX, 'x');
@@ -110,7 +141,8 @@ export function mount(ctx) {
   const ov = linePlot(section, {
     name: 'time-overview',
     title: 'Whole run',
-    ariaLabel: 'Overview of the whole run (total response and envelope); the shaded window is what the responses plot shows',
+    ariaLabel:
+      'Overview of the whole run (total response and envelope); the shaded window is what the responses plot shows',
     xLabel: 't',
     xUnit: 's',
     yLabel: '',
@@ -141,7 +173,9 @@ export function mount(ctx) {
   // A click on the overview centres the window there.
   /** @type {number[] | null} */
   let odown = null;
-  ov.u.over.addEventListener('pointerdown', (e) => { odown = [e.clientX, e.offsetX]; });
+  ov.u.over.addEventListener('pointerdown', (e) => {
+    odown = [e.clientX, e.offsetX];
+  });
   ov.u.over.addEventListener('pointerup', (e) => {
     if (odown && Math.abs(e.clientX - odown[0]) < 4 && win) {
       const c = ov.u.posToVal(e.offsetX, 'x');
@@ -152,8 +186,21 @@ export function mount(ctx) {
     odown = null;
   });
 
-  const btnBeats = el('button', { type: 'button', class: 'wl-small', text: 'Three beats', onclick: () => resetWindow() });
-  const btnAll = el('button', { type: 'button', class: 'wl-small', text: 'Whole run', onclick: () => { userWin = true; setWindow(null); } });
+  const btnBeats = el('button', {
+    type: 'button',
+    class: 'wl-small',
+    text: 'Three beats',
+    onclick: () => resetWindow(),
+  });
+  const btnAll = el('button', {
+    type: 'button',
+    class: 'wl-small',
+    text: 'Whole run',
+    onclick: () => {
+      userWin = true;
+      setWindow(null);
+    },
+  });
   const sharesBox = el('div', { class: 'wl-shares' });
   section.append(el('div', { class: 'wl-timebar' }, btnBeats, btnAll), sharesBox);
 
@@ -168,8 +215,14 @@ export function mount(ctx) {
     const [lo, hi] = fullRange();
     let [a, b] = w || [lo, hi];
     const span = Math.min(b - a, hi - lo);
-    if (a < lo) { a = lo; b = lo + span; }
-    if (b > hi) { b = hi; a = hi - span; }
+    if (a < lo) {
+      a = lo;
+      b = lo + span;
+    }
+    if (b > hi) {
+      b = hi;
+      a = hi - span;
+    }
     main.u.setScale('x', { min: a, max: b });
     win = [a, b];
     if (overview) overview.redraw();
@@ -198,7 +251,9 @@ export function mount(ctx) {
   }
 
   function drawShares(a, k) {
-    const sig = `${k}|${shares(a, k).map((x) => fmt(x.value, 3)).join()}`;
+    const sig = `${k}|${shares(a, k)
+      .map((x) => fmt(x.value, 3))
+      .join()}`;
     if (sig === sharesSig) return;
     sharesSig = sig;
     writeShares(sharesBox, a, k);
@@ -219,7 +274,8 @@ export function mount(ctx) {
     fate = beatFate(beat, m.floquet.growth_rate_per_s, hi - lo);
     bw = beatWindow(a.sim.t, env, fate.kind === 'gone' ? null : beat.period);
     // A damped beat: the marked beat only where the beat still is.
-    if (fate.kind === 'decays' && bw.mark && fate.goneAt != null && bw.mark[1] > fate.goneAt) bw = { ...bw, mark: null };
+    if (fate.kind === 'decays' && bw.mark && fate.goneAt != null && bw.mark[1] > fate.goneAt)
+      bw = { ...bw, mark: null };
     let w = userWin && win ? [Math.max(lo, win[0]), Math.min(hi, win[1])] : [bw.x0, bw.x1];
     if (!(w[1] > w[0])) w = [bw.x0, bw.x1];
     main.setData([a.sim.t, m.q.euler, m.q.centrifugal, m.q.coriolis, m.q.total, env, neg], w);
@@ -227,25 +283,32 @@ export function mount(ctx) {
     ov.setData(decimate(a.sim.t, [m.q.total, env], Math.max(200, Math.min(800, Math.round(ov.u.width || 400)))));
     drawBeat(a, k, s);
     drawShares(a, k);
-    const peak = (y) => { let p = 0; for (const v of y) p = Math.max(p, Math.abs(v)); return p; };
+    const peak = (y) => {
+      let p = 0;
+      for (const v of y) p = Math.max(p, Math.abs(v));
+      return p;
+    };
     // The responses' peaks are the core's (Analysis.peaks); only the smoothed envelope is scanned here.
     main.setSummary(
       `Mode ${k + 1}, window ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s of a ${fmt(hi, 3)} s run. Peak |q| (${plain(Q)}): total ${fmt(peakOf(a, k, 'total'), 3)}, Euler ${fmt(peakOf(a, k, 'euler'), 3)}, centrifugal ${fmt(peakOf(a, k, 'centrifugal'), 3)}, Coriolis ${fmt(peakOf(a, k, 'coriolis'), 3)}; largest Coriolis envelope ${fmt(peak(env), 3)}. ` +
-      (beat.period == null || fate.kind === 'gone' ? 'No beat.' : `Beat period ${fmt(beat.period, 4)} s${bw.mark ? `, marked from ${fmt(bw.mark[0], 4)} s` : ''}${fate.kind === 'decays' && fate.goneAt != null ? `; the beat decays (τ = ${fmt(/** @type {number} */ (fate.tau), 3)} s) and is gone after ${fmt(fate.goneAt, 3)} s` : ''}.`),
+        (beat.period == null || fate.kind === 'gone'
+          ? 'No beat.'
+          : `Beat period ${fmt(beat.period, 4)} s${bw.mark ? `, marked from ${fmt(bw.mark[0], 4)} s` : ''}${fate.kind === 'decays' && fate.goneAt != null ? `; the beat decays (τ = ${fmt(/** @type {number} */ (fate.tau), 3)} s) and is gone after ${fmt(fate.goneAt, 3)} s` : ''}.`),
     );
-    ov.setSummary(`Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.${fate.kind === 'decays' && fate.goneAt != null ? ` Grey from ${fmt(fate.goneAt, 3)} s: the beat is gone.` : ''}`);
+    ov.setSummary(
+      `Whole run 0 to ${fmt(hi, 3)} s; the window shown above is ${fmt(w[0], 4)} to ${fmt(w[1], 4)} s.${fate.kind === 'decays' && fate.goneAt != null ? ` Grey from ${fmt(fate.goneAt, 3)} s: the beat is gone.` : ''}`,
+    );
   };
-  const unsub = [
-    store.subscribe(['result'], draw),
-    store.subscribe(['t3d'], () => main.redraw()),
-  ];
+  const unsub = [store.subscribe(['result'], draw), store.subscribe(['t3d'], () => main.redraw())];
 
   ctx.registerPlot('time', main);
   ctx.registerExport('time', {
     csv: () => {
       const s = store.get();
       if (!s.result) return null;
-      const a = s.result.analysis, k = s.result.k, m = a.sim.modes[k];
+      const a = s.result.analysis,
+        k = s.result.k,
+        m = a.sim.modes[k];
       return ctx.toCSV(
         [
           { name: 't', unit: 's', values: a.sim.t },
@@ -270,10 +333,36 @@ export function mount(ctx) {
         xLabel: 't (s)',
         yLabel: `q (${Q})`,
         series: main.exportSeries(),
-        bands: [...(bw && bw.mark && beat ? [{ x0: bw.mark[0], x1: bw.mark[1], label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`, color: '#7a3cc2', fill: 'rgba(122,60,194,0.12)' }] : []), ...goneBand()],
-        note: beat && beat.period != null ? `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(beat.fEff, 6)} − ${beat.n}×${fmt(beat.fd, 4)}| Hz = ${fmt(beat.period, 4)} s (Floquet). ` + (s.modes === 'paper' ? 'q in paper units (Table 4 is not SI).' : 'q in SI.') : '',
+        bands: [
+          ...(bw && bw.mark && beat
+            ? [
+                {
+                  x0: bw.mark[0],
+                  x1: bw.mark[1],
+                  label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`,
+                  color: '#7a3cc2',
+                  fill: 'rgba(122,60,194,0.12)',
+                },
+              ]
+            : []),
+          ...goneBand(),
+        ],
+        note:
+          beat && beat.period != null
+            ? `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(beat.fEff, 6)} − ${beat.n}×${fmt(beat.fd, 4)}| Hz = ${fmt(beat.period, 4)} s (Floquet). ` +
+              (s.modes === 'paper' ? 'q in paper units (Table 4 is not SI).' : 'q in SI.')
+            : '',
       };
     },
   });
-  return { main, overview: ov, resetWindow, destroy: () => { for (const f of unsub) f(); main.destroy(); ov.destroy(); } };
+  return {
+    main,
+    overview: ov,
+    resetWindow,
+    destroy: () => {
+      for (const f of unsub) f();
+      main.destroy();
+      ov.destroy();
+    },
+  };
 }

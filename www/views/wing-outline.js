@@ -103,7 +103,9 @@ export function outlineEditor(ctx, form, on) {
     form.draft.points[dragging] = /** @type {[number, number]} */ (p);
     edited();
   });
-  const endDrag = () => { dragging = -1; };
+  const endDrag = () => {
+    dragging = -1;
+  };
   svg.addEventListener('pointerup', endDrag);
   svg.addEventListener('pointercancel', endDrag);
 
@@ -125,7 +127,10 @@ export function outlineEditor(ctx, form, on) {
     if (n && Number.isFinite(v)) form.selected = Math.min(n, Math.max(1, v)) - 1;
     draw();
   });
-  for (const [inp, c] of /** @type {[HTMLInputElement, number][]} */ ([[xIn, 0], [yIn, 1]])) {
+  for (const [inp, c] of /** @type {[HTMLInputElement, number][]} */ ([
+    [xIn, 0],
+    [yIn, 1],
+  ])) {
     inp.addEventListener('change', () => {
       const v = Number(inp.value);
       if (!form.draft.points || inp.value.trim() === '' || !Number.isFinite(v)) {
@@ -137,7 +142,12 @@ export function outlineEditor(ctx, form, on) {
       edited();
     });
   }
-  const addBtn = el('button', { type: 'button', text: 'Add point', 'data-wing': 'add', title: 'Insert a point halfway to the next one' });
+  const addBtn = el('button', {
+    type: 'button',
+    text: 'Add point',
+    'data-wing': 'add',
+    title: 'Insert a point halfway to the next one',
+  });
   addBtn.addEventListener('click', () => {
     const pts = form.draft.points;
     if (!pts) return;
@@ -164,11 +174,15 @@ export function outlineEditor(ctx, form, on) {
     form.dirty = true;
     draw();
   };
-  const pointsRow = el('div', { class: 'wl-wing-pts' },
+  const pointsRow = el(
+    'div',
+    { class: 'wl-wing-pts' },
     el('span', { class: 'wl-pair' }, el('label', { for: id('wing-pt'), text: 'Point' }), idxIn),
     el('span', { class: 'wl-pair' }, el('label', { for: id('wing-x'), text: 'x (mm)' }), xIn),
     el('span', { class: 'wl-pair' }, el('label', { for: id('wing-y'), text: 'y (mm)' }), yIn),
-    addBtn, delBtn);
+    addBtn,
+    delBtn,
+  );
 
   // ---- the core's check ----
   const checkEl = el('p', { class: 'wl-note', role: 'status', 'data-wing': 'check' });
@@ -197,7 +211,11 @@ export function outlineEditor(ctx, form, on) {
   };
 
   return {
-    svg, svgDesc, pointsRow, checkEl, draw,
+    svg,
+    svgDesc,
+    pointsRow,
+    checkEl,
+    draw,
     /** The automatic element size of the outline as last checked (mm), NaN when not valid. */
     autoMesh: () => autoMesh,
   };

@@ -41,13 +41,22 @@ export function wingParams(ctx, form, on) {
     const fe = store.get().fe;
     const am = on.autoMesh();
     const a = Number.isFinite(am) ? am : null;
-    autoEl.textContent = a != null ? `: ${fmt(a, 3)} mm` : fe && store.get().modes === 'fe' && form.draft.params.mesh_mm === 0 ? `: ${fmt(fe.mesh_size_mm, 3)} mm in use` : '';
+    autoEl.textContent =
+      a != null
+        ? `: ${fmt(a, 3)} mm`
+        : fe && store.get().modes === 'fe' && form.draft.params.mesh_mm === 0
+          ? `: ${fmt(fe.mesh_size_mm, 3)} mm in use`
+          : '';
   };
   const rows = WING.map((w) => {
     const sh = SHOW[w.key];
     const inp = el('input', {
-      type: 'number', id: id(`wing-${w.key}`), 'data-wing': w.key,
-      min: clean(w.min * sh.scale), max: clean(w.max * sh.scale), step: sh.step,
+      type: 'number',
+      id: id(`wing-${w.key}`),
+      'data-wing': w.key,
+      min: clean(w.min * sh.scale),
+      max: clean(w.max * sh.scale),
+      step: sh.step,
     });
     inputs[w.key] = inp;
     inp.addEventListener('change', () => {
@@ -63,9 +72,17 @@ export function wingParams(ctx, form, on) {
       matchPreset();
       showAuto();
     });
-    return el('div', { class: 'wl-wing-field' },
-      el('label', { for: id(`wing-${w.key}`) }, LABEL[w.key], sh.unit ? el('span', { class: 'wl-unit' }, ` (${sh.unit}`, w.key === 'mesh_mm' ? autoEl : '', ')') : null),
-      inp);
+    return el(
+      'div',
+      { class: 'wl-wing-field' },
+      el(
+        'label',
+        { for: id(`wing-${w.key}`) },
+        LABEL[w.key],
+        sh.unit ? el('span', { class: 'wl-unit' }, ` (${sh.unit}`, w.key === 'mesh_mm' ? autoEl : '', ')') : null,
+      ),
+      inp,
+    );
   });
   /** The draft's parameters into the inputs (not the one being typed in). */
   const sync = () => {
@@ -77,8 +94,11 @@ export function wingParams(ctx, form, on) {
     matchPreset();
     showAuto();
   };
-  const box = el('div', { class: 'wl-wing-params' },
+  const box = el(
+    'div',
+    { class: 'wl-wing-params' },
     el('div', { class: 'wl-wing-field' }, el('label', { for: id('wing-preset'), text: 'Material preset' }), presetSel),
-    ...rows);
+    ...rows,
+  );
   return { box, sync, showAuto, fillPresets };
 }

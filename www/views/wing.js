@@ -26,12 +26,18 @@ export function mount(ctx) {
 
   // ---------- the draft: what the form shows, applied by "Compute modes" ----------
   /** @type {import('./wing-outline.js').WingForm} */
-  const form = { draft: { params: {}, points: null, outline: 'manduca', source: 'builtin', label: '', planform: '' }, selected: 0, dirty: false };
+  const form = {
+    draft: { params: {}, points: null, outline: 'manduca', source: 'builtin', label: '', planform: '' },
+    selected: 0,
+    dirty: false,
+  };
   const draft = form.draft;
 
   const builtins = () => {
     const list = engine.ready ? engine.planforms() : [];
-    return list.length ? list : [{ id: 'manduca', label: 'Manduca-like (synthetic, default)', note: '', points_mm: null }];
+    return list.length
+      ? list
+      : [{ id: 'manduca', label: 'Manduca-like (synthetic, default)', note: '', points_mm: null }];
   };
 
   const fromStore = () => {
@@ -60,7 +66,13 @@ export function mount(ctx) {
     statusEl.setAttribute('role', bad ? 'alert' : 'status');
   };
   const outlineSel = el('select', { id: id('wing-outline'), 'data-wing': 'outline' });
-  const editor = outlineEditor(ctx, form, { say, onOwn: () => { outlineSel.value = 'own'; }, onChecked: () => params.showAuto() });
+  const editor = outlineEditor(ctx, form, {
+    say,
+    onOwn: () => {
+      outlineSel.value = 'own';
+    },
+    onChecked: () => params.showAuto(),
+  });
   const params = wingParams(ctx, form, { say, autoMesh: editor.autoMesh });
   const drawOutline = editor.draw;
 
@@ -84,7 +96,12 @@ export function mount(ctx) {
     form.dirty = true;
     drawOutline();
   });
-  const fileIn = el('input', { type: 'file', id: id('wing-file'), accept: '.csv,.json,.txt,text/csv,application/json', 'data-wing': 'file' });
+  const fileIn = el('input', {
+    type: 'file',
+    id: id('wing-file'),
+    accept: '.csv,.json,.txt,text/csv,application/json',
+    'data-wing': 'file',
+  });
   fileIn.addEventListener('change', async () => {
     const f = fileIn.files && fileIn.files[0];
     if (!f) return;
@@ -112,10 +129,20 @@ export function mount(ctx) {
   });
 
   // ---------- compute, cancel, export ----------
-  const computeBtn = el('button', { type: 'button', class: 'wl-primary', text: 'Compute modes', 'data-wing': 'compute' });
+  const computeBtn = el('button', {
+    type: 'button',
+    class: 'wl-primary',
+    text: 'Compute modes',
+    'data-wing': 'compute',
+  });
   const cancelBtn = el('button', { type: 'button', text: 'Cancel', 'data-wing': 'cancel', hidden: true });
   const progress = el('progress', { 'aria-label': 'Computing the wing’s modes', hidden: true });
-  const exportBtn = el('button', { type: 'button', text: 'Export modes JSON', 'data-wing': 'export', title: 'The wing in use as a `wingbeat modes` document (for wingbeat simulate --modes)' });
+  const exportBtn = el('button', {
+    type: 'button',
+    text: 'Export modes JSON',
+    'data-wing': 'export',
+    title: 'The wing in use as a `wingbeat modes` document (for wingbeat simulate --modes)',
+  });
   const resetBtn = el('button', { type: 'button', text: 'Default wing', 'data-wing': 'reset' });
   const inUse = el('div', { class: 'wl-wing-inuse', 'data-wing': 'in-use' });
   /** @type {{ id: number, t0: number, timer: ReturnType<typeof setInterval> } | null} */
@@ -141,7 +168,13 @@ export function mount(ctx) {
     const j = engine.computeWing(input, () => {});
     if (!j.id) return apply(p, own, input);
     busy(true);
-    const timer = setInterval(() => say(`Computing ${p.n_modes} modes in the worker… ${((performance.now() - t0) / 1000).toFixed(1)} s (the wing in use stays until this one is ready)`), 250);
+    const timer = setInterval(
+      () =>
+        say(
+          `Computing ${p.n_modes} modes in the worker… ${((performance.now() - t0) / 1000).toFixed(1)} s (the wing in use stays until this one is ready)`,
+        ),
+      250,
+    );
     job = { id: j.id, t0, timer };
     say(`Computing ${p.n_modes} modes in the worker…`);
     ctx.emit('wl-wing', { state: 'started' });
@@ -151,7 +184,9 @@ export function mount(ctx) {
         job = null;
         busy(false);
         apply(p, own, input);
-        say(`Computed in ${((performance.now() - t0) / 1000).toFixed(1)} s: ${r.n_nodes} nodes, element size ${fmt(r.mesh_size_mm, 3)} mm.`);
+        say(
+          `Computed in ${((performance.now() - t0) / 1000).toFixed(1)} s: ${r.n_nodes} nodes, element size ${fmt(r.mesh_size_mm, 3)} mm.`,
+        );
         ctx.emit('wl-wing', { state: 'done' });
       },
       (e) => {
@@ -170,7 +205,15 @@ export function mount(ctx) {
     /** @type {Record<string, any>} */
     const patch = { modes: 'fe', outline: draft.outline, planform: draft.source === 'url' ? draft.planform : '' };
     for (const w of WING) patch[w.key] = p[w.key];
-    patch.wing = own ? { input, source: draft.source, label: draft.label, outline: 'own', points: draft.points && draft.points.map((q) => [q[0], q[1]]) } : null;
+    patch.wing = own
+      ? {
+          input,
+          source: draft.source,
+          label: draft.label,
+          outline: 'own',
+          points: draft.points && draft.points.map((q) => [q[0], q[1]]),
+        }
+      : null;
     if (own) patch.outline = draft.outline;
     form.dirty = false;
     store.set(patch);
@@ -182,9 +225,11 @@ export function mount(ctx) {
   exportBtn.addEventListener('click', () => {
     const s = store.get();
     const fe = s.fe;
-    if (!fe || s.modes !== 'fe') return say('No FE wing in use yet: choose the FE wing mode set or compute a wing first.', true);
+    if (!fe || s.modes !== 'fe')
+      return say('No FE wing in use yet: choose the FE wing mode set or compute a wing first.', true);
     const raw = /** @type {any} */ (fe).modes_json;
-    if (typeof raw !== 'string') return say('This wasm build does not produce the modes document: rebuild www/pkg.', true);
+    if (typeof raw !== 'string')
+      return say('This wasm build does not produce the modes document: rebuild www/pkg.', true);
     // A chosen strain point goes with the modes, first (the one simulate --modes reports).
     let json;
     try {
@@ -194,7 +239,9 @@ export function mount(ctx) {
     }
     download('wingbeat-modes.json', new Blob([json], { type: 'application/json' }));
     const sp = s.strain_point;
-    say(`Exported ${fe.modes.length} modes as wingbeat-modes.json${sp ? `, with the chosen strain point ${CHOSEN_POINT} = (${fmt(sp[0], 4)}, ${fmt(sp[1], 4)}) mm first` : ''} (use it with: wingbeat simulate --modes wingbeat-modes.json).`);
+    say(
+      `Exported ${fe.modes.length} modes as wingbeat-modes.json${sp ? `, with the chosen strain point ${CHOSEN_POINT} = (${fmt(sp[0], 4)}, ${fmt(sp[1], 4)}) mm first` : ''} (use it with: wingbeat simulate --modes wingbeat-modes.json).`,
+    );
     ctx.emit('wl-wing', { state: 'exported' });
   });
   resetBtn.addEventListener('click', () => {
@@ -213,7 +260,13 @@ export function mount(ctx) {
     const r = engine.modesFromJson(text);
     const fe = feFromModesDocument(r, text);
     engine.useFe(fe, `import:${name}:${text.length}`);
-    store.set({ modes: 'fe', wing: { input: null, source: 'import', label: name.slice(0, 80), outline: 'file', points: null }, fe, mode: '1', strain_point: null });
+    store.set({
+      modes: 'fe',
+      wing: { input: null, source: 'import', label: name.slice(0, 80), outline: 'file', points: null },
+      fe,
+      mode: '1',
+      strain_point: null,
+    });
     say(`Imported ${r.modes.length} modes from ${name}.`);
     ctx.emit('wl-wing', { state: 'imported' });
   };
@@ -221,7 +274,12 @@ export function mount(ctx) {
   const describeInUse = (s) => {
     inUse.replaceChildren();
     if (s.modes !== 'fe') {
-      inUse.append(el('p', { class: 'wl-note', text: 'In use: the paper table’s two modes (paper units). Compute a wing (or choose the FE wing mode set under Parameters) to use FE modes.' }));
+      inUse.append(
+        el('p', {
+          class: 'wl-note',
+          text: 'In use: the paper table’s two modes (paper units). Compute a wing (or choose the FE wing mode set under Parameters) to use FE modes.',
+        }),
+      );
       return;
     }
     const fe = s.fe;
@@ -229,20 +287,47 @@ export function mount(ctx) {
       inUse.append(el('p', { class: 'wl-note', text: 'The FE wing is being computed…' }));
       return;
     }
-    const src = s.wing ? `${s.wing.label} (${s.wing.source === 'import' ? 'imported modes' : 'own outline'})` : customWing(s) ? `${(builtins().find((b) => b.id === s.outline) || { label: s.outline }).label}` : 'the default synthetic Manduca-like wing';
-    inUse.append(el('p', { class: 'wl-note', text: `In use: ${src}; ${fe.modes.length} modes, ${fe.n_nodes} nodes, element size ${fmt(fe.mesh_size_mm, 3)} mm${s.strain_point ? `, chosen strain point (${fmt(s.strain_point[0], 4)}, ${fmt(s.strain_point[1], 4)}) mm` : ''}${fe.strain_point_mm ? `, ${s.strain_point ? 'the wing’s own ' : ''}strain point (${fmt(fe.strain_point_mm[0], 4)}, ${fmt(fe.strain_point_mm[1], 4)}) mm` : ''}.` }));
+    const src = s.wing
+      ? `${s.wing.label} (${s.wing.source === 'import' ? 'imported modes' : 'own outline'})`
+      : customWing(s)
+        ? `${(builtins().find((b) => b.id === s.outline) || { label: s.outline }).label}`
+        : 'the default synthetic Manduca-like wing';
+    inUse.append(
+      el('p', {
+        class: 'wl-note',
+        text: `In use: ${src}; ${fe.modes.length} modes, ${fe.n_nodes} nodes, element size ${fmt(fe.mesh_size_mm, 3)} mm${s.strain_point ? `, chosen strain point (${fmt(s.strain_point[0], 4)}, ${fmt(s.strain_point[1], 4)}) mm` : ''}${fe.strain_point_mm ? `, ${s.strain_point ? 'the wing’s own ' : ''}strain point (${fmt(fe.strain_point_mm[0], 4)}, ${fmt(fe.strain_point_mm[1], 4)}) mm` : ''}.`,
+      }),
+    );
     const ol = el('ol', { class: 'wl-wing-freqs', 'aria-label': 'Natural frequencies of the wing in use' });
-    fe.modes.forEach((m, k) => { ol.append(el('li', { 'data-field': `wing-freq-${k}`, text: `${fmt(m.freq_hz, 4)} Hz${fe.kinds && fe.kinds[k] ? ` (${fe.kinds[k]})` : ''}` })); });
+    fe.modes.forEach((m, k) => {
+      ol.append(
+        el('li', {
+          'data-field': `wing-freq-${k}`,
+          text: `${fmt(m.freq_hz, 4)} Hz${fe.kinds && fe.kinds[k] ? ` (${fe.kinds[k]})` : ''}`,
+        }),
+      );
+    });
     inUse.append(ol);
   };
 
   // One column in reading order (tab order = visual order): source, drawing, point editing,
   // the parameters as a grid filled row by row, the actions, the wing in use.
   section.append(
-    el('div', { class: 'wl-wing-src' },
+    el(
+      'div',
+      { class: 'wl-wing-src' },
       el('div', { class: 'wl-wing-field' }, el('label', { for: id('wing-outline'), text: 'Outline' }), outlineSel),
-      el('div', { class: 'wl-wing-field' }, el('label', { for: id('wing-file'), text: 'Load a file (outline or modes JSON)' }), fileIn)),
-    el('p', { class: 'wl-note', text: 'Outline files: CSV with a header x_mm,y_mm (or i,x_mm,y_mm; # comments) or JSON [[x, y], …], in mm, x spanwise from the root (root edge on x = 0), chord toward −y. A `wingbeat modes` JSON document imports its modes.' }),
+      el(
+        'div',
+        { class: 'wl-wing-field' },
+        el('label', { for: id('wing-file'), text: 'Load a file (outline or modes JSON)' }),
+        fileIn,
+      ),
+    ),
+    el('p', {
+      class: 'wl-note',
+      text: 'Outline files: CSV with a header x_mm,y_mm (or i,x_mm,y_mm; # comments) or JSON [[x, y], …], in mm, x spanwise from the root (root edge on x = 0), chord toward −y. A `wingbeat modes` JSON document imports its modes.',
+    }),
     editor.svg,
     editor.svgDesc,
     editor.pointsRow,
@@ -262,8 +347,13 @@ export function mount(ctx) {
       params.sync();
       drawOutline();
     }),
-    store.subscribe(['fe', 'modes', 'wing', 'outline', 'strain_point'], (s) => { describeInUse(s); params.showAuto(); }),
-    store.subscribe(['fe', 'strain_point', 'modes'], () => { if (!form.dirty) drawOutline(); }),
+    store.subscribe(['fe', 'modes', 'wing', 'outline', 'strain_point'], (s) => {
+      describeInUse(s);
+      params.showAuto();
+    }),
+    store.subscribe(['fe', 'strain_point', 'modes'], () => {
+      if (!form.dirty) drawOutline();
+    }),
   ];
   const init = () => {
     fromStore();
@@ -284,7 +374,9 @@ export function mount(ctx) {
   }, 100);
   return {
     compute,
-    get draft() { return draft; },
+    get draft() {
+      return draft;
+    },
     destroy() {
       clearInterval(whenReady);
       if (job) clearInterval(job.timer);

@@ -46,7 +46,9 @@ const RANGE_SAMPLES = 1000;
 const TEXT_MS = 250;
 
 /** Sets `e`'s text only when it differs (an unchanged text costs no layout or paint). */
-function setText(/** @type {HTMLElement} */ e, /** @type {string} */ t) { if (e.textContent !== t) e.textContent = t; }
+function setText(/** @type {HTMLElement} */ e, /** @type {string} */ t) {
+  if (e.textContent !== t) e.textContent = t;
+}
 
 /** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
@@ -102,16 +104,44 @@ class Wing3dPanel {
       play: () => store.set({ playing: !store.get().playing }),
       speed: () => this.describeTime(),
       time: (t) => store.set({ playing: false, t3d: t }),
-      exag: () => { this.exagTouched = true; this.dirty = true; this.draw(); },
-      colour: () => { this.fields.invalidate(); this.overlays.regroupSensors(); this.applyRange(); this.draw(); },
+      exag: () => {
+        this.exagTouched = true;
+        this.dirty = true;
+        this.draw();
+      },
+      colour: () => {
+        this.fields.invalidate();
+        this.overlays.regroupSensors();
+        this.applyRange();
+        this.draw();
+      },
       scene: () => this.onScene(),
-      fit: () => { this.rig.user = false; this.rig.fitKey = ''; this.fit(true); this.draw(); },
+      fit: () => {
+        this.rig.user = false;
+        this.rig.fitKey = '';
+        this.fit(true);
+        this.draw();
+      },
     });
     this.canvas = this.dom.canvas;
     this.rig = createCameraRig(() => this.view);
-    this.fields = createFields({ store, engine, view: () => this.view, fe: () => this.fe, colour: () => this.colour(), draw: () => this.draw() });
+    this.fields = createFields({
+      store,
+      engine,
+      view: () => this.view,
+      fe: () => this.fe,
+      colour: () => this.colour(),
+      draw: () => this.draw(),
+    });
     this.drawLegend = createStrainLegend(this.dom.legend, this.dom.legendText);
-    this.loop = createFrameLoop({ box: this.dom.box, store, ready: () => !!this.view, draw: (t) => this.draw(t), speed: () => this.speedFactor(), duration: () => Number(this.dom.time.max) || 0 });
+    this.loop = createFrameLoop({
+      box: this.dom.box,
+      store,
+      ready: () => !!this.view,
+      draw: (t) => this.draw(t),
+      speed: () => this.speedFactor(),
+      duration: () => Number(this.dom.time.max) || 0,
+    });
     const { box, summary, status, controls, defl } = this.dom;
     section.append(box, summary, status, controls, defl);
     this.bindCanvas();
@@ -128,11 +158,24 @@ class Wing3dPanel {
       store.subscribe(['result'], () => this.onResult()),
       store.subscribe(['sense_map'], () => this.onSenseMap()),
       store.subscribe(['fe'], () => this.onFe()),
-      store.subscribe(['strain_map'], () => { this.fields.invalidate(); if (this.view && this.colour() === FIELD_COLOUR) { this.applyRange(); this.draw(); } }),
-      store.subscribe(['strain_point'], () => { if (this.view) this.placePoint(); }),
+      store.subscribe(['strain_map'], () => {
+        this.fields.invalidate();
+        if (this.view && this.colour() === FIELD_COLOUR) {
+          this.applyRange();
+          this.draw();
+        }
+      }),
+      store.subscribe(['strain_point'], () => {
+        if (this.view) this.placePoint();
+      }),
       // (a time set from outside while playing — the time slider, a click on the responses plot —
       // becomes the loop's time, so a pause then keeps it)
-      store.subscribe(['t3d'], (s) => { if (this.loop.pushing) return; if (this.loop.t != null) this.loop.t = s.t3d ?? 0; if (this.view) this.draw(); else this.describeTime(); }),
+      store.subscribe(['t3d'], (s) => {
+        if (this.loop.pushing) return;
+        if (this.loop.t != null) this.loop.t = s.t3d ?? 0;
+        if (this.view) this.draw();
+        else this.describeTime();
+      }),
       store.subscribe(['playing'], (s) => this.setPlaying(!!s.playing)),
     ];
   }
@@ -142,19 +185,29 @@ class Wing3dPanel {
     bindCamera(this.canvas, this.rig, {
       view: () => this.view,
       moved: () => this.draw(),
-      click: (x, y) => { this.pickAt(x, y); },
+      click: (x, y) => {
+        this.pickAt(x, y);
+      },
       togglePlay: () => this.store.set({ playing: !this.store.get().playing }),
     });
   }
 
-  colour() { return Number(this.dom.colour.value); }
+  colour() {
+    return Number(this.dom.colour.value);
+  }
 
-  exaggeration() { return 10 ** Number(this.dom.exag.value); }
+  exaggeration() {
+    return 10 ** Number(this.dom.exag.value);
+  }
 
   /** The instant shown: the play loop's, else the store's. */
-  tNow() { return this.loop.t ?? this.store.get().t3d ?? 0; }
+  tNow() {
+    return this.loop.t ?? this.store.get().t3d ?? 0;
+  }
 
-  speedFactor() { return T.speedFactor(this.dom.speed.value, this.store.get().result); }
+  speedFactor() {
+    return T.speedFactor(this.dom.speed.value, this.store.get().result);
+  }
 
   describeTime(/** @type {number} */ tShown = this.store.get().t3d ?? 0) {
     setText(this.dom.timeText, T.timeLine(tShown, this.store.get().result, this.speedFactor()));
@@ -163,13 +216,21 @@ class Wing3dPanel {
 
   onScene() {
     const { showAxes, showBody, showPlane } = this.dom;
-    if (this.view) { this.view.set_scene(showAxes.checked, showPlane.checked, showBody.checked); this.draw(); }
+    if (this.view) {
+      this.view.set_scene(showAxes.checked, showPlane.checked, showBody.checked);
+      this.draw();
+    }
   }
 
   unavailable(/** @type {string} */ why) {
     const { box, summary, status, controls, options } = this.dom;
     box.dataset.state = 'unavailable';
-    box.replaceChildren(el('p', { class: 'wl-w3-fallback', text: `3-D view unavailable: ${why}. Everything else in the lab works without it.` }));
+    box.replaceChildren(
+      el('p', {
+        class: 'wl-w3-fallback',
+        text: `3-D view unavailable: ${why}. Everything else in the lab works without it.`,
+      }),
+    );
     summary.textContent = `3-D view unavailable: ${why}.`;
     status.textContent = '';
     controls.hidden = true;
@@ -194,7 +255,12 @@ class Wing3dPanel {
     }
     if (!(await this.makeView(fe))) return;
     if (typeof ResizeObserver === 'function') {
-      this.ro = new ResizeObserver(() => { if (this.fitCanvas()) { this.fit(false); this.draw(); } });
+      this.ro = new ResizeObserver(() => {
+        if (this.fitCanvas()) {
+          this.fit(false);
+          this.draw();
+        }
+      });
       this.ro.observe(this.dom.stage);
     }
     this.onResult();
@@ -237,13 +303,20 @@ class Wing3dPanel {
   onFe() {
     const w = this.store.get().fe;
     if (!this.started || !w || w === this.fe || this.remaking) return;
-    this.remaking = this.makeView(w).then(() => { this.remaking = null; if (this.store.get().fe !== this.fe) this.onFe(); else this.onResult(); });
+    this.remaking = this.makeView(w).then(() => {
+      this.remaking = null;
+      if (this.store.get().fe !== this.fe) this.onFe();
+      else this.onResult();
+    });
   }
 
   /** Starts now if the panel is on screen, else when it first scrolls into sight. */
   startWhenVisible() {
     if (this.started || this.io) return;
-    if (typeof IntersectionObserver !== 'function') { this.start(); return; }
+    if (typeof IntersectionObserver !== 'function') {
+      this.start();
+      return;
+    }
     this.dom.status.textContent = 'The 3-D view starts when this panel is on screen.';
     const obs = new IntersectionObserver((entries) => {
       if (entries.some((e) => e.isIntersecting)) {
@@ -256,7 +329,10 @@ class Wing3dPanel {
   }
 
   canvasCss() {
-    if (!this.cssW || !this.cssH) { this.cssW = this.canvas.clientWidth; this.cssH = this.canvas.clientHeight; }
+    if (!this.cssW || !this.cssH) {
+      this.cssW = this.canvas.clientWidth;
+      this.cssH = this.canvas.clientHeight;
+    }
     return [this.cssW, this.cssH];
   }
 
@@ -271,7 +347,11 @@ class Wing3dPanel {
     canvas.width = W;
     canvas.height = H;
     if (this.view) {
-      try { this.view.resize(W, H); } catch (e) { dom.status.textContent = `resize: ${errorText(e)}`; }
+      try {
+        this.view.resize(W, H);
+      } catch (e) {
+        dom.status.textContent = `resize: ${errorText(e)}`;
+      }
     }
     return true;
   }
@@ -281,11 +361,20 @@ class Wing3dPanel {
     const fe = this.fe;
     if (!fe) return;
     const lift = fitLift(this.runDeflection, this.exaggeration(), S.spanOf(fe.nodes));
-    const coverage = this.rig.fit(search, fe, strokePoses(this.store.get().result), lift, this.canvas.width, this.canvas.height);
+    const coverage = this.rig.fit(
+      search,
+      fe,
+      strokePoses(this.store.get().result),
+      lift,
+      this.canvas.width,
+      this.canvas.height,
+    );
     if (coverage != null) this.dom.box.dataset.coverage = coverage.toFixed(3);
   }
 
-  applyRange() { this.fields.applyRange(this.ranges); }
+  applyRange() {
+    this.fields.applyRange(this.ranges);
+  }
 
   /** A new detectability map from the sensing panel; its "Show on the 3-D wing" button sets colour 6. */
   onSenseMap() {
@@ -301,7 +390,11 @@ class Wing3dPanel {
       if (!this.started) this.startWhenVisible();
       if (typeof box.scrollIntoView === 'function') box.scrollIntoView({ block: 'nearest' });
     }
-    if (this.view && this.colour() === SENSE_COLOUR) { this.overlays.regroupSensors(); this.applyRange(); this.draw(); }
+    if (this.view && this.colour() === SENSE_COLOUR) {
+      this.overlays.regroupSensors();
+      this.applyRange();
+      this.draw();
+    }
   }
 
   /** New analysis: time range now; colour ranges, run deflection and camera fit on the next frame. */
@@ -317,7 +410,12 @@ class Wing3dPanel {
     if (!this.exagTouched) this.dom.exag.value = s.modes === 'fe' ? '0' : '1';
     this.dirty = true;
     if (!this.view || !this.fe) return;
-    if (!this.pending) this.pending = requestAnimationFrame(() => { this.pending = 0; if (!this.store.get().playing) this.draw(); else this.refresh(); });
+    if (!this.pending)
+      this.pending = requestAnimationFrame(() => {
+        this.pending = 0;
+        if (!this.store.get().playing) this.draw();
+        else this.refresh();
+      });
   }
 
   /** The per-run work, kept out of the slider's own redraw: ranges, deflection, camera fit. */
@@ -376,7 +474,8 @@ class Wing3dPanel {
     let lg = null;
     try {
       const cm = this.colour();
-      if (texts || typeof view.setPose !== 'function') lg = view.set_frame(ang[0], ang[1], ang[2], q, ex, cm === SENSE_COLOUR ? 5 : cm);
+      if (texts || typeof view.setPose !== 'function')
+        lg = view.set_frame(ang[0], ang[1], ang[2], q, ex, cm === SENSE_COLOUR ? 5 : cm);
       else view.setPose(ang[0], ang[1], ang[2], q);
       view.render();
     } catch (e) {
@@ -393,22 +492,46 @@ class Wing3dPanel {
   }
 
   /** The labels, the strain point's ring and the sensors for the frame just drawn. */
-  placeOverlays(/** @type {number[]} */ ang, /** @type {ArrayLike<number>} */ q, /** @type {number} */ t, /** @type {boolean} */ regroup) {
+  placeOverlays(
+    /** @type {number[]} */ ang,
+    /** @type {ArrayLike<number>} */ q,
+    /** @type {number} */ t,
+    /** @type {boolean} */ regroup,
+  ) {
     const { rig, fe, overlays, dom } = this;
     if (rig.cam && fe) {
       const [w, h] = this.canvasCss();
-      const show = { fixed: dom.showAxes.checked, wing: dom.showAxes.checked, body: dom.showBody.checked, plane: dom.showPlane.checked };
+      const show = {
+        fixed: dom.showAxes.checked,
+        wing: dom.showAxes.checked,
+        body: dom.showBody.checked,
+        plane: dom.showPlane.checked,
+      };
       overlays.placeLabels(labelPlaces(rig.cam, S.spanOf(fe.nodes), ang, w, h, show));
     }
     this.placePoint(t);
     const m = this.colour() === SENSE_COLOUR && rig.cam ? this.fields.senseUp : null;
-    if (!m || !fe || !m.sensors.length) { overlays.placeSensors(null, 0, 0, regroup); return; }
+    if (!m || !fe || !m.sensors.length) {
+      overlays.placeSensors(null, 0, 0, regroup);
+      return;
+    }
     const [w, h] = this.canvasCss();
-    overlays.placeSensors(P.sensorPoints(fe, m.sensors, ang, q, this.exaggeration(), /** @type {S.Camera} */ (rig.cam), w, h), w, h, regroup);
+    overlays.placeSensors(
+      P.sensorPoints(fe, m.sensors, ang, q, this.exaggeration(), /** @type {S.Camera} */ (rig.cam), w, h),
+      w,
+      h,
+      regroup,
+    );
   }
 
   /** The status, deflection, legend, note and summary texts of a frame (WingView.set_frame's legend `lg`). */
-  writeTexts(/** @type {any} */ lg, /** @type {number[]} */ ang, /** @type {number} */ ex, /** @type {number} */ t, /** @type {number} */ nModes) {
+  writeTexts(
+    /** @type {any} */ lg,
+    /** @type {number[]} */ ang,
+    /** @type {number} */ ex,
+    /** @type {number} */ t,
+    /** @type {number} */ nModes,
+  ) {
     const s = this.store.get();
     const { dom } = this;
     const view = /** @type {import('../pkg/wingbeat.js').WingView} */ (this.view);
@@ -439,7 +562,10 @@ class Wing3dPanel {
     const s = this.store.get();
     const fe = this.fe;
     const p = s.strain_point || (fe && fe.strain_point_mm);
-    if (!fe || !p || s.modes !== 'fe' || !this.rig.cam) { this.overlays.hidePoint(); return; }
+    if (!fe || !p || s.modes !== 'fe' || !this.rig.cam) {
+      this.overlays.hidePoint();
+      return;
+    }
     const [cw, ch] = this.canvasCss();
     this.overlays.placePoint(this.drawnPoint(p[0], p[1], t), cw, ch, p);
   }
@@ -456,7 +582,8 @@ class Wing3dPanel {
    */
   pickAt(/** @type {number} */ x, /** @type {number} */ y) {
     if (!this.fe || this.store.get().modes !== 'fe') {
-      this.dom.status.textContent = 'The strain point can be chosen on an FE wing only (the paper’s strains exist only at P).';
+      this.dom.status.textContent =
+        'The strain point can be chosen on an FE wing only (the paper’s strains exist only at P).';
       return null;
     }
     const sn = this.screenNodes();
@@ -502,7 +629,7 @@ class Wing3dPanel {
   }
 
   destroy() {
-    this.unsub.forEach((f) => f());
+    for (const f of this.unsub) f();
     this.store.set({ playing: false });
     if (this.io) this.io.disconnect();
     if (this.ro) this.ro.disconnect();
@@ -518,23 +645,38 @@ class Wing3dPanel {
     return {
       startWhenVisible: () => p.startWhenVisible(),
       start: () => p.start(),
-      get view() { return p.view; },
-      get t() { return p.tNow(); },
-      get camera() { return p.rig.cam; },
-      get ranges() { return p.ranges; },
-      get frames() { return p.frames; },
-      get fe() { return p.fe; },
+      get view() {
+        return p.view;
+      },
+      get t() {
+        return p.tNow();
+      },
+      get camera() {
+        return p.rig.cam;
+      },
+      get ranges() {
+        return p.ranges;
+      },
+      get frames() {
+        return p.frames;
+      },
+      get fe() {
+        return p.fe;
+      },
       pickAt: (/** @type {number} */ x, /** @type {number} */ y) => p.pickAt(x, y),
       /** Where the strain point is drawn (CSS px in the canvas), or null when hidden. */
       pointOnScreen: () => p.overlays.pointOnScreen(),
       /** CSS px of the planform point (x, y) mm on the drawn wing at the current instant (tests). */
-      screenOf: (/** @type {number} */ x, /** @type {number} */ y, /** @type {number | undefined} */ t = undefined) => p.drawnPoint(x, y, t),
+      screenOf: (/** @type {number} */ x, /** @type {number} */ y, /** @type {number | undefined} */ t = undefined) =>
+        p.drawnPoint(x, y, t),
       setTime(/** @type {number} */ t) {
         const r = p.store.get().result;
         const dur = r ? r.analysis.sim.t[r.analysis.sim.t.length - 1] : 2;
         p.store.set({ playing: false, t3d: Math.min(dur, Math.max(0, Number.isFinite(t) ? t : 0)) });
       },
-      setPlaying(/** @type {boolean} */ on) { p.store.set({ playing: !!on }); },
+      setPlaying(/** @type {boolean} */ on) {
+        p.store.set({ playing: !!on });
+      },
       setLayout: (/** @type {string} */ mode) => p.setLayout(mode),
       setScreen: (/** @type {string} */ screen) => p.setScreen(screen),
       destroy: () => p.destroy(),

@@ -32,7 +32,11 @@ export function strokePoses(result, count = 32) {
   if (!result || !result.angles) return null;
   const { alpha, beta, gamma } = result.angles;
   const a = result.analysis;
-  return S.flapSamples(alpha.length, a.sim.sample_rate_hz, a.sim.flap_freq_hz, count).map((i) => [alpha[i], beta[i], gamma[i]]);
+  return S.flapSamples(alpha.length, a.sim.sample_rate_hz, a.sim.flap_freq_hz, count).map((i) => [
+    alpha[i],
+    beta[i],
+    gamma[i],
+  ]);
 }
 
 /**
@@ -128,7 +132,10 @@ export function createCameraRig(view) {
       /** @type {number | null} */
       let coverage = null;
       if (search || !rig.fitKey) {
-        const fitFrom = (/** @type {S.Camera} */ c) => { rig.move(c); return rig.mirror(v.fitPoints(pts, FIT_MARGIN)); };
+        const fitFrom = (/** @type {S.Camera} */ c) => {
+          rig.move(c);
+          return rig.mirror(v.fitPoints(pts, FIT_MARGIN));
+        };
         const best = S.bestView(span, fe.nodes, fe.triangles, poses, width, height, { lift, fit: fitFrom });
         if (!best) return null;
         rig.move(best.camera);
@@ -179,7 +186,11 @@ export function bindCamera(canvas, rig, on) {
   let last = null;
   /** @type {number[] | null} where the pointer went down (a click: up within CLICK_PX of it) */
   let down = null;
-  canvas.addEventListener('pointerdown', (e) => { last = [e.clientX, e.clientY]; down = last; canvas.setPointerCapture(e.pointerId); });
+  canvas.addEventListener('pointerdown', (e) => {
+    last = [e.clientX, e.clientY];
+    down = last;
+    canvas.setPointerCapture(e.pointerId);
+  });
   canvas.addEventListener('pointerup', (e) => {
     if (isClick(down, e.clientX, e.clientY)) {
       const b = canvas.getBoundingClientRect();
@@ -193,15 +204,21 @@ export function bindCamera(canvas, rig, on) {
     last = [e.clientX, e.clientY];
     on.moved();
   });
-  const end = () => { last = null; };
+  const end = () => {
+    last = null;
+  };
   canvas.addEventListener('pointerup', end);
   canvas.addEventListener('pointercancel', end);
-  canvas.addEventListener('wheel', (e) => {
-    if (!on.view()) return;
-    e.preventDefault();
-    rig.zoom(wheelZoom(e.deltaY));
-    on.moved();
-  }, { passive: false });
+  canvas.addEventListener(
+    'wheel',
+    (e) => {
+      if (!on.view()) return;
+      e.preventDefault();
+      rig.zoom(wheelZoom(e.deltaY));
+      on.moved();
+    },
+    { passive: false },
+  );
   canvas.addEventListener('keydown', (e) => {
     if (!on.view()) return;
     if (e.key === ' ') {

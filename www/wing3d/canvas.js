@@ -17,7 +17,14 @@ export const MAX_BACKING_PX = 2_000_000;
  * (wgpu draws into its own targets and blits), no MSAA, no preserved drawing buffer (so the
  * browser never has to keep or read back a copy).
  */
-export const WEBGL_ATTRIBUTES = { alpha: false, depth: false, stencil: false, antialias: false, preserveDrawingBuffer: false, powerPreference: 'high-performance' };
+export const WEBGL_ATTRIBUTES = {
+  alpha: false,
+  depth: false,
+  stencil: false,
+  antialias: false,
+  preserveDrawingBuffer: false,
+  powerPreference: 'high-performance',
+};
 
 /**
  * The canvas for a stage `stageWidth` CSS px wide (0: not laid out, 640 assumed): CSS width and
@@ -44,6 +51,12 @@ export async function prepareContext(c) {
   try {
     const gpu = /** @type {any} */ (navigator).gpu;
     if (gpu && (await gpu.requestAdapter())) return;
-  } catch { /* no WebGPU: WebGL2 */ }
-  try { c.getContext('webgl2', WEBGL_ATTRIBUTES); } catch { /* wgpu reports it */ }
+  } catch {
+    /* no WebGPU: WebGL2 */
+  }
+  try {
+    c.getContext('webgl2', WEBGL_ATTRIBUTES);
+  } catch {
+    /* wgpu reports it */
+  }
 }

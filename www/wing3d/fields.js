@@ -32,9 +32,12 @@ export function rangeLimit(c, ranges, fieldLimit) {
  * @param {any} m store `sense_map`
  */
 export function senseProblemOf(fe, m) {
-  return !fe ? 'the FE wing is not ready yet'
-    : !m ? 'no sensing result yet: open the Sensing panel (FE wing mode set) and wait for its map'
-      : m.fe !== fe || m.n_nodes !== fe.n_nodes || m.field.length !== fe.nodes.length / 3 ? 'the sensing result is for another wing: keep the Sensing panel on screen until it has recomputed'
+  return !fe
+    ? 'the FE wing is not ready yet'
+    : !m
+      ? 'no sensing result yet: open the Sensing panel (FE wing mode set) and wait for its map'
+      : m.fe !== fe || m.n_nodes !== fe.n_nodes || m.field.length !== fe.nodes.length / 3
+        ? 'the sensing result is for another wing: keep the Sensing panel on screen until it has recomputed'
         : null;
 }
 
@@ -66,7 +69,8 @@ export function createFields({ store, engine, view, fe, colour, draw }) {
    */
   function applyField(force = false) {
     const s = store.get();
-    const v = view(), w = fe();
+    const v = view(),
+      w = fe();
     if (!v || !w || !s.result) return;
     const map = s.strain_map || S.DEFAULT_MAP;
     const key = `${map.component}/${map.stat}`;
@@ -75,13 +79,20 @@ export function createFields({ store, engine, view, fe, colour, draw }) {
     // strain panel already made it; the previous map stays drawn meanwhile.
     if (s.modes === 'fe' && map.stat === 'peak' && !force && !S.cachedStrainMap(w, s.result, map)) {
       clearTimeout(fieldTimer);
-      fieldTimer = setTimeout(() => { applyField(true); draw(); }, PEAK_DELAY_MS);
+      fieldTimer = setTimeout(() => {
+        applyField(true);
+        draw();
+      }, PEAK_DELAY_MS);
       return;
     }
     fieldKey = key;
     fieldResult = s.result;
     const field = s.modes === 'fe' ? S.strainMap(w, s.result, map, strainFieldOf(engine)) : null;
-    fieldProblem = field ? null : s.modes === 'fe' ? 'the wing and the run do not match yet' : 'the paper mode set has no whole-wing strain (choose the FE wing)';
+    fieldProblem = field
+      ? null
+      : s.modes === 'fe'
+        ? 'the wing and the run do not match yet'
+        : 'the paper mode set has no whole-wing strain (choose the FE wing)';
     try {
       fieldLimit = field ? S.mapLimit(field) : null;
       v.setNodeField(field || new Float64Array(w.nodes.length / 3), fieldLimit);
@@ -97,7 +108,8 @@ export function createFields({ store, engine, view, fe, colour, draw }) {
    * 1 → its dark red end).
    */
   function applySense() {
-    const v = view(), w = fe();
+    const v = view(),
+      w = fe();
     if (!v || !w) return;
     const s = store.get();
     const m0 = s.sense_map || null;
@@ -125,13 +137,19 @@ export function createFields({ store, engine, view, fe, colour, draw }) {
       v.set_strain_range(rangeLimit(c, ranges, fieldLimit));
     },
     /** Forgets the uploaded field: the next applyRange uploads again. */
-    invalidate() { fieldKey = ''; },
+    invalidate() {
+      fieldKey = '';
+    },
     /** The detectability map on the wing now (null: none). */
-    get senseUp() { return senseUp; },
+    get senseUp() {
+      return senseUp;
+    },
     /** What the legend says about the fields (www/wing3d/legend.js LegendInfo). */
     legendInfo() {
       return { sensing: colour() === SENSE_COLOUR, fieldProblem, fieldLabel, senseUp, senseProblem, senseStale };
     },
-    destroy() { clearTimeout(fieldTimer); },
+    destroy() {
+      clearTimeout(fieldTimer);
+    },
   };
 }

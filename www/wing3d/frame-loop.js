@@ -44,7 +44,9 @@ export function frameGate() {
       lastDraw = now;
       return true;
     },
-    get mean() { return avg; },
+    get mean() {
+      return avg;
+    },
   };
 }
 
@@ -88,15 +90,24 @@ export function createFrameLoop({ box, store, ready, draw, speed, duration, env 
   /** Starts the loop when playing, on screen and visible (else says why it is paused). */
   function start() {
     if (!ready() || id || !store.get().playing) return;
-    if (!onScreen || doc.hidden) { stop(pausedState()); return; }
+    if (!onScreen || doc.hidden) {
+      stop(pausedState());
+      return;
+    }
     box.dataset.loop = 'running';
     playT = store.get().t3d ?? 0;
     let prev = clock();
     const gate = frameGate();
     const step = (/** @type {number} */ now) => {
       id = 0;
-      if (!store.get().playing) { stop('stopped'); return; }
-      if (!onScreen || doc.hidden) { stop(pausedState()); return; }
+      if (!store.get().playing) {
+        stop('stopped');
+        return;
+      }
+      if (!onScreen || doc.hidden) {
+        stop(pausedState());
+        return;
+      }
       id = raf(step);
       if (!gate.due(now)) return;
       const t = advanceTime(playT ?? 0, now - prev, speed(), duration());
@@ -106,25 +117,39 @@ export function createFrameLoop({ box, store, ready, draw, speed, duration, env 
       if (now - lastPush >= PUSH_MS) {
         lastPush = now;
         pushing = true;
-        try { store.set({ t3d: t }); } finally { pushing = false; }
+        try {
+          store.set({ t3d: t });
+        } finally {
+          pushing = false;
+        }
       }
     };
     id = raf(step);
   }
 
-  function onVisibility() { if (!doc.hidden) start(); }
+  function onVisibility() {
+    if (!doc.hidden) start();
+  }
 
   return {
     start,
     stop,
     /** The instant being played (null when not playing). */
-    get t() { return playT; },
+    get t() {
+      return playT;
+    },
     /** A time set from outside while playing becomes the loop's time (so a pause keeps it). */
-    set t(/** @type {number | null} */ t) { playT = t; },
+    set t(/** @type {number | null} */ t) {
+      playT = t;
+    },
     /** True while the loop itself is handing its time to the store. */
-    get pushing() { return pushing; },
+    get pushing() {
+      return pushing;
+    },
     /** When the loop last handed its time to the store (ms, the frame clock). */
-    get lastPush() { return lastPush; },
+    get lastPush() {
+      return lastPush;
+    },
     /** Pauses the loop off screen (IntersectionObserver on `target`) and in a hidden tab; resumes when seen. */
     watch(/** @type {Element} */ target) {
       if (typeof IntersectionObserver === 'function') {

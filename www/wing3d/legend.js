@@ -13,7 +13,13 @@ export const SCENE_LEGEND = [
   ['plane', 'Stroke plane (I–K plane through the root, ⟂ body axis)', 'rgba(115,140,217,0.35)', 'rgb(102,122,179)'],
   ['body', 'Body axis (along J)', 'rgb(217,217,217)'],
   ['fixed', 'Fixed frame I, J, K (dim red, green, blue)', 'rgb(140,64,64)', 'rgb(64,128,64)', 'rgb(64,77,153)'],
-  ['wing', 'Flapping frame I″, J″, K″ (bright red, green, blue)', 'rgb(255,64,51)', 'rgb(77,255,77)', 'rgb(89,140,255)'],
+  [
+    'wing',
+    'Flapping frame I″, J″, K″ (bright red, green, blue)',
+    'rgb(255,64,51)',
+    'rgb(77,255,77)',
+    'rgb(89,140,255)',
+  ],
 ];
 
 /** The list naming the stroke plane, the body axis and both frames, each with its colours. */
@@ -22,7 +28,9 @@ export function sceneLegendList() {
   for (const [key, text, ...cols] of SCENE_LEGEND) {
     const sw = el('span', { class: 'wl-w3-sw', 'aria-hidden': 'true' });
     if (key === 'plane') sw.style.cssText = `background:${cols[0]};border:1px solid ${cols[1]}`;
-    else sw.style.background = cols.length > 1 ? `linear-gradient(90deg, ${cols[0]} 33%, ${cols[1]} 33% 66%, ${cols[2]} 66%)` : cols[0];
+    else
+      sw.style.background =
+        cols.length > 1 ? `linear-gradient(90deg, ${cols[0]} 33%, ${cols[1]} 33% 66%, ${cols[2]} 66%)` : cols[0];
     list.append(el('li', { 'data-scene': key }, sw, text));
   }
   return list;
@@ -35,7 +43,8 @@ export function sceneLegendList() {
  * @returns {[number, string][]}
  */
 export function gradientStops(stops) {
-  const lo = stops[0], hi = stops[stops.length - 4];
+  const lo = stops[0],
+    hi = stops[stops.length - 4];
   /** @type {[number, string][]} */
   const out = [];
   for (let j = 0; j < stops.length; j += 4) {
@@ -63,7 +72,9 @@ export function gradientStops(stops) {
 export function strainLegendText(lg, isFe, fieldProblem, fieldLabel) {
   const units = isFe ? 'strain (–)' : '(FE strain × paper q: not physical)';
   return lg.component === 'field'
-    ? (fieldProblem ? `no strain map: ${fieldProblem}` : `${fieldLabel}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} strain (–), one map for the whole run (the hottest ${Math.round(100 * (1 - RANGE_QUANTILE))} % of the nodes saturate)`)
+    ? fieldProblem
+      ? `no strain map: ${fieldProblem}`
+      : `${fieldLabel}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} strain (–), one map for the whole run (the hottest ${Math.round(100 * (1 - RANGE_QUANTILE))} % of the nodes saturate)`
     : `${lg.component}: ${fmt(lg.min, 3)} … ${fmt(lg.max, 3)} ${units}, fixed for the whole run`;
 }
 
@@ -78,10 +89,12 @@ export function senseLegendText(m, problem, stale) {
   if (problem || !m) return `No detectability map: ${problem || 'no sensing result yet: open the Sensing panel'}.`;
   const axis = m.body_rate.findIndex((/** @type {number} */ v) => v !== 0);
   const rate = axis >= 0 ? `ω_b = ${fmt(m.body_rate[axis], 3)} rad/s about body axis ${'xyz'[axis]}` : 'ω_b = 0';
-  if (!(m.max > 0)) return `Rotation detectability D (Sensing panel, ${rate}): D = 0 everywhere, no rotation, nothing to detect.`;
-  const scale = m.mode === 'absolute'
-    ? `fixed log scale: grey = D ≤ 10^{${m.lo}}, dark red = D ≥ 10^{${m.hi}}; largest on this wing ${fmt(m.max, 3)}`
-    : `log scale relative to this wing: grey = D ≤ ${fmt(10 ** m.lo, 3)} (${fmt(m.hi - m.lo, 2)} decade below the largest), dark red = the largest, ${fmt(m.max, 3)}`;
+  if (!(m.max > 0))
+    return `Rotation detectability D (Sensing panel, ${rate}): D = 0 everywhere, no rotation, nothing to detect.`;
+  const scale =
+    m.mode === 'absolute'
+      ? `fixed log scale: grey = D ≤ 10^{${m.lo}}, dark red = D ≥ 10^{${m.hi}}; largest on this wing ${fmt(m.max, 3)}`
+      : `log scale relative to this wing: grey = D ≤ ${fmt(10 ** m.lo, 3)} (${fmt(m.hi - m.lo, 2)} decade below the largest), dark red = the largest, ${fmt(m.max, 3)}`;
   return `Rotation detectability D per node from the Sensing panel (${rate}), ${scale}: the panel’s scale in this view’s colours (D = 1: the rotation’s strain as large as the 1 % stroke variation plus noise). Numbered tags: the ${m.sensors.length} best sensors (1 = chosen first) on the deflected wing, drawn on top even where the wing hides them.${stale ? ' This map is for earlier settings (kinematics or modes): the Sensing panel recomputes it when it is on screen.' : ''}`;
 }
 
@@ -104,7 +117,12 @@ export function legendKey(lg, isFe, info) {
  */
 export function createStrainLegend(bar, text) {
   let shown = '';
-  return (/** @type {any} */ lg, /** @type {boolean} */ isFe, /** @type {() => ArrayLike<number>} */ stops, /** @type {LegendInfo} */ info) => {
+  return (
+    /** @type {any} */ lg,
+    /** @type {boolean} */ isFe,
+    /** @type {() => ArrayLike<number>} */ stops,
+    /** @type {LegendInfo} */ info,
+  ) => {
     const key = legendKey(lg, isFe, info);
     if (key === shown) return;
     shown = key;
@@ -124,7 +142,10 @@ export function createStrainLegend(bar, text) {
     c2.fillRect(0, 0, w, h);
     text.dataset.min = String(lg.min);
     text.dataset.max = String(lg.max);
-    if (info.sensing) { text.replaceChildren(rich(senseLegendText(info.senseUp, info.senseProblem, info.senseStale))); return; }
+    if (info.sensing) {
+      text.replaceChildren(rich(senseLegendText(info.senseUp, info.senseProblem, info.senseStale)));
+      return;
+    }
     text.textContent = strainLegendText(lg, isFe, info.fieldProblem, info.fieldLabel);
   };
 }

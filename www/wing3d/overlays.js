@@ -13,9 +13,14 @@ import { clusterMarkers, groupLabel } from '../sensemap.js';
  * legend under the view says the same in words): text, kind (which checkbox shows it), colour.
  */
 export const LABELS = [
-  ['I', 'fixed', 'rgb(200,110,110)'], ['J', 'fixed', 'rgb(110,190,110)'], ['K', 'fixed', 'rgb(130,150,230)'],
-  ['I″', 'wing', 'rgb(255,90,80)'], ['J″', 'wing', 'rgb(100,255,100)'], ['K″', 'wing', 'rgb(120,165,255)'],
-  ['body axis', 'body', 'rgb(220,220,220)'], ['stroke plane', 'plane', 'rgb(150,170,235)'],
+  ['I', 'fixed', 'rgb(200,110,110)'],
+  ['J', 'fixed', 'rgb(110,190,110)'],
+  ['K', 'fixed', 'rgb(130,150,230)'],
+  ['I″', 'wing', 'rgb(255,90,80)'],
+  ['J″', 'wing', 'rgb(100,255,100)'],
+  ['K″', 'wing', 'rgb(120,165,255)'],
+  ['body axis', 'body', 'rgb(220,220,220)'],
+  ['stroke plane', 'plane', 'rgb(150,170,235)'],
 ];
 
 /**
@@ -36,9 +41,14 @@ export function labelPlaces(cam, span, ang, w, h, show) {
   const pr = S.projector(cam, w, h);
   const fr = (/** @type {number[]} */ p) => S.rotate(ang[0], ang[1], 0, p);
   const pts = [
-    [0.35 * l, 0, 0], [0, 0.35 * l, 0], [0, 0, 0.35 * l],
-    fr([0.7 * l, 0, 0]), fr([0, 0.45 * l, 0]), fr([0, 0, 0.45 * l]),
-    [0, 0.6 * l, 0], [1.1 * l, 0, 0.9 * l],
+    [0.35 * l, 0, 0],
+    [0, 0.35 * l, 0],
+    [0, 0, 0.35 * l],
+    fr([0.7 * l, 0, 0]),
+    fr([0, 0.45 * l, 0]),
+    fr([0, 0, 0.45 * l]),
+    [0, 0.6 * l, 0],
+    [1.1 * l, 0, 0.9 * l],
   ];
   /**
    * @param {number[] | null} p
@@ -46,8 +56,17 @@ export function labelPlaces(cam, span, ang, w, h, show) {
    */
   const inView = (p) => !!p && p[0] > 10 && p[0] < w - 90 && p[1] > 20 && p[1] < h - 10;
   const mid = pr(...S.rotate(ang[0], ang[1], ang[2], [0.45 * l, -0.2 * l, 0])) || [w / 2, h / 2];
-  const planeAt = [[1.1 * l, 0, 0.9 * l], [1.1 * l, 0, -0.9 * l], [0.5 * l, 0, 0.9 * l], [0.5 * l, 0, -0.9 * l], [-0.1 * l, 0, 0.9 * l], [-0.1 * l, 0, -0.9 * l], [1.1 * l, 0, 0]]
-    .map((q) => pr(q[0], q[1], q[2])).filter(inView)
+  const planeAt = [
+    [1.1 * l, 0, 0.9 * l],
+    [1.1 * l, 0, -0.9 * l],
+    [0.5 * l, 0, 0.9 * l],
+    [0.5 * l, 0, -0.9 * l],
+    [-0.1 * l, 0, 0.9 * l],
+    [-0.1 * l, 0, -0.9 * l],
+    [1.1 * l, 0, 0],
+  ]
+    .map((q) => pr(q[0], q[1], q[2]))
+    .filter(inView)
     .sort((a, b) => Math.hypot(b[0] - mid[0], b[1] - mid[1]) - Math.hypot(a[0] - mid[0], a[1] - mid[1]))[0];
   return LABELS.map(([, kind], j) => {
     const p = kind === 'plane' ? planeAt : pr(pts[j][0], pts[j][1], pts[j][2]);
@@ -117,9 +136,16 @@ export function createOverlays() {
       });
     },
     /** Hides the strain point's ring. */
-    hidePoint() { pointMark.hidden = true; },
+    hidePoint() {
+      pointMark.hidden = true;
+    },
     /** Puts the ring at `at` (CSS px; hidden off the canvas), titled with the point (mm). */
-    placePoint(/** @type {number[] | null} */ at, /** @type {number} */ w, /** @type {number} */ h, /** @type {number[]} */ p) {
+    placePoint(
+      /** @type {number[] | null} */ at,
+      /** @type {number} */ w,
+      /** @type {number} */ h,
+      /** @type {number[]} */ p,
+    ) {
       const place = ringPlace(at, w, h);
       pointMark.hidden = !place;
       if (place) pointMark.style.transform = translate(place);
@@ -150,10 +176,17 @@ function sensorMarks(layer) {
   /** @type {HTMLElement[]} */
   const tags = [];
   const hide = () => {
-    if (!layer.hidden) { layer.hidden = true; layer.dataset.sensors = '0'; }
+    if (!layer.hidden) {
+      layer.hidden = true;
+      layer.dataset.sensors = '0';
+    }
     groups = null;
   };
-  const placeDots = (/** @type {{ x: number, y: number, rank: number }[]} */ pts, /** @type {number} */ w, /** @type {number} */ h) => {
+  const placeDots = (
+    /** @type {{ x: number, y: number, rank: number }[]} */ pts,
+    /** @type {number} */ w,
+    /** @type {number} */ h,
+  ) => {
     while (dots.length < pts.length) {
       const d = mover('wl-w3-sdot');
       dots.push(d);
@@ -169,7 +202,12 @@ function sensorMarks(layer) {
     });
     for (let j = pts.length; j < dots.length; j++) dots[j].hidden = true;
   };
-  const placeTags = (/** @type {typeof groups & {}} */ gs, /** @type {Map<number, { x: number, y: number }>} */ byRank, /** @type {number} */ w, /** @type {number} */ h) => {
+  const placeTags = (
+    /** @type {typeof groups & {}} */ gs,
+    /** @type {Map<number, { x: number, y: number }>} */ byRank,
+    /** @type {number} */ w,
+    /** @type {number} */ h,
+  ) => {
     while (tags.length < gs.length) {
       const t = mover('wl-w3-stag');
       tags.push(t);
@@ -179,7 +217,11 @@ function sensorMarks(layer) {
       const t = tags[j];
       const p = byRank.get(g.ranks[0]);
       const label = groupLabel(g.ranks, 6);
-      if (t.textContent !== label) { t.textContent = label; t.dataset.ranks = g.ranks.join(','); t.title = `sensor${g.ranks.length > 1 ? 's' : ''} ${label} of the greedy placement (1 = chosen first)`; }
+      if (t.textContent !== label) {
+        t.textContent = label;
+        t.dataset.ranks = g.ranks.join(',');
+        t.title = `sensor${g.ranks.length > 1 ? 's' : ''} ${label} of the greedy placement (1 = chosen first)`;
+      }
       const ok = !!p && p.x >= 0 && p.y >= 0 && p.x <= w && p.y <= h;
       if (t.hidden !== !ok) t.hidden = !ok;
       if (!ok || !p) return;
@@ -190,17 +232,35 @@ function sensorMarks(layer) {
   };
   return {
     /** Forgets the tags' grouping (a new map or colour): the next placeSensors groups afresh. */
-    regroupSensors() { groups = null; },
+    regroupSensors() {
+      groups = null;
+    },
     /**
      * Places the sensors at their screen points `pts` (sensorPoints in www/wing3d/picking.js) on a
      * w × h canvas; null or none hides the layer.
      */
-    placeSensors(/** @type {{ x: number, y: number, rank: number }[] | null} */ pts, /** @type {number} */ w, /** @type {number} */ h, /** @type {boolean} */ regroup) {
-      if (!pts || !pts.length) { hide(); return; }
+    placeSensors(
+      /** @type {{ x: number, y: number, rank: number }[] | null} */ pts,
+      /** @type {number} */ w,
+      /** @type {number} */ h,
+      /** @type {boolean} */ regroup,
+    ) {
+      if (!pts || !pts.length) {
+        hide();
+        return;
+      }
       placeDots(pts, w, h);
       const byRank = new Map(pts.map((p) => [p.rank, p]));
-      if (regroup || !groups || groups.reduce((a, g) => a + g.ranks.length, 0) !== pts.length || groups.some((g) => !byRank.has(g.ranks[0]))) {
-        groups = clusterMarkers(pts.filter((p) => Number.isFinite(p.x) && Number.isFinite(p.y)), 22);
+      if (
+        regroup ||
+        !groups ||
+        groups.reduce((a, g) => a + g.ranks.length, 0) !== pts.length ||
+        groups.some((g) => !byRank.has(g.ranks[0]))
+      ) {
+        groups = clusterMarkers(
+          pts.filter((p) => Number.isFinite(p.x) && Number.isFinite(p.y)),
+          22,
+        );
       }
       placeTags(groups, byRank, w, h);
       if (layer.hidden) layer.hidden = false;

@@ -51,7 +51,11 @@ export function buildPanel(uid, touch, overlay, on) {
   const canvas = makeCanvas(summaryId, touch);
   const stage = el('div', { class: 'wl-w3-stage' }, canvas, overlay);
   box.append(stage);
-  const summary = el('p', { class: 'wl-sr', id: summaryId, text: 'The 3-D view of the wing is starting: it shows the wing flapping and bending at the instant chosen with the time slider.' });
+  const summary = el('p', {
+    class: 'wl-sr',
+    id: summaryId,
+    text: 'The 3-D view of the wing is starting: it shows the wing flapping and bending at the instant chosen with the time slider.',
+  });
   const status = el('p', { class: 'wl-w3-status', role: 'status', text: 'Starting the 3-D view…' });
   return { box, summaryId, canvas, stage, summary, status, ...buildControls(uid, on) };
 }
@@ -62,15 +66,37 @@ export function buildPanel(uid, touch, overlay, on) {
  * @param {Parameters<typeof buildPanel>[3]} on
  */
 function buildControls(uid, on) {
-  const playBtn = el('button', { type: 'button', class: 'wl-w3-play', text: 'Play', 'aria-pressed': 'false', onclick: on.play });
+  const playBtn = el('button', {
+    type: 'button',
+    class: 'wl-w3-play',
+    text: 'Play',
+    'aria-pressed': 'false',
+    onclick: on.play,
+  });
   const speed = el('select', { id: `${uid}-w3-speed`, 'aria-label': 'Playback speed' });
   for (const [v, t] of SPEEDS) speed.append(el('option', { value: v, text: t }));
   speed.value = 'beat4';
   speed.addEventListener('change', on.speed);
-  const time = el('input', { type: 'range', id: `${uid}-w3-time`, min: 0, max: 2, step: 0.0001, value: 0.505, 'aria-label': 'Simulated time t, in s' });
+  const time = el('input', {
+    type: 'range',
+    id: `${uid}-w3-time`,
+    min: 0,
+    max: 2,
+    step: 0.0001,
+    value: 0.505,
+    'aria-label': 'Simulated time t, in s',
+  });
   time.addEventListener('input', () => on.time(Number(time.value)));
   const timeText = el('span', { class: 'wl-w3-time', 'aria-live': 'off' });
-  const exag = el('input', { type: 'range', id: `${uid}-w3-exag`, min: 0, max: 3, step: 0.05, value: 1, 'aria-label': 'Deflection exaggeration, as a power of ten' });
+  const exag = el('input', {
+    type: 'range',
+    id: `${uid}-w3-exag`,
+    min: 0,
+    max: 3,
+    step: 0.05,
+    value: 1,
+    'aria-label': 'Deflection exaggeration, as a power of ten',
+  });
   exag.addEventListener('input', on.exag);
   const exagText = el('span', { class: 'wl-w3-exag' });
   const colour = el('select', { id: `${uid}-w3-colour`, 'aria-label': 'Colour the wing by' });
@@ -83,21 +109,39 @@ function buildControls(uid, on) {
   const showBody = el('input', { type: 'checkbox', id: `${uid}-w3-body`, checked: true });
   const showPlane = el('input', { type: 'checkbox', id: `${uid}-w3-plane`, checked: true });
   for (const c of [showAxes, showBody, showPlane]) c.addEventListener('change', on.scene);
-  const resetBtn = el('button', { type: 'button', class: 'wl-small', text: 'Fit view', title: 'Camera back to the view that fits the whole stroke', onclick: on.fit });
-  const row = (label, id, ...inputs) => el('div', { class: 'wl-w3-row' }, el('label', { for: id, text: label }), ...inputs);
-  const options = el('details', { class: 'wl-w3-options', open: true },
+  const resetBtn = el('button', {
+    type: 'button',
+    class: 'wl-small',
+    text: 'Fit view',
+    title: 'Camera back to the view that fits the whole stroke',
+    onclick: on.fit,
+  });
+  const row = (label, id, ...inputs) =>
+    el('div', { class: 'wl-w3-row' }, el('label', { for: id, text: label }), ...inputs);
+  const options = el(
+    'details',
+    { class: 'wl-w3-options', open: true },
     el('summary', { text: 'View options: exaggeration, colour, what the lines are' }),
-    el('div', { class: 'wl-w3-optrows' },
+    el(
+      'div',
+      { class: 'wl-w3-optrows' },
       row('exaggeration', exag.id, exag, exagText),
       row('colour', colour.id, colour),
-      el('div', { class: 'wl-w3-row wl-w3-legendrow' }, legend, legendText)),
-    el('div', { class: 'wl-w3-row' },
+      el('div', { class: 'wl-w3-row wl-w3-legendrow' }, legend, legendText),
+    ),
+    el(
+      'div',
+      { class: 'wl-w3-row' },
       el('label', { class: 'wl-check' }, showPlane, ' stroke plane'),
       el('label', { class: 'wl-check' }, showBody, ' body axis'),
       el('label', { class: 'wl-check' }, showAxes, ' frames I, J, K and I″, J″, K″'),
-      resetBtn),
-    sceneLegendList());
-  const controls = el('div', { class: 'wl-w3-controls' },
+      resetBtn,
+    ),
+    sceneLegendList(),
+  );
+  const controls = el(
+    'div',
+    { class: 'wl-w3-controls' },
     el('div', { class: 'wl-w3-row' }, playBtn, el('label', { for: speed.id, text: 'speed' }), speed),
     row('time', time.id, time, timeText),
     options,
@@ -105,5 +149,22 @@ function buildControls(uid, on) {
   const defl = el('p', { class: 'wl-w3-defl' });
   const note = el('p', { class: 'wl-note' });
   options.append(note);
-  return { playBtn, speed, time, timeText, exag, exagText, colour, legend, legendText, showAxes, showBody, showPlane, options, controls, defl, note };
+  return {
+    playBtn,
+    speed,
+    time,
+    timeText,
+    exag,
+    exagText,
+    colour,
+    legend,
+    legendText,
+    showAxes,
+    showBody,
+    showPlane,
+    options,
+    controls,
+    defl,
+    note,
+  };
 }

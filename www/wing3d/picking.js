@@ -70,7 +70,10 @@ export function planformHits() {
     if (cache && cache.fe === fe && cache.key === key) return cache.hit;
     const n = fe.nodes.length / 3;
     const top = { xy: new Float64Array(2 * n), depth: new Float64Array(n) };
-    for (let i = 0; i < n; i++) { top.xy[2 * i] = fe.nodes[3 * i]; top.xy[2 * i + 1] = fe.nodes[3 * i + 1]; }
+    for (let i = 0; i < n; i++) {
+      top.xy[2 * i] = fe.nodes[3 * i];
+      top.xy[2 * i + 1] = fe.nodes[3 * i + 1];
+    }
     const hit = S.pick(fe.nodes, fe.triangles, top, xmm * 1e-3, ymm * 1e-3);
     cache = { fe, key, hit };
     return hit;
@@ -85,8 +88,12 @@ export function planformHits() {
  * @returns {number[] | null}
  */
 export function drawnAt(hit, proj) {
-  let px = 0, py = 0;
-  hit.ids.forEach((i, j) => { px += hit.w[j] * proj.xy[2 * i]; py += hit.w[j] * proj.xy[2 * i + 1]; });
+  let px = 0,
+    py = 0;
+  hit.ids.forEach((i, j) => {
+    px += hit.w[j] * proj.xy[2 * i];
+    py += hit.w[j] * proj.xy[2 * i + 1];
+  });
   return Number.isFinite(px) && Number.isFinite(py) ? [px, py] : null;
 }
 

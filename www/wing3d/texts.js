@@ -44,7 +44,10 @@ export function speedFactor(value, result) {
 export function timeLine(t, result, f) {
   const fd = result ? result.analysis.sim.flap_freq_hz : 25;
   const b = result ? beatInfo(result.analysis, result.k) : null;
-  return `t = ${t.toFixed(4)} s · flap ${fmt(fd, 3)} Hz shown at ${fmt(fd * f, 3)} Hz` + (b && b.period ? ` · one beat every ${fmt(b.period / f, 3)} s` : '');
+  return (
+    `t = ${t.toFixed(4)} s · flap ${fmt(fd, 3)} Hz shown at ${fmt(fd * f, 3)} Hz` +
+    (b && b.period ? ` · one beat every ${fmt(b.period / f, 3)} s` : '')
+  );
 }
 
 /**
@@ -57,9 +60,13 @@ export function timeLine(t, result, f) {
  * @param {number} ex exaggeration
  */
 export function statusLine(backend, triangles, ang, isFe, d, ex) {
-  return `${backend === 'webgpu' ? 'WebGPU' : 'WebGL2'} · ${triangles} triangles · ` +
+  return (
+    `${backend === 'webgpu' ? 'WebGPU' : 'WebGL2'} · ${triangles} triangles · ` +
     `α ${ang[0].toFixed(3)}, β ${ang[1].toFixed(3)}, γ ${ang[2].toFixed(3)} rad · ` +
-    (isFe ? `true largest deflection ${fmt(d * 1e3, 3)} mm, drawn ×${fmt(ex, 3)}` : `largest deflection ${fmt(d * 1e3, 3)} (paper q units, not SI), drawn ×${fmt(ex, 3)}`);
+    (isFe
+      ? `true largest deflection ${fmt(d * 1e3, 3)} mm, drawn ×${fmt(ex, 3)}`
+      : `largest deflection ${fmt(d * 1e3, 3)} (paper q units, not SI), drawn ×${fmt(ex, 3)}`)
+  );
 }
 
 /**
