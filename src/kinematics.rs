@@ -489,7 +489,7 @@ impl BodyRate {
     /// Validates every component against [`crate::params::BODY_RATE_RANGES`]; errors name
     /// the field (`kinematics.body_rate.x.mean`, …).
     pub fn validate(&self) -> Result<()> {
-        use crate::params::body_rate_range as r;
+        use crate::ranges::body_rate_range as r;
         for (name, a) in [("x", &self.x), ("y", &self.y), ("z", &self.z)] {
             let field = format!("kinematics.body_rate.{name}");
             a.validate_with(&field, &|what, f, v| r(what).check(f, v))?;

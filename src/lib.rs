@@ -51,9 +51,11 @@ pub mod model;
 pub mod modes_doc;
 pub mod params;
 pub mod presets;
+pub mod ranges;
 #[cfg(feature = "render")]
 pub mod render;
 pub mod reproduce;
+pub mod run;
 pub mod simulate;
 pub mod solve;
 #[cfg(feature = "web")]

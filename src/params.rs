@@ -1,169 +1,29 @@
-//! The lab's numeric parameters, owned here once: their keys, symbols, labels, units, slider
-//! ranges and defaults (the paper's forward-flight case), and how each one changes a
-//! [`SimConfig`].
+//! How a value named by key changes an input: the one interpretation of the lab's sliders, the
+//! CLI's parameter flags and the sweeps. [`apply_overrides`] applies named values to a
+//! [`SimConfig`] (range-checked against the sliders, then validated); [`set_param`] is the
+//! single place where each key's meaning lives (the amplitudes set the first harmonic of an
+//! angle, a phase its phase, `flap_hz` the flap frequency, `zeta` every mode's damping ratio,
+//! `duration` [`SimConfig::duration_s`]), and [`crate::analysis::sweep::apply`] calls it for
+//! every sweep point. The wing's parameters ([`WING_PARAMS`], [`wing_input`]) do the same for
+//! the FE wing's [`crate::fem::FemInput`].
 //!
-//! A front end (the browser lab, its URLs, the embed attributes) names a parameter by its key
-//! and hands the value to [`apply_overrides`]; it never interprets the value itself. The
-//! amplitudes, the flap frequency and the damping ratio mean exactly what a sweep over them
-//! means ([`crate::analysis::sweep::apply`]); a phase sets the phase of the angle's first
-//! harmonic; `duration` sets [`SimConfig::duration_s`]. `tests/params.rs` checks that every
-//! slider range lies inside what [`SimConfig::validate`] accepts.
+//! The ranges themselves are plain data in [`crate::ranges`] (a leaf of the module graph, so
+//! the stages that check them — `kinematics`, `fem` — never import this module); everything
+//! there is re-exported here. This module sits above `config`, `kinematics`, `fem` and
+//! `presets`, the stages whose inputs it sets. `tests/params.rs` checks that every slider range
+//! lies inside what [`SimConfig::validate`] accepts.
 
-use crate::analysis::sweep::{self, SweepParam};
 use crate::config::SimConfig;
 use crate::error::{check_range, Result, WingbeatError};
 use crate::kinematics::{Angle, Harmonic};
 use serde::Serialize;
 
-/// One numeric parameter of the lab: what it is called and the slider that sets it.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Param {
-    /// Name in URLs, element attributes and [`apply_overrides`], e.g. `gamma0`.
-    pub key: &'static str,
-    /// Short mathematical symbol, e.g. `γ0`.
-    pub symbol: &'static str,
-    /// Human label for the slider.
-    pub label: &'static str,
-    /// Unit (`""` for dimensionless).
-    pub unit: &'static str,
-    /// Smallest slider value (inclusive).
-    pub min: f64,
-    /// Largest slider value (inclusive).
-    pub max: f64,
-    /// Slider step.
-    pub step: f64,
-    /// Default: the paper's forward-flight case (Tables 3–6), 2 s simulated.
-    pub default: f64,
-}
-
-/// Roll amplitude key.
-pub const ALPHA0: &str = "alpha0";
-/// Pitch amplitude key.
-pub const BETA0: &str = "beta0";
-/// Yaw amplitude key.
-pub const GAMMA0: &str = "gamma0";
-/// Flap frequency key.
-pub const FLAP_HZ: &str = "flap_hz";
-/// Damping ratio key.
-pub const ZETA: &str = "zeta";
-/// Roll phase key.
-pub const ALPHA_PHASE: &str = "alpha_phase";
-/// Pitch phase key.
-pub const BETA_PHASE: &str = "beta_phase";
-/// Yaw phase key.
-pub const GAMMA_PHASE: &str = "gamma_phase";
-/// Simulated duration key.
-pub const DURATION: &str = "duration";
-
-/// Largest phase on the sliders, rad: the last point of the 0.01 rad step grid below π
-/// (deliberately not π itself, so that the range ends on its step grid).
-#[allow(clippy::approx_constant)]
-pub const PHASE_LIMIT: f64 = 3.14;
-
-/// Every numeric parameter of the lab, in slider order. The duration reaches 10 s so that the
-/// damping experiment (ζ = 0.01, paper §4.3) can run long enough to see the beat die out.
-pub const PARAMS: [Param; 9] = [
-    Param {
-        key: ALPHA0,
-        symbol: "α0",
-        label: "α0, roll amplitude",
-        unit: "rad",
-        min: 0.0,
-        max: 1.5,
-        step: 0.01,
-        default: 0.8,
-    },
-    Param {
-        key: BETA0,
-        symbol: "β0",
-        label: "β0, pitch amplitude",
-        unit: "rad",
-        min: 0.0,
-        max: 1.0,
-        step: 0.01,
-        default: 0.5,
-    },
-    Param {
-        key: GAMMA0,
-        symbol: "γ0",
-        label: "γ0, yaw amplitude",
-        unit: "rad",
-        min: 0.0,
-        max: 0.5,
-        step: 0.005,
-        default: 0.2,
-    },
-    Param {
-        key: FLAP_HZ,
-        symbol: "f_d",
-        label: "Flap frequency f_d",
-        unit: "Hz",
-        min: 5.0,
-        max: 60.0,
-        step: 0.5,
-        default: 25.0,
-    },
-    Param {
-        key: ZETA,
-        symbol: "ζ",
-        label: "ζ, modal damping ratio",
-        unit: "",
-        min: 0.0,
-        max: 0.1,
-        step: 0.001,
-        default: 0.0,
-    },
-    Param {
-        key: ALPHA_PHASE,
-        symbol: "φα",
-        label: "Phase of α",
-        unit: "rad",
-        min: -PHASE_LIMIT,
-        max: PHASE_LIMIT,
-        step: 0.01,
-        default: 0.0,
-    },
-    Param {
-        key: BETA_PHASE,
-        symbol: "φβ",
-        label: "Phase of β",
-        unit: "rad",
-        min: -PHASE_LIMIT,
-        max: PHASE_LIMIT,
-        step: 0.01,
-        default: 0.0,
-    },
-    Param {
-        key: GAMMA_PHASE,
-        symbol: "φγ",
-        label: "Phase of γ",
-        unit: "rad",
-        min: -PHASE_LIMIT,
-        max: PHASE_LIMIT,
-        step: 0.01,
-        default: 0.0,
-    },
-    Param {
-        key: DURATION,
-        symbol: "T_sim",
-        label: "Duration",
-        unit: "s",
-        min: 0.2,
-        max: 10.0,
-        step: 0.1,
-        default: 2.0,
-    },
-];
-
-/// The parameter table.
-pub fn parameters() -> &'static [Param] {
-    &PARAMS
-}
-
-/// The parameter with this key, if any.
-pub fn find(key: &str) -> Option<&'static Param> {
-    PARAMS.iter().find(|p| p.key == key)
-}
+pub use crate::ranges::{
+    body_rate_range, find, material_range, parameters, BodyRateRange, MaterialRange, Param, ALPHA0,
+    ALPHA_PHASE, BETA0, BETA_PHASE, BODY_RATE_RANGES, CAMBER, CLAMP_MM, DURATION, E_PA, FLAP_HZ,
+    GAMMA0, GAMMA_PHASE, LAB_MAX_MODES, MATERIAL_RANGES, MAX_BODY_RATE_RAD_S, MESH_MM, NU, N_MODES,
+    PARAMS, PHASE_LIMIT, RHO, THICKNESS_UM, ZETA,
+};
 
 fn unknown_key(key: &str) -> WingbeatError {
     let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
@@ -180,8 +40,32 @@ fn unknown_key(key: &str) -> WingbeatError {
     )
 }
 
+/// Sets the amplitude of the first harmonic of `angle` (adding a first harmonic with zero
+/// phase when there is none).
+fn set_first_amplitude(angle: &mut Angle, field: &str, v: f64) -> Result<()> {
+    match angle {
+        Angle::Fourier { harmonics, .. } => {
+            if let Some(h) = harmonics.iter_mut().find(|h| h.n == 1) {
+                h.amplitude = v;
+            } else {
+                harmonics.push(Harmonic {
+                    n: 1,
+                    amplitude: v,
+                    phase: 0.0,
+                });
+            }
+            Ok(())
+        }
+        Angle::Sampled { .. } => Err(WingbeatError::invalid(
+            field,
+            "sampled kinematics",
+            "Fourier kinematics (a sampled table has no amplitude to sweep)",
+        )),
+    }
+}
+
 /// Sets the phase of the first harmonic of `angle` (adding a zero-amplitude first harmonic when
-/// there is none, as a sweep over the amplitude adds one with zero phase).
+/// there is none, as setting the amplitude adds one with zero phase).
 fn set_first_phase(angle: &mut Angle, field: &str, v: f64) -> Result<()> {
     match angle {
         Angle::Fourier { harmonics, .. } => {
@@ -204,24 +88,30 @@ fn set_first_phase(angle: &mut Angle, field: &str, v: f64) -> Result<()> {
     }
 }
 
-/// Applies one parameter to `c` in place (the value is already range-checked).
-fn apply_one(c: &mut SimConfig, p: &Param, v: f64) -> Result<()> {
-    let swept = match p.key {
-        ALPHA0 => Some(SweepParam::Alpha0),
-        BETA0 => Some(SweepParam::Beta0),
-        GAMMA0 => Some(SweepParam::Gamma0),
-        FLAP_HZ => Some(SweepParam::FlapHz),
-        ZETA => Some(SweepParam::Zeta),
-        _ => None,
-    };
-    if let Some(s) = swept {
-        *c = sweep::apply(c, s, v)?;
-        return Ok(());
-    }
-    match p.key {
-        ALPHA_PHASE => set_first_phase(&mut c.kinematics.alpha, "kinematics.alpha", v),
-        BETA_PHASE => set_first_phase(&mut c.kinematics.beta, "kinematics.beta", v),
-        GAMMA_PHASE => set_first_phase(&mut c.kinematics.gamma, "kinematics.gamma", v),
+/// Sets the parameter `key` ([`PARAMS`]) to `v` in `c`: what each key means, in one place.
+/// `alpha0`, `beta0`, `gamma0`: the amplitude of the angle's first harmonic, rad (added with
+/// zero phase when missing); `alpha_phase`, `beta_phase`, `gamma_phase`: its phase, rad;
+/// `flap_hz`: the flap frequency, Hz; `zeta`: every mode's damping ratio; `duration`: the
+/// simulated time, s. No range check (sweeps may go past the sliders; [`SimConfig::validate`]
+/// judges the result). Errors: an unknown key (named `overrides.KEY`, the known ones listed),
+/// an amplitude or phase of a sampled angle (named `kinematics.ANGLE`); `c` is unchanged then.
+pub fn set_param(c: &mut SimConfig, key: &str, v: f64) -> Result<()> {
+    let k = &mut c.kinematics;
+    match key {
+        ALPHA0 => set_first_amplitude(&mut k.alpha, "kinematics.alpha", v),
+        BETA0 => set_first_amplitude(&mut k.beta, "kinematics.beta", v),
+        GAMMA0 => set_first_amplitude(&mut k.gamma, "kinematics.gamma", v),
+        FLAP_HZ => {
+            k.flap_freq_hz = v;
+            Ok(())
+        }
+        ZETA => {
+            c.modes.iter_mut().for_each(|m| m.zeta = v);
+            Ok(())
+        }
+        ALPHA_PHASE => set_first_phase(&mut k.alpha, "kinematics.alpha", v),
+        BETA_PHASE => set_first_phase(&mut k.beta, "kinematics.beta", v),
+        GAMMA_PHASE => set_first_phase(&mut k.gamma, "kinematics.gamma", v),
         DURATION => {
             c.duration_s = v;
             Ok(())
@@ -256,7 +146,7 @@ pub fn apply_overrides<K: AsRef<str>>(
         }
         seen.push(p.key);
         check_range(&format!("overrides.{}", p.key), v, p.min, p.max, p.unit)?;
-        apply_one(&mut c, p, v)?;
+        set_param(&mut c, p.key, v)?;
     }
     c.validate()?;
     Ok(c)
@@ -268,26 +158,6 @@ pub fn defaults() -> Vec<(&'static str, f64)> {
 }
 
 // ---- The wing's parameters (the lab's FE wing: outline, camber, clamp, material, mesh, modes) ----
-
-/// Camber key: rise at mid-chord as a fraction of the local chord.
-pub const CAMBER: &str = "camber";
-/// Clamp key: 0 = clamp the root edge on x = 0, else clamp a basal strip this wide, mm.
-pub const CLAMP_MM: &str = "clamp_mm";
-/// Young's modulus key, Pa.
-pub const E_PA: &str = "e_pa";
-/// Density key, kg/m³.
-pub const RHO: &str = "rho";
-/// Poisson's ratio key.
-pub const NU: &str = "nu";
-/// Membrane thickness key, µm.
-pub const THICKNESS_UM: &str = "thickness_um";
-/// Mesh size key: 0 = chosen from the planform, else the target element edge, mm.
-pub const MESH_MM: &str = "mesh_mm";
-/// Number of modes key (1–8 in the lab).
-pub const N_MODES: &str = "n_modes";
-
-/// Most modes the lab computes for one wing (the core accepts up to [`crate::model::MAX_MODES`]).
-pub const LAB_MAX_MODES: usize = 8;
 
 /// The wing's parameters in the lab, in panel order, with the defaults of the lab's FE wing:
 /// the synthetic Manduca-like outline's [`crate::fem::FemInput::default`] (13 % camber, root
@@ -403,91 +273,6 @@ fn unknown_wing_key(key: &str) -> WingbeatError {
         "unknown wing parameter",
         format!("one of {}", keys.join(", ")),
     )
-}
-
-/// The range the FE core accepts for one material property ([`MATERIAL_RANGES`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct MaterialRange {
-    /// Field path in an FE input and in error messages, e.g. `material.e_pa`.
-    pub field: &'static str,
-    /// The lab's wing parameter for the same property ([`WING_PARAMS`]), e.g. `e_pa`.
-    pub wing_key: &'static str,
-    /// Smallest value accepted, in the field's unit.
-    pub min: f64,
-    /// Largest value accepted, in the field's unit.
-    pub max: f64,
-    /// Whether `min` and `max` themselves are excluded (Poisson's ratio: −1 < ν < 0.5).
-    pub open: bool,
-    /// Unit of the field (SI, as [`crate::fem::ShellMaterial`] stores it).
-    pub unit: &'static str,
-}
-
-/// What [`crate::fem::ShellMaterial::validate`] accepts, one entry per field: physical
-/// bounds, wider than the lab's sliders ([`WING_PARAMS`], which lie inside them —
-/// `tests/clear_errors_and_url_ranges.rs`), narrow enough that the element matrices stay far from
-/// underflow and overflow (E = 1e-300 Pa used to end in "Krylov space exhausted"; any
-/// E ≥ 1e-100 Pa still solves, so these bounds leave a wide margin). From a soft gel
-/// (1 kPa) to above diamond (1e13 Pa); 0.1 µm to 1 m thick; 1 to 1e5 kg/m³.
-pub const MATERIAL_RANGES: [MaterialRange; 4] = [
-    MaterialRange {
-        field: "material.thickness_m",
-        wing_key: THICKNESS_UM,
-        min: 1e-7,
-        max: 1.0,
-        open: false,
-        unit: "m",
-    },
-    MaterialRange {
-        field: "material.e_pa",
-        wing_key: E_PA,
-        min: 1e3,
-        max: 1e13,
-        open: false,
-        unit: "Pa",
-    },
-    MaterialRange {
-        field: "material.rho_kg_m3",
-        wing_key: RHO,
-        min: 1.0,
-        max: 1e5,
-        open: false,
-        unit: "kg/m^3",
-    },
-    MaterialRange {
-        field: "material.nu",
-        wing_key: NU,
-        min: -1.0,
-        max: 0.5,
-        open: true,
-        unit: "",
-    },
-];
-
-impl MaterialRange {
-    /// Checks `v` against the range; the error names [`MaterialRange::field`], the range
-    /// and the unit.
-    pub fn check(&self, v: f64) -> Result<()> {
-        if !self.open {
-            return check_range(self.field, v, self.min, self.max, self.unit);
-        }
-        if v.is_finite() && v > self.min && v < self.max {
-            return Ok(());
-        }
-        Err(WingbeatError::invalid(
-            self.field,
-            v,
-            format!(
-                "a finite number in the open interval ({}, {})",
-                crate::error::num(self.min),
-                crate::error::num(self.max)
-            ),
-        ))
-    }
-}
-
-/// The core's accepted range of a material field (`material.e_pa`, …), if any.
-pub fn material_range(field: &str) -> Option<&'static MaterialRange> {
-    MATERIAL_RANGES.iter().find(|r| r.field == field)
 }
 
 /// One of the two material presets of the paper (Table 2), in the lab's units.
@@ -640,72 +425,4 @@ pub fn wing_input<K: AsRef<str>>(
 /// default applied (so the table's defaults are the wing the lab starts with).
 pub fn default_wing() -> Result<crate::fem::FemInput> {
     wing_input(std::iter::empty::<(&str, f64)>(), None)
-}
-
-/// One accepted range of the body angular velocity ω_b ([`BODY_RATE_RANGES`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct BodyRateRange {
-    /// Which quantity: `mean`, `amplitude`, `phase`, `value` (a sampled table's entry) or
-    /// `peak` (|mean| + Σ|amplitude| of one component).
-    pub what: &'static str,
-    /// Smallest value accepted.
-    pub min: f64,
-    /// Largest value accepted.
-    pub max: f64,
-    /// Unit.
-    pub unit: &'static str,
-}
-
-impl BodyRateRange {
-    /// Checks `v`; the error names `field`, the range and the unit.
-    pub fn check(&self, field: &str, v: f64) -> Result<()> {
-        check_range(field, v, self.min, self.max, self.unit)
-    }
-}
-
-/// Largest body rate per component, rad/s: about 5700°/s, above the fastest body saccades of
-/// flies (a few thousand °/s); hawkmoths turn at a few rad/s.
-pub const MAX_BODY_RATE_RAD_S: f64 = 100.0;
-
-/// What [`crate::kinematics::BodyRate::validate`] accepts, one entry per quantity of each
-/// component (`kinematics.body_rate.x`, `.y`, `.z`).
-pub const BODY_RATE_RANGES: [BodyRateRange; 5] = [
-    BodyRateRange {
-        what: "mean",
-        min: -MAX_BODY_RATE_RAD_S,
-        max: MAX_BODY_RATE_RAD_S,
-        unit: "rad/s",
-    },
-    BodyRateRange {
-        what: "amplitude",
-        min: -MAX_BODY_RATE_RAD_S,
-        max: MAX_BODY_RATE_RAD_S,
-        unit: "rad/s",
-    },
-    BodyRateRange {
-        what: "phase",
-        min: -1.0e3,
-        max: 1.0e3,
-        unit: "rad",
-    },
-    BodyRateRange {
-        what: "value",
-        min: -MAX_BODY_RATE_RAD_S,
-        max: MAX_BODY_RATE_RAD_S,
-        unit: "rad/s",
-    },
-    BodyRateRange {
-        what: "peak",
-        min: 0.0,
-        max: MAX_BODY_RATE_RAD_S,
-        unit: "rad/s",
-    },
-];
-
-/// The entry of [`BODY_RATE_RANGES`] for `what` (panics on an unknown name: a programming error).
-pub fn body_rate_range(what: &str) -> &'static BodyRateRange {
-    BODY_RATE_RANGES
-        .iter()
-        .find(|r| r.what == what)
-        .expect("a BODY_RATE_RANGES entry")
 }

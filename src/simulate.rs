@@ -1,96 +1,20 @@
 //! The simulation driver: a [`SimConfig`] in, every mode's partial and total responses,
 //! contributions, Floquet summary and strains out. Used by the CLI, the wasm API and the tests.
 
-use crate::analysis::contribution::{contributions, Contributions};
+use crate::analysis::contribution::contributions;
 use crate::config::SimConfig;
 use crate::error::{Result, WingbeatError};
 use crate::floquet::{self, FloquetResult};
 use crate::kinematics::Compiled;
 use crate::model::{stiffness_coefficient, Mode};
+use crate::run::assemble;
+pub use crate::run::{
+    Accuracy, AirSummary, ModeAir, ModeResult, Responses, SimResult, StrainSeries, MAX_RUN_WORK,
+};
 use crate::solve::propagator::{propagate, propagate_responses, Propagated};
 use crate::solve::{LinearOde, ModalOde};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-
-/// Partial and total responses of one mode (kg^½·m for mass-normalised modes).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Responses {
-    /// Response to the Euler force alone, zero initial conditions.
-    pub euler: Vec<f64>,
-    /// Response to the centrifugal force alone, zero initial conditions.
-    pub centrifugal: Vec<f64>,
-    /// Response to the Coriolis force alone, zero initial conditions.
-    pub coriolis: Vec<f64>,
-    /// Response to the aerodynamic force alone (in air; empty and left out in a vacuum).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub aerodynamic: Vec<f64>,
-    /// Free response to the initial conditions alone (zero when they are zero).
-    pub free: Vec<f64>,
-    /// Total response: all forces together plus the initial conditions.
-    /// Equals euler + centrifugal + coriolis + free to rounding (linearity).
-    pub total: Vec<f64>,
-}
-
-/// Accuracy report of one mode's solve.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Accuracy {
-    /// Method used.
-    pub method: String,
-    /// Estimated relative error of the one-period integration.
-    pub period_error_estimate: f64,
-    /// Periods spanned; the state error grows at most linearly with them for a stable mode.
-    pub periods: u64,
-    /// Conservative relative error bound for the whole run: period error × periods.
-    pub run_error_bound: f64,
-}
-
-/// Everything computed for one mode.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ModeResult {
-    /// The mode's label.
-    pub name: String,
-    /// Natural frequency of the non-rotating wing, Hz.
-    pub freq_hz: f64,
-    /// Damping ratio used.
-    pub zeta: f64,
-    /// Responses.
-    pub q: Responses,
-    /// q̇ of the total response.
-    pub qdot_total: Vec<f64>,
-    /// Share of each force term (paper §4.1): 100 Σ q_term² / Σ q_total².
-    pub contribution_percent: Contributions,
-    /// Floquet summary: effective frequency, beat, multipliers, stability.
-    pub floquet: FloquetResult,
-    /// Accuracy report.
-    pub accuracy: Accuracy,
-    /// What the air does to this mode (absent in a vacuum).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub air: Option<crate::aero::simulate::ModeAir>,
-}
-
-pub use crate::analysis::strain::StrainSeries;
-
-/// A simulation's output.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct SimResult {
-    /// Sample times, s.
-    pub t: Vec<f64>,
-    /// Flap frequency, Hz.
-    pub flap_freq_hz: f64,
-    /// Per-mode results.
-    pub modes: Vec<ModeResult>,
-    /// Strain at the first named point (absent when no mode carries strains).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub strain: Option<StrainSeries>,
-    /// Strain at every named point (also the first), when there is more than one.
-    #[serde(skip_serializing_if = "Vec::is_empty", default)]
-    pub strain_points: Vec<StrainSeries>,
-    /// Non-fatal warnings (e.g. yaw beyond the small-angle range).
-    pub warnings: Vec<String>,
-    /// The medium and the coupled system's Floquet multipliers (absent in a vacuum).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub air: Option<crate::aero::simulate::AirSummary>,
-}
 
 /// Mean of the stiffness coefficient S(t) = α̇² cos²β + β̇² over one period (1/s²), by a
 /// 256-point rectangle rule (spectrally accurate for smooth periodic integrands).
@@ -128,13 +52,6 @@ fn floquet_with(
 pub fn propagate_mode(kin: &Compiled, mode: &Mode, dt: f64, n: usize) -> Result<Propagated> {
     propagate(&ModalOde::new(kin, mode), dt, n)
 }
-
-/// Most work one run may take, in step equivalents ([`run_cost`]; one unit is about one
-/// Gauss–Legendre step of one mode under the paper's three-term kinematics). Measured in a
-/// release build on the project's 2-core machine: `--flap-hz 0.1 --duration 0.1`, 4.2e5
-/// units, 0.39 s; an α table at 64 harmonics, 1.2e6 units, 1.1 s; so about 0.9 µs per unit
-/// and the cap keeps a native run under about 5 s. The paper case costs 1e4 units.
-pub const MAX_RUN_WORK: f64 = 5.0e6;
 
 /// Output cost per sample and mode, in step equivalents (responses, contributions, strain:
 /// measured 0.17 s per million sample-modes in a sweep).
@@ -314,32 +231,6 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
         });
     }
     Ok(assemble(cfg, t, modes, None))
-}
-
-/// The result of a run from its per-mode results: the strain at every named point from the
-/// total responses, the warnings, and the air summary when there is one (the vacuum and the
-/// air paths both end here).
-pub(crate) fn assemble(
-    cfg: &SimConfig,
-    t: Vec<f64>,
-    modes: Vec<ModeResult>,
-    air: Option<crate::aero::simulate::AirSummary>,
-) -> SimResult {
-    let totals: Vec<&[f64]> = modes.iter().map(|m| m.q.total.as_slice()).collect();
-    let strain_points = crate::analysis::strain::strain_series(&cfg.modes, &totals);
-    SimResult {
-        t,
-        flap_freq_hz: cfg.kinematics.flap_freq_hz,
-        strain: strain_points.first().cloned(),
-        strain_points: if strain_points.len() > 1 {
-            strain_points
-        } else {
-            vec![]
-        },
-        modes,
-        warnings: cfg.warnings(),
-        air,
-    }
 }
 
 /// The Eq. 13 terms of one mode sampled on a time grid (paper Fig. 4).

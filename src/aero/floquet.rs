@@ -8,7 +8,7 @@
 //! coordinate. T_p is T/2 when the system's coefficients repeat twice per flap (checked
 //! numerically), else T.
 
-use super::simulate::AirOde;
+use super::ode::AirOde;
 use crate::error::{Result, WingbeatError};
 use crate::floquet::{FloquetResult, STABILITY_TOL, STABILITY_TOL_REAL};
 use crate::solve::coupled::{coupled_map, max_step, CoupledOde};

@@ -38,6 +38,7 @@
 
 pub mod floquet;
 pub mod nonlinear;
+pub mod ode;
 pub mod simulate;
 pub mod wing;
 

@@ -6,7 +6,7 @@
 //! Also here: [`rk4_linear`], the same explicit method on the linearised coupled system, an
 //! integrator independent of the Gauss–Legendre propagator for cross-checks.
 
-use super::simulate::AirOde;
+use super::ode::AirOde;
 use super::{FrameState, WingGeometry};
 use crate::config::SimConfig;
 use crate::error::{Result, WingbeatError};

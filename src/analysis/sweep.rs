@@ -3,7 +3,6 @@
 
 use crate::config::SimConfig;
 use crate::error::{Result, WingbeatError};
-use crate::kinematics::{Angle, Harmonic};
 use crate::simulate::simulate;
 use serde::{Deserialize, Serialize};
 
@@ -24,6 +23,19 @@ pub enum SweepParam {
 }
 
 impl SweepParam {
+    /// The parameter's key in [`crate::params::PARAMS`] (`gamma0`, `alpha0`, `beta0`,
+    /// `flap_hz`, `zeta`).
+    pub fn key(self) -> &'static str {
+        use crate::params as p;
+        match self {
+            SweepParam::Gamma0 => p::GAMMA0,
+            SweepParam::Alpha0 => p::ALPHA0,
+            SweepParam::Beta0 => p::BETA0,
+            SweepParam::FlapHz => p::FLAP_HZ,
+            SweepParam::Zeta => p::ZETA,
+        }
+    }
+
     /// Parses a CLI name.
     pub fn parse(s: &str) -> Result<Self> {
         Ok(match s {
@@ -115,38 +127,11 @@ pub struct Sweep {
     pub points: Vec<SweepPoint>,
 }
 
-fn set_first_harmonic(angle: &mut Angle, field: &str, v: f64) -> Result<()> {
-    match angle {
-        Angle::Fourier { harmonics, .. } => {
-            if let Some(h) = harmonics.iter_mut().find(|h| h.n == 1) {
-                h.amplitude = v;
-            } else {
-                harmonics.push(Harmonic {
-                    n: 1,
-                    amplitude: v,
-                    phase: 0.0,
-                });
-            }
-            Ok(())
-        }
-        Angle::Sampled { .. } => Err(WingbeatError::invalid(
-            field,
-            "sampled kinematics",
-            "Fourier kinematics (a sampled table has no amplitude to sweep)",
-        )),
-    }
-}
-
-/// Applies `param = v` to a copy of `cfg`.
+/// Applies `param = v` to a copy of `cfg`: [`crate::params::set_param`] with the parameter's
+/// key, the one interpretation the lab's sliders and the CLI's flags use too.
 pub fn apply(cfg: &SimConfig, param: SweepParam, v: f64) -> Result<SimConfig> {
     let mut c = cfg.clone();
-    match param {
-        SweepParam::Gamma0 => set_first_harmonic(&mut c.kinematics.gamma, "kinematics.gamma", v)?,
-        SweepParam::Alpha0 => set_first_harmonic(&mut c.kinematics.alpha, "kinematics.alpha", v)?,
-        SweepParam::Beta0 => set_first_harmonic(&mut c.kinematics.beta, "kinematics.beta", v)?,
-        SweepParam::FlapHz => c.kinematics.flap_freq_hz = v,
-        SweepParam::Zeta => c.modes.iter_mut().for_each(|m| m.zeta = v),
-    }
+    crate::params::set_param(&mut c, param.key(), v)?;
     Ok(c)
 }
 

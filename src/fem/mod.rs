@@ -40,6 +40,7 @@ pub mod eigen;
 pub mod element;
 pub mod geometry;
 pub mod linalg;
+pub mod locate;
 pub mod mesh;
 pub mod sparse;
 
@@ -91,7 +92,7 @@ impl ShellMaterial {
             ("material.nu", self.nu),
         ] {
             // every field has a range (tests/clear_errors_and_url_ranges.rs checks the table)
-            if let Some(r) = crate::params::material_range(field) {
+            if let Some(r) = crate::ranges::material_range(field) {
                 r.check(v)?;
             }
         }
@@ -330,7 +331,7 @@ pub struct FemModes {
 /// solve takes 1.3–1.5 ns per unit on a loaded 2-core machine (load 6–9; default wing,
 /// 6 modes: 1 mm 2.1e8 units 0.3 s, 0.4 mm / 9 963 nodes 2.8e9 units 4.3 s, 0.3 mm /
 /// 17 658 nodes 7.1e9 units 9 s; docs/fem.md), so the cap keeps a run under about 10 s:
-/// it admits 10 000 nodes and refuses the 17 000-node meshes of issue 13. (The skyline
+/// 10 000 nodes are admitted; 17 000-node meshes are refused. (The skyline
 /// backend's units are counted on its RCM envelope, 1.2–2.5 ns each.) docs/limits.md
 /// ("FE work").
 pub const FE_MAX_WORK: f64 = 5.0e9;
@@ -933,7 +934,7 @@ impl FemModes {
     /// Locates (x, y) in mm: (triangle, barycentric weights, inside?). Outside points map to
     /// the nearest triangle with clamped weights.
     fn locate(&self, x_mm: f64, y_mm: f64) -> Option<(usize, [f64; 3], bool)> {
-        crate::analysis::strain::locate_in_mesh(&self.nodes, &self.triangles, x_mm, y_mm)
+        locate::locate_in_mesh(&self.nodes, &self.triangles, x_mm, y_mm)
     }
 
     /// Top-surface modal strain [ε_x, ε_y, γ_xy] of mode `mode` (0-based) at (x, y) in mm,
@@ -965,9 +966,7 @@ impl FemModes {
     }
 
     fn interp(&self, mode: usize, ti: usize, l: [f64; 3]) -> [f64; 3] {
-        crate::analysis::strain::interpolate_strain(self.triangles[ti], l, mode, |k, i| {
-            self.strain_nodes[k][i]
-        })
+        locate::interpolate_strain(self.triangles[ti], l, mode, |k, i| self.strain_nodes[k][i])
     }
 
     /// [`FemModes::to_modes`], strict: every point must lie inside the meshed planform, else
