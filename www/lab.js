@@ -21,15 +21,17 @@
 //                the beat, the 3-D camera
 //   views/<panel>.js  one per panel; `export const title` and `mount(ctx)` → { destroy() }.
 //                Views read the store and call ctx.* only; they never import engine.js.
-//   lab.js       this element: creates store + engine, lays out the panels (order in LAYOUT
-//                below), mounts the views, recomputes on parameter changes. Its parts are in
-//                lab/: url.js (first state from attributes and URL, URL writes, share fragment),
-//                draws.js (a new result's redraws, one panel per task), nav.js (the screen
-//                tabs), exports.js (export buttons and downloads), types.js (LabState,
-//                ViewContext, …).
+//   lab.js       this element: creates store + engine, lays out the panels (order in LAYOUT),
+//                mounts the views, recomputes on parameter changes. Its parts are in lab/:
+//                panels.js (the views and their order, LAYOUT), live.js (the live recompute,
+//                the wing wanted, the FE wing), url.js (first state from attributes and URL,
+//                URL writes, share fragment), draws.js (a new result's redraws, one panel per
+//                task), nav.js (the screen tabs), exports.js (export buttons and downloads),
+//                types.js (LabState, ViewContext, …).
 // Adding a panel (e.g. views/experiments.js, views/resonance.js): add its name to PANELS in
-// state.js, import it into VIEWS below, put it in LAYOUT (visual order = tab order), and give
-// it a place in layout.js's TEMPLATES (the grid is computed there from the panels shown).
+// state.js, import it into VIEWS in lab/panels.js, put it in LAYOUT there (visual order = tab
+// order), and give it a place in layout.js's TEMPLATES (the grid is computed there from the
+// panels shown).
 // The view gets ctx = { store, engine, section, uid, id(s), registerPlot(name, plot),
 // registerExport(name, { csv, figure, table, canvas }), exportButtons(name, label, kinds),
 // toCSV, emit(type, detail), notice(text), setParams(patch), showPanel(name) }.
@@ -60,24 +62,13 @@ import { plain, errorText } from './format.js';
 import { toCSV } from './export.js';
 import { initialState, createUrlSync, WING_KEYS, LIVE_ATTRS } from './lab/url.js';
 import { createDraws } from './lab/draws.js';
+import { createLive } from './lab/live.js';
 import { createNav } from './lab/nav.js';
 import { exportPanel, exportButtons } from './lab/exports.js';
-import * as controls from './views/controls.js';
-import * as numbers from './views/numbers.js';
-import * as time from './views/time.js';
-import * as spectrum from './views/spectrum.js';
-import * as strain from './views/strain.js';
-import * as studies from './views/studies.js';
-import * as wing3d from './views/wing3d.js';
-import * as report from './views/report.js';
-import * as experiments from './views/experiments.js';
-import * as resonance from './views/resonance.js';
-import * as wing from './views/wing.js';
-import * as kinematics from './views/kinematics.js';
-import * as modeshape from './views/modeshape.js';
-import * as sensing from './views/sensing.js';
+import { VIEWS, LAYOUT } from './lab/panels.js';
 
 export { loadWasm } from './engine.js';
+export { LAYOUT };
 
 /** @typedef {import('./lab/types.js').LabState} LabState */
 /** @typedef {import('./lab/types.js').WingState} WingState */
@@ -87,39 +78,6 @@ export { loadWasm } from './engine.js';
 /** @typedef {import('./lab/types.js').ViewContext} ViewContext */
 /** @typedef {import('./lab/types.js').View} View */
 
-const VIEWS = {
-  controls,
-  numbers,
-  time,
-  spectrum,
-  strain,
-  studies,
-  wing3d,
-  report,
-  experiments,
-  resonance,
-  wing,
-  kinematics,
-  modeshape,
-  sensing,
-};
-/** DOM (= tab) order of the panels; layout.js places them so that it is also the visual order. */
-export const LAYOUT = [
-  'wing3d',
-  'controls',
-  'time',
-  'experiments',
-  'wing',
-  'kinematics',
-  'spectrum',
-  'numbers',
-  'modeshape',
-  'strain',
-  'sensing',
-  'studies',
-  'resonance',
-  'report',
-];
 const PARAM_KEYS = [
   ...NUMERIC.map((p) => p.key),
   ...ENUMS.map((e) => e.key),
@@ -140,6 +98,8 @@ export class WingLab extends HTMLElement {
   engine;
   /** @type {ReturnType<typeof createDraws>} */
   draws;
+  /** @type {ReturnType<typeof createLive>} */
+  live;
   /** @type {ReturnType<typeof createUrlSync>} */
   url;
   /** @type {ReturnType<typeof createNav>} */
@@ -169,7 +129,6 @@ export class WingLab extends HTMLElement {
     /** 1 for the first lab built on the page, 2 for the next, … (accessible names) */
     this.ordinal = 0;
     this.renders = 0;
-    this.raf = 0;
     /** @type {Record<string, View>} */
     this.views = {};
     /** @type {Record<string, ExportReg>} */
@@ -188,11 +147,6 @@ export class WingLab extends HTMLElement {
     this.shownScreen = undefined;
     /** @type {string[] | null} its panels */
     this.shownPanels = null;
-    /** Work that must finish before the first computation (planform= file, #s= fragment). */
-    this.pending = 0;
-    /** Why the wanted wing cannot be built ('' = it can). */
-    this.wingError = '';
-    this.feRunning = false;
   }
 
   // ---------- test and embedding hooks ----------
@@ -252,7 +206,16 @@ export class WingLab extends HTMLElement {
       strain_point: null,
       strain_map: null,
     });
-    this.engine = createEngine();
+    const engine = createEngine();
+    this.engine = engine;
+    this.live = createLive({
+      store: this.store,
+      engine,
+      alive: () => !!this.built && this.engine === engine,
+      error: (t) => this.error(t),
+      notice: (t) => this.notice(t),
+      publish: (r) => this.draws.publish(r),
+    });
     this.draws = createDraws({
       store: this.store,
       section: (name) => this.panels[name],
@@ -278,8 +241,8 @@ export class WingLab extends HTMLElement {
       .then(() => this.restoreShared())
       .then(() => {
         this.root.classList.remove('wl-loading');
-        this.wantWing();
-        this.render();
+        this.live.wantWing();
+        this.live.render();
         // The live worker starts when someone is about to use the lab (focus or pointer inside
         // it, or the first parameter change), so it is ready before the first key press.
         const warm = () => {
@@ -298,7 +261,7 @@ export class WingLab extends HTMLElement {
     const syncUrl = () => this.hasAttribute('sync-url');
     this.unsub.push(
       this.store.subscribe(PARAM_KEYS, () => {
-        this.schedule();
+        this.live.schedule();
         if (syncUrl()) this.url.scheduleQuery();
       }),
       this.store.subscribe(['panels', 'screen'], () => this.applyPanels()),
@@ -312,8 +275,8 @@ export class WingLab extends HTMLElement {
         if (syncUrl()) this.url.scheduleQuery();
       }),
       this.store.subscribe(WING_KEYS, () => {
-        this.wantWing();
-        this.schedule();
+        this.live.wantWing();
+        this.live.schedule();
       }),
       this.store.subscribe(['modes', 'mode'], (st) => {
         const n = st.modes === 'fe' ? (st.fe ? st.fe.modes.length : 8) : 2;
@@ -321,11 +284,11 @@ export class WingLab extends HTMLElement {
       }),
       this.store.subscribe(['kin'], (st) => {
         this.engine.setKinematics(st.kin ? st.kin.kinematics : null);
-        this.schedule();
+        this.live.schedule();
       }),
       this.store.subscribe(['strain_point'], (st) => {
         this.engine.setStrainPoint(st.strain_point);
-        this.schedule();
+        this.live.schedule();
       }),
       this.store.subscribe(['wing', 'kin', 'strain_point'], () => {
         if (syncUrl()) this.url.scheduleFragment();
@@ -334,7 +297,7 @@ export class WingLab extends HTMLElement {
   }
 
   disconnectedCallback() {
-    this.raf = 0;
+    this.live.reset();
     this.draws.reset();
     this.shownScreen = undefined;
     this.shownPanels = null;
@@ -562,111 +525,6 @@ export class WingLab extends HTMLElement {
     this.errorEl.hidden = !text;
   }
 
-  // ---------- live compute ----------
-
-  /**
-   * Recomputes once the current task's parameter changes are in (a microtask: several set()
-   * calls in one handler make one request). The request goes to the engine's live worker
-   * (engine.requestLive), so the paint after a key press only shows the slider's new value;
-   * the panels redraw when the newest result arrives, and superseded results are dropped.
-   */
-  schedule() {
-    if (this.raf) return;
-    this.raf = -1;
-    queueMicrotask(() => {
-      if (this.raf !== -1) return;
-      this.raf = 0;
-      if (this.built) this.render();
-    });
-  }
-
-  /**
-   * The outline of the wing wanted (mm), or null for the core's default: an own outline
-   * (file, editor, planform= URL, share fragment) first, then a built-in one by id.
-   * @param {Readonly<LabState>} s
-   * @returns {[number, number][] | null}
-   */
-  wingPoints(s) {
-    if (s.wing && s.wing.points) return s.wing.points;
-    if (s.outline && s.outline !== 'manduca') {
-      const b = this.engine.planforms().find((p) => p.id === s.outline);
-      if (!b) throw new Error(`outline: no built-in outline "${s.outline}" in this wasm build`);
-      return b.points_mm;
-    }
-    return null;
-  }
-
-  /** Tells the engine which wing is wanted (from the wing parameters and outline). */
-  wantWing() {
-    if (!this.engine.ready || this.pending) return;
-    const s = this.store.get();
-    if (s.wing && s.wing.source === 'import') return;
-    try {
-      this.engine.setWing(this.engine.wingInput(paramsOf(s), this.wingPoints(s)));
-      this.wingError = '';
-      // Already computed (cached, or just computed by the wing panel): use it now.
-      if (this.engine.wingCurrent && s.fe !== this.engine.fe) this.feReady(this.engine.fe);
-    } catch (e) {
-      this.wingError = `The wing is not valid: ${errorText(e)}`;
-      this.error(this.wingError);
-    }
-  }
-
-  /** Starts the FE wing wanted when the FE mode set needs it; true while the first one computes. */
-  ensureWing() {
-    const s = this.store.get();
-    if (s.modes !== 'fe' || this.engine.wingCurrent || this.wingError) return false;
-    const first = !this.engine.fe;
-    if (first) this.store.set({ status: 'computing the FE wing’s modes in a worker…' });
-    if (!this.feRunning) {
-      this.feRunning = true;
-      this.engine.ensureFe().then(
-        (fe) => {
-          this.feRunning = false;
-          this.feReady(fe);
-        },
-        (e) => {
-          this.feRunning = false;
-          // The lab stays usable: the previous wing (or, with none yet, the paper table's
-          // modes) goes on, with the reason shown until the wing changes.
-          this.wingError = `The FE wing could not be computed: ${errorText(e).replace(/\.?$/, '.')}${this.engine.fe ? ' The previous wing stays in use.' : ' Showing the paper table’s modes meanwhile.'}`;
-          this.error(this.wingError);
-          this.schedule();
-        },
-      );
-    }
-    return first;
-  }
-
-  /** One live recompute: the newest result is published when it arrives (superseded ones are not). */
-  render() {
-    if (!this.engine.ready || this.pending) return;
-    if (this.ensureWing()) return;
-    /** @type {Promise<import('./engine.js').LiveResult | null>} */
-    let req;
-    try {
-      req = this.engine.requestLive(paramsOf(this.store.get()));
-    } catch (e) {
-      this.error(`Computation rejected: ${errorText(e)}`);
-      return;
-    }
-    const engine = this.engine;
-    req.then(
-      (r) => {
-        if (r && this.engine === engine && this.built) this.publish(r);
-      },
-      (e) => {
-        if (this.engine === engine && this.built) this.error(`Computation rejected: ${errorText(e)}`);
-      },
-    );
-  }
-
-  /** The newest live result: into the store (the views redraw, a panel per task), then `wl-rendered`. */
-  publish(/** @type {import('./engine.js').LiveResult} */ r) {
-    this.error(this.wingError);
-    this.draws.publish(r);
-  }
-
   /** All panels show the newest result (published at t1): timing, data-renders and `wl-rendered`. */
   finishRender(/** @type {import('./engine.js').LiveResult} */ r, /** @type {number} */ t1) {
     // uPlot commits its redraw in a microtask queued by setData; ours runs after it.
@@ -680,36 +538,10 @@ export class WingLab extends HTMLElement {
     });
   }
 
-  /** A wing became ready: publish it, keep the selected mode within 1..N, recompute. */
-  feReady(fe) {
-    const s = this.store.get();
-    /** @type {Partial<LabState>} */
-    const patch = { fe };
-    if (Number(s.mode) > fe.modes.length) patch.mode = '1';
-    // A chosen strain point that is not on the new wing falls back to the wing's own point.
-    if (s.strain_point) {
-      try {
-        this.engine.modalStrainAt(s.strain_point);
-      } catch {
-        patch.strain_point = null;
-        this.notice(
-          `The chosen strain point (${s.strain_point.join(', ')}) mm is not on this wing; using the wing's own strain point.`,
-        );
-      }
-    }
-    this.store.set(patch);
-    this.schedule();
-  }
-
   /** Restores the `planform=` file and the `#s=` fragment (lab/url.js) before the first computation. */
   async restoreShared() {
     if (!this.hasAttribute('sync-url')) return;
-    this.pending++;
-    try {
-      await this.url.restore();
-    } finally {
-      this.pending--;
-    }
+    await this.live.holding(() => this.url.restore());
   }
 }
 
