@@ -10,15 +10,13 @@ import {
   experimentState,
   experimentQuery,
   predict,
-  measureBeat,
-  growthRate,
-  movingAverage,
   bands,
   resonanceCrossings,
   resonanceSummary,
   leastStableMode,
   fmt,
 } from '../../www/experiments.js';
+import { measureBeat, growthRate, movingAverage } from '../../www/measure.js';
 import { NUMERIC, ENUMS, EXPERIMENT_IDS, parsePairs, parseNumber } from '../../www/state.js';
 import { plain } from '../../www/format.js';
 
