@@ -4,10 +4,14 @@
 // toggle buttons with live values, frequency/time markers whose labels never overlap, shaded
 // bands, an accessible name and a text alternative for the canvas, and `figure()` — the same
 // plot as an export figure (www/export.js) with title, legend and parameter line.
+// Its parts are in plot/: keys.js (the keyboard's pan and zoom), marks.js (bands, markers and
+// their labels drawn over the lines).
 import uPlot from './vendor/uPlot.esm.js';
 import { el, rich, srOnly } from './dom.js';
 import { fmt, fmtRich, plain } from './format.js';
-import { placeLabels, canvasPainter, context2d } from './export.js';
+import { context2d } from './export.js';
+import { keyWindow } from './plot/keys.js';
+import { fillBands, drawMarks } from './plot/marks.js';
 
 export { uPlot };
 
@@ -185,77 +189,10 @@ export function linePlot(parent, spec) {
     hooks: {
       drawClear: [
         (u) => {
-          if (!spec.bands) return;
-          const ctx = u.ctx;
-          const { top, height: h, left, width: w } = u.bbox;
-          for (const b of spec.bands()) {
-            const x0 = Math.max(left, u.valToPos(b.x0, 'x', true)),
-              x1 = Math.min(left + w, u.valToPos(b.x1, 'x', true));
-            if (!(x1 > x0)) continue;
-            ctx.fillStyle = b.fill || 'rgba(122,60,194,0.10)';
-            ctx.fillRect(x0, top, x1 - x0, h);
-          }
+          if (spec.bands) fillBands(u, spec.bands());
         },
       ],
-      draw: [
-        (u) => {
-          const ctx = u.ctx;
-          const r = dpr();
-          const { left, top, width: w, height: h } = u.bbox;
-          ctx.save();
-          ctx.font = `${Math.round(11 * r)}px system-ui, sans-serif`;
-          ctx.textBaseline = 'top';
-          ctx.textAlign = 'left';
-          const marks = (spec.markers ? spec.markers() : [])
-            .map((m) => ({ ...m, px: u.valToPos(m.x, 'x', true) }))
-            .filter((m) => m.px >= left && m.px <= left + w);
-          const pt = canvasPainter(ctx);
-          const rows = placeLabels(
-            marks.map((m) => ({ x: m.px + 3 * r, width: m.label ? pt.measure(m.label, 11 * r) : 0 })),
-            { gap: 4 * r, maxRows: 3 },
-          );
-          marks.forEach((m, i) => {
-            ctx.strokeStyle = m.color || '#999';
-            ctx.lineWidth = (m.width || 1) * r;
-            ctx.setLineDash(m.dash ? m.dash.map((d) => d * r) : []);
-            ctx.beginPath();
-            ctx.moveTo(m.px, top);
-            ctx.lineTo(m.px, top + h);
-            ctx.stroke();
-            if (m.label && rows[i] >= 0) {
-              const tw = pt.measure(m.label, 11 * r);
-              const y = top + rows[i] * 13 * r + 2 * r;
-              ctx.fillStyle = 'rgba(255,255,255,0.8)';
-              ctx.fillRect(m.px + 2 * r, y - r, tw + 2 * r, 13 * r);
-              pt.text(m.px + 3 * r, y, m.label, { size: 11 * r, color: m.color || '#666', baseline: 'top' });
-            }
-          });
-          ctx.setLineDash([]);
-          if (spec.bands) {
-            for (const b of spec.bands()) {
-              if (!b.label) continue;
-              const x0 = u.valToPos(b.x0, 'x', true),
-                x1 = u.valToPos(b.x1, 'x', true);
-              if (x1 < left || x0 > left + w) continue;
-              const y = top + h - 10 * r;
-              ctx.strokeStyle = b.color || '#7a3cc2';
-              ctx.lineWidth = 2 * r;
-              ctx.beginPath();
-              ctx.moveTo(x0, y - 6 * r);
-              ctx.lineTo(x0, y);
-              ctx.lineTo(x1, y);
-              ctx.lineTo(x1, y - 6 * r);
-              ctx.stroke();
-              const tw = pt.measure(b.label, 12 * r, 'bold');
-              const cx = Math.min(left + w - tw / 2 - 2, Math.max(left + tw / 2 + 2, (x0 + x1) / 2));
-              ctx.fillStyle = 'rgba(255,255,255,0.85)';
-              ctx.fillRect(cx - tw / 2 - 3 * r, y - 24 * r, tw + 6 * r, 17 * r);
-              pt.text(cx - tw / 2, y - 10 * r, b.label, { size: 12 * r, weight: 'bold', color: b.color || '#7a3cc2' });
-            }
-          }
-          ctx.restore();
-        },
-      ],
+      draw: [(u) => drawMarks(u, spec.markers ? spec.markers() : [], spec.bands ? spec.bands() : [], dpr())],
       setCursor: [
         (u) => {
           const i = u.cursor.idx;
@@ -291,36 +228,20 @@ export function linePlot(parent, spec) {
     u.over.addEventListener('keydown', (e) => {
       const x = u.scales.x;
       if (x.min == null || x.max == null) return;
-      const span = x.max - x.min;
       const data = u.data[0];
       const lo = data[0],
         hi = data[data.length - 1];
-      /** @type {number[] | null} */
-      let a = null;
-      if (e.key === 'ArrowLeft') a = [x.min - 0.25 * span, x.max - 0.25 * span];
-      else if (e.key === 'ArrowRight') a = [x.min + 0.25 * span, x.max + 0.25 * span];
-      else if (e.key === '+' || e.key === '=') a = [x.min + 0.25 * span, x.max - 0.25 * span];
-      else if (e.key === '-' || e.key === '_') a = [x.min - 0.5 * span, x.max + 0.5 * span];
-      else if (e.key === '0' || e.key === 'Home') {
-        e.preventDefault();
+      const next = keyWindow(e.key, x.min, x.max, lo, hi);
+      if (!next) return;
+      e.preventDefault();
+      if (next === 'reset') {
         if (spec.onUser) spec.onUser('reset');
         if (spec.onReset) spec.onReset();
         else u.setScale('x', { min: lo, max: hi });
         return;
-      } else return;
-      e.preventDefault();
+      }
       if (spec.onUser) spec.onUser('key');
-      let [m0, m1] = a;
-      const w = Math.min(m1 - m0, hi - lo);
-      if (m0 < lo) {
-        m0 = lo;
-        m1 = lo + w;
-      }
-      if (m1 > hi) {
-        m1 = hi;
-        m0 = hi - w;
-      }
-      u.setScale('x', { min: m0, max: m1 });
+      u.setScale('x', { min: next[0], max: next[1] });
     });
   }
   const onUser = spec.onUser;
