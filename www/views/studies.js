@@ -5,10 +5,38 @@ import { el } from '../dom.js';
 import { fmt, UNITS, errorText } from '../format.js';
 import { linePlot, color, drawHeatmap } from '../plot.js';
 import { NUMERIC, toQuery, describe } from '../state.js';
+import { sweepColumns, icmapColumns, dampingColumns } from './studies-data.js';
 
 export const title = 'Studies (paper Figs. 6–8)';
 
 const Q = UNITS.q.label;
+
+/**
+ * A labelled number box: [label, input].
+ * @param {string} label
+ * @param {number} value
+ * @param {number} min
+ * @param {number} max
+ * @param {number | 'any'} step
+ * @returns {[HTMLLabelElement, HTMLInputElement]}
+ */
+function num(label, value, min, max, step) {
+  const i = el('input', { type: 'number', value, min, max, step, 'aria-label': label });
+  return [el('label', { class: 'wl-inline' }, label + ' ', i), i];
+}
+/**
+ * A labelled select: [label, select].
+ * @param {string} label
+ * @param {[string, string][]} opts value, text
+ * @param {string} value
+ * @returns {[HTMLLabelElement, HTMLSelectElement]}
+ */
+function sel(label, opts, value) {
+  const s = el('select', { 'aria-label': label });
+  for (const [v, t] of opts) s.append(el('option', { value: v, text: t }));
+  s.value = value;
+  return [el('label', { class: 'wl-inline' }, label + ' ', s), s];
+}
 
 /** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
@@ -35,32 +63,6 @@ export function mount(ctx) {
     box.append(out);
     section.append(box);
     studies[key] = { box, out, status, heading };
-  };
-  /**
-   * A labelled number box: [label, input].
-   * @param {string} label
-   * @param {number} value
-   * @param {number} min
-   * @param {number} max
-   * @param {number | 'any'} step
-   * @returns {[HTMLLabelElement, HTMLInputElement]}
-   */
-  const num = (label, value, min, max, step) => {
-    const i = el('input', { type: 'number', value, min, max, step, 'aria-label': label });
-    return [el('label', { class: 'wl-inline' }, label + ' ', i), i];
-  };
-  /**
-   * A labelled select: [label, select].
-   * @param {string} label
-   * @param {[string, string][]} opts value, text
-   * @param {string} value
-   * @returns {[HTMLLabelElement, HTMLSelectElement]}
-   */
-  const sel = (label, opts, value) => {
-    const s = el('select', { 'aria-label': label });
-    for (const [v, t] of opts) s.append(el('option', { value: v, text: t }));
-    s.value = value;
-    return [el('label', { class: 'wl-inline' }, label + ' ', s), s];
   };
   const params = () => store.get();
   const cfg = () => engine.config(params());
@@ -267,18 +269,7 @@ export function mount(ctx) {
     csv: () => {
       const st = studies.sweep.data;
       if (!st) return null;
-      const m = st.r.modes[st.k];
-      return ctx.toCSV(
-        [
-          { name: st.param, unit: st.unit, values: st.r.values },
-          { name: 'euler_share', unit: '%', values: m.euler },
-          { name: 'centrifugal_share', unit: '%', values: m.centrifugal },
-          { name: 'coriolis_share', unit: '%', values: m.coriolis },
-          { name: 'effective_freq', unit: 'Hz', values: m.effective_freq_hz },
-          { name: 'beat_period', unit: 's', values: m.beat_period_s },
-        ],
-        [case_(), `mode ${st.k + 1}`],
-      );
+      return ctx.toCSV(sweepColumns(st.r, st.k, st.param, st.unit), [case_(), `mode ${st.k + 1}`]);
     },
     figure: () => {
       const st = studies.sweep.data;
@@ -298,23 +289,7 @@ export function mount(ctx) {
       const st = studies.icmap.data;
       if (!st) return null;
       const r = st.r;
-      const q0 = [],
-        qd = [],
-        z = [];
-      for (let j = 0; j < r.n_qdot; j++)
-        for (let i = 0; i < r.n_q; i++) {
-          q0.push(r.q0[i]);
-          qd.push(r.qdot0[j]);
-          z.push(r.coriolis_percent[j * r.n_q + i]);
-        }
-      return ctx.toCSV(
-        [
-          { name: 'q0', unit: UNITS.q.csv, values: q0 },
-          { name: 'qdot0', unit: `${UNITS.q.csv}/s`, values: qd },
-          { name: 'coriolis_share', unit: '%', values: z },
-        ],
-        [case_(), `mode ${r.mode + 1}; attribution ${r.attribution}`],
-      );
+      return ctx.toCSV(icmapColumns(r), [case_(), `mode ${r.mode + 1}; attribution ${r.attribution}`]);
     },
     canvas: () => (studies.icmap.data ? studies.icmap.data.canvas : null),
   });
@@ -322,14 +297,10 @@ export function mount(ctx) {
     csv: () => {
       const st = studies.damping.data;
       if (!st) return null;
-      return ctx.toCSV(
-        [
-          { name: 't', unit: 's', values: st.r.t },
-          { name: 'q_total_zeta0', unit: UNITS.q.csv, values: st.r.undamped },
-          { name: `q_total_zeta${st.r.zeta}`, unit: UNITS.q.csv, values: st.r.damped },
-        ],
-        [case_(), `mode ${st.r.mode + 1}; min/max-decimated to the plotted points`],
-      );
+      return ctx.toCSV(dampingColumns(st.r), [
+        case_(),
+        `mode ${st.r.mode + 1}; min/max-decimated to the plotted points`,
+      ]);
     },
     figure: () => {
       const st = studies.damping.data;
