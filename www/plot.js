@@ -4,13 +4,13 @@
 // toggle buttons with live values, frequency/time markers whose labels never overlap, shaded
 // bands, an accessible name and a text alternative for the canvas, and `figure()` — the same
 // plot as an export figure (www/export.js) with title, legend and parameter line.
-// Its parts are in plot/: keys.js (the keyboard's pan and zoom), marks.js (bands, markers and
-// their labels drawn over the lines).
+// Its parts are in plot/: window.js (the x window kept inside the data, the keyboard's pan and
+// zoom), marks.js (bands, markers and their labels drawn over the lines).
 import uPlot from './vendor/uPlot.esm.js';
 import { el, rich, srOnly } from './dom.js';
 import { fmt, fmtRich, plain } from './format.js';
 import { context2d } from './export.js';
-import { keyWindow } from './plot/keys.js';
+import { keyWindow } from './plot/window.js';
 import { fillBands, drawMarks } from './plot/marks.js';
 
 export { uPlot };

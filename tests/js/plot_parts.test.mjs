@@ -4,7 +4,7 @@
 // further rows, the labelled bands' brackets. Run: node --test tests/js/plot_parts.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { keyWindow } from '../../www/plot/keys.js';
+import { keyWindow } from '../../www/plot/window.js';
 import { fillBands, drawMarks } from '../../www/plot/marks.js';
 
 test('keyWindow: arrows pan a quarter, + and − zoom about the middle, 0 and Home reset, other keys are not ours', () => {

@@ -1,6 +1,28 @@
 // @ts-check
-// The keyboard of a focused line plot (www/plot.js): ← → pan by a quarter of the window, + (or =)
-// zooms in to its middle half, − (or _) out to twice its span, 0 (or Home) goes back. Pure.
+// A line plot's x window (www/plot.js and the panels that move it): kept inside the data, and
+// moved by the keyboard of a focused plot: ← → pan by a quarter of the window, + (or =) zooms in
+// to its middle half, − (or _) out to twice its span, 0 (or Home) goes back. Pure.
+
+/**
+ * The window [a, b] kept inside the data [lo, hi]: never wider than the data, and shifted back
+ * inside it (its width kept) where it sticks out.
+ * @param {number[]} w [a, b]
+ * @param {number} lo
+ * @param {number} hi
+ * @returns {[number, number]}
+ */
+export function clampWindow([a, b], lo, hi) {
+  const span = Math.min(b - a, hi - lo);
+  if (a < lo) {
+    a = lo;
+    b = lo + span;
+  }
+  if (b > hi) {
+    b = hi;
+    a = hi - span;
+  }
+  return [a, b];
+}
 
 /**
  * The x window after key `key` on a plot showing [min, max] of data spanning [lo, hi]: the new
@@ -23,15 +45,5 @@ export function keyWindow(key, min, max, lo, hi) {
   else if (key === '-' || key === '_') a = [min - 0.5 * span, max + 0.5 * span];
   else if (key === '0' || key === 'Home') return 'reset';
   else return null;
-  let [m0, m1] = a;
-  const w = Math.min(m1 - m0, hi - lo);
-  if (m0 < lo) {
-    m0 = lo;
-    m1 = lo + w;
-  }
-  if (m1 > hi) {
-    m1 = hi;
-    m0 = hi - w;
-  }
-  return [m0, m1];
+  return clampWindow(a, lo, hi);
 }

@@ -4,7 +4,9 @@
 // (shaded from an envelope maximum to the next, T_{beat} = 1/|f_{eff} − n·f_d| from the Floquet
 // numbers), an overview of the whole run to move the window, the force-term shares, a hint
 // line (mouse, keyboard or touch wording) and a click-to-pose link to the 3-D wing. The beat's
-// words and the shares list are written by views/time-words.js.
+// words and the shares list are written by views/time-words.js, the marks (beat band, repeats,
+// the band where a damped beat is gone) come from views/time-marks.js, and the overview strip is
+// views/time-overview.js.
 import { el, isTouch } from '../dom.js';
 import { fmt, plain, UNITS } from '../format.js';
 import { decimate } from '../decimate.js';
@@ -13,6 +15,9 @@ import { linePlot, color } from '../plot.js';
 import { peakOf } from './numbers.js';
 import { toQuery, describe } from '../state.js';
 import { writeBeat, writeShares } from './time-words.js';
+import { beatBand, beatRepeats, goneBands } from './time-marks.js';
+import { timeOverview } from './time-overview.js';
+import { clampWindow } from '../plot/window.js';
 
 export const title = 'Responses and the beat (paper Fig. 5)';
 
@@ -39,17 +44,8 @@ export function mount(ctx) {
   /** The grey band where a damped beat has died out (both plots). */
   const goneBand = () => {
     const r = store.get().result;
-    if (!fate || fate.kind !== 'decays' || fate.goneAt == null || !r) return [];
-    const t = r.analysis.sim.t;
-    return [
-      {
-        x0: fate.goneAt,
-        x1: t[t.length - 1],
-        label: `beat gone (< ${fmt(100 * fate.floor, 2)} %)`,
-        color: '#555',
-        fill: 'rgba(90,90,90,0.13)',
-      },
-    ];
+    const t = r ? r.analysis.sim.t : null;
+    return goneBands(fate, t ? t[t.length - 1] : null);
   };
   /** @type {number[] | null} window shown [t0, t1] (s) */
   let win = null;
@@ -74,17 +70,7 @@ export function mount(ctx) {
     ],
     height: 230,
     bands: () => [
-      ...(bw && bw.mark && beat && beat.period != null
-        ? [
-            {
-              x0: bw.mark[0],
-              x1: bw.mark[1],
-              label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`,
-              color: '#7a3cc2',
-              fill: 'rgba(122,60,194,0.12)',
-            },
-          ]
-        : []),
+      ...(bw && bw.mark && beat && beat.period != null ? [beatBand(bw.mark, beat.period, fate)] : []),
       ...goneBand(),
     ],
     markers: () => {
@@ -92,12 +78,8 @@ export function mount(ctx) {
       const out = [];
       if (bw && bw.mark && beat && beat.period != null) {
         const [x0, x1] = main.xWindow();
-        for (let j = -40; j <= 40; j++) {
-          const x = bw.mark[0] + j * beat.period;
-          const alive = !fate || fate.kind !== 'decays' || fate.goneAt == null || x <= fate.goneAt;
-          if (j !== 0 && j !== 1 && alive && x0 != null && x1 != null && x >= x0 && x <= x1)
-            out.push({ x, label: '', color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
-        }
+        for (const x of beatRepeats(bw.mark[0], beat.period, x0, x1, fate))
+          out.push({ x, label: '', color: 'rgba(122,60,194,0.5)', dash: [2, 3] });
       }
       const t3 = store.get().t3d;
       if (t3 != null) out.push({ x: t3, label: '3-D t', color: color('cursor'), width: 1.5 });
@@ -138,53 +120,15 @@ export function mount(ctx) {
   });
   main.box.title = touch ? 'Tap to show this instant in the 3-D wing' : 'Click to show this instant in the 3-D wing';
 
-  const ov = linePlot(section, {
-    name: 'time-overview',
-    title: 'Whole run',
-    ariaLabel:
-      'Overview of the whole run (total response and envelope); the shaded window is what the responses plot shows',
-    xLabel: 't',
-    xUnit: 's',
-    yLabel: '',
-    series: [
-      { label: 'Total', color: '#8a8a8a', width: 1, legend: false },
-      { label: 'Envelope', color: color('envelope'), width: 1.6, legend: false },
-    ],
-    height: 150,
-    keys: false,
-    bands: () => [...goneBand(), ...(win ? [{ x0: win[0], x1: win[1], fill: 'rgba(31,95,191,0.18)' }] : [])],
-    cursor: { drag: { x: true, y: false, setScale: false } },
-    hooks: {
-      setSelect: [
-        (u) => {
-          const px = u.select.width;
-          const a = u.posToVal(u.select.left, 'x');
-          const b = u.posToVal(u.select.left + px, 'x');
-          u.setSelect({ left: 0, width: 0, top: 0, height: 0 }, false);
-          if (!(b > a) || px < 3 || b - a < 1e-4) return;
-          userWin = true;
-          setWindow([a, b]);
-        },
-      ],
+  const ov = timeOverview(section, {
+    bands: goneBand,
+    shown: () => win,
+    move: (w) => {
+      userWin = true;
+      setWindow(w);
     },
   });
   overview = ov;
-  ov.box.classList.add('wl-overview');
-  // A click on the overview centres the window there.
-  /** @type {number[] | null} */
-  let odown = null;
-  ov.u.over.addEventListener('pointerdown', (e) => {
-    odown = [e.clientX, e.offsetX];
-  });
-  ov.u.over.addEventListener('pointerup', (e) => {
-    if (odown && Math.abs(e.clientX - odown[0]) < 4 && win) {
-      const c = ov.u.posToVal(e.offsetX, 'x');
-      const w = win[1] - win[0];
-      userWin = true;
-      setWindow([c - w / 2, c + w / 2]);
-    }
-    odown = null;
-  });
 
   const btnBeats = el('button', {
     type: 'button',
@@ -213,16 +157,7 @@ export function mount(ctx) {
   /** @param {number[] | null} w */
   function setWindow(w) {
     const [lo, hi] = fullRange();
-    let [a, b] = w || [lo, hi];
-    const span = Math.min(b - a, hi - lo);
-    if (a < lo) {
-      a = lo;
-      b = lo + span;
-    }
-    if (b > hi) {
-      b = hi;
-      a = hi - span;
-    }
+    const [a, b] = clampWindow(w || [lo, hi], lo, hi);
     main.u.setScale('x', { min: a, max: b });
     win = [a, b];
     if (overview) overview.redraw();
@@ -333,20 +268,7 @@ export function mount(ctx) {
         xLabel: 't (s)',
         yLabel: `q (${Q})`,
         series: main.exportSeries(),
-        bands: [
-          ...(bw && bw.mark && beat
-            ? [
-                {
-                  x0: bw.mark[0],
-                  x1: bw.mark[1],
-                  label: `T_{beat} = ${fmt(beat.period, 4)} s${fate && fate.kind === 'decays' ? ' (decaying)' : ''}`,
-                  color: '#7a3cc2',
-                  fill: 'rgba(122,60,194,0.12)',
-                },
-              ]
-            : []),
-          ...goneBand(),
-        ],
+        bands: [...(bw && bw.mark && beat ? [beatBand(bw.mark, beat.period, fate)] : []), ...goneBand()],
         note:
           beat && beat.period != null
             ? `T_{beat} = 1/|f_{eff} − n·f_d| = 1/|${fmt(beat.fEff, 6)} − ${beat.n}×${fmt(beat.fd, 4)}| Hz = ${fmt(beat.period, 4)} s (Floquet). ` +
