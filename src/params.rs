@@ -25,7 +25,7 @@ pub use crate::ranges::{
     PARAMS, PHASE_LIMIT, RHO, THICKNESS_UM, ZETA,
 };
 
-fn unknown_key(key: &str) -> WingbeatError {
+fn unknown_key(key: &str, field: impl Fn(&str) -> String) -> WingbeatError {
     let keys: Vec<&str> = PARAMS.iter().map(|p| p.key).collect();
     // Never echo an arbitrarily long key back.
     let shown: String = if key.chars().count() > 40 {
@@ -34,7 +34,7 @@ fn unknown_key(key: &str) -> WingbeatError {
         key.to_string()
     };
     WingbeatError::invalid(
-        format!("overrides.{shown}"),
+        field(&shown),
         "unknown parameter",
         format!("one of {}", keys.join(", ")),
     )
@@ -116,13 +116,62 @@ pub fn set_param(c: &mut SimConfig, key: &str, v: f64) -> Result<()> {
             c.duration_s = v;
             Ok(())
         }
-        other => Err(unknown_key(other)),
+        other => Err(unknown_key(other, |k| format!("overrides.{k}"))),
     }
+}
+
+/// Which range a named value is checked against before [`set_param`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Limits {
+    /// The lab's slider range [[`Param::min`], [`Param::max`]] (with the unit), per value.
+    Sliders,
+    /// Only that the value is a finite number; the caller validates the finished config
+    /// ([`SimConfig::validate`]), whose ranges are the core's (the CLI's flags, which reach
+    /// past the sliders: any flap frequency, duration or amplitude the core accepts).
+    Core,
+}
+
+/// `base` with the named values set through [`set_param`], each key at most once, in the
+/// order given. `field(key)` names a value in errors (`overrides.gamma0` for the lab,
+/// `--gamma0` for the CLI); `limits` says which range each value must lie in. The result is
+/// not validated (see [`apply_overrides`], which does). The one loop every front end's named
+/// values go through.
+pub fn apply_values<K: AsRef<str>>(
+    base: &SimConfig,
+    values: impl IntoIterator<Item = (K, f64)>,
+    field: impl Fn(&str) -> String,
+    limits: Limits,
+) -> Result<SimConfig> {
+    let mut c = base.clone();
+    let mut seen: Vec<&'static str> = Vec::new();
+    for (key, v) in values {
+        let key = key.as_ref();
+        let p = find(key).ok_or_else(|| unknown_key(key, &field))?;
+        if seen.contains(&p.key) {
+            return Err(WingbeatError::invalid(
+                field(p.key),
+                v,
+                "at most one value per parameter",
+            ));
+        }
+        seen.push(p.key);
+        match limits {
+            Limits::Sliders => check_range(&field(p.key), v, p.min, p.max, p.unit)?,
+            Limits::Core if !v.is_finite() => {
+                return Err(WingbeatError::invalid(field(p.key), v, "a finite number"))
+            }
+            Limits::Core => {}
+        }
+        set_param(&mut c, p.key, v)?;
+    }
+    Ok(c)
 }
 
 /// `base` with the named parameters set: `alpha0`, `beta0`, `gamma0` (first-harmonic
 /// amplitudes, rad), `flap_hz` (Hz), `zeta` (every mode's damping ratio), `alpha_phase`,
-/// `beta_phase`, `gamma_phase` (first-harmonic phases, rad), `duration` (s).
+/// `beta_phase`, `gamma_phase` (first-harmonic phases, rad), `duration` (s). What the lab
+/// calls (wasm `applyOverrides`): [`apply_values`] with the slider ranges, then
+/// [`SimConfig::validate`].
 ///
 /// Errors: an unknown key (named, with the known ones listed); a value outside its slider
 /// range [[`Param::min`], [`Param::max`]] (named `overrides.KEY`, with the range and unit);
@@ -132,22 +181,12 @@ pub fn apply_overrides<K: AsRef<str>>(
     base: &SimConfig,
     overrides: impl IntoIterator<Item = (K, f64)>,
 ) -> Result<SimConfig> {
-    let mut c = base.clone();
-    let mut seen: Vec<&'static str> = Vec::new();
-    for (key, v) in overrides {
-        let key = key.as_ref();
-        let p = find(key).ok_or_else(|| unknown_key(key))?;
-        if seen.contains(&p.key) {
-            return Err(WingbeatError::invalid(
-                format!("overrides.{}", p.key),
-                v,
-                "at most one value per parameter",
-            ));
-        }
-        seen.push(p.key);
-        check_range(&format!("overrides.{}", p.key), v, p.min, p.max, p.unit)?;
-        set_param(&mut c, p.key, v)?;
-    }
+    let c = apply_values(
+        base,
+        overrides,
+        |k| format!("overrides.{k}"),
+        Limits::Sliders,
+    )?;
     c.validate()?;
     Ok(c)
 }

@@ -1,8 +1,10 @@
 // @ts-check
 // The planform map shared by the strain panel and the sensing panel: a 2-D canvas showing the
 // FE wing seen from above (x spanwise, y chordwise, mm), sized to the planform's aspect and the
-// panel's width, on which a click or the arrow keys pick a point (mm).
+// panel's width, on which a click or the arrow keys pick a point (mm), and whether a point lies on
+// the wing.
 import { context2d } from './export.js';
+import { pick } from './scene3d.js';
 
 /** Arrow-key step of the picked point on a map, mm (Shift: ×4). */
 export const KEY_STEP_MM = 0.5;
@@ -42,6 +44,24 @@ export function planformFrame(nodes, widthCss, pad) {
   const cssH = Math.round(Math.min(360, (y1 - y0) * k + 2 * pad));
   const kk = Math.min(k, (cssH - 2 * pad) / Math.max(1e-9, y1 - y0));
   return { cssW, cssH, frame: { x0: x0 - pad / kk, y1: y1 + pad / kk, k: kk } };
+}
+
+/**
+ * Pure: whether the point (x, y), mm, lies on the meshed planform (the wing seen from above:
+ * inside one of its triangles, edges included).
+ * @param {ArrayLike<number>} nodes m, x y z per node
+ * @param {ArrayLike<number>} triangles node indices, three per triangle
+ * @param {number} x mm
+ * @param {number} y mm
+ */
+export function onPlanform(nodes, triangles, x, y) {
+  const n = Math.floor(nodes.length / 3);
+  const xy = new Float64Array(2 * n);
+  for (let i = 0; i < n; i++) {
+    xy[2 * i] = nodes[3 * i] * 1e3;
+    xy[2 * i + 1] = nodes[3 * i + 1] * 1e3;
+  }
+  return !!pick(nodes, triangles, { xy, depth: new Float64Array(n) }, x, y);
 }
 
 /**

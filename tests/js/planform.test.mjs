@@ -1,7 +1,7 @@
 // The planform map's frame (www/planform.js), shared by the strain and sensing panels.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { planformFrame, KEY_STEP_MM } from '../../www/planform.js';
+import { planformFrame, KEY_STEP_MM, onPlanform } from '../../www/planform.js';
 
 test('a planform fills the width, keeps its aspect and maps mm to pixels inside the margins', () => {
   // A 40 mm × 10 mm rectangle (nodes in m), drawn 400 px wide with 10 px margins.
@@ -29,4 +29,17 @@ test('the width is clamped to 200…720 px and a very deep planform to 360 px hi
 test('no nodes gives a finite frame, never NaN', () => {
   const { cssW, cssH, frame } = planformFrame([], 300, 10);
   for (const v of [cssW, cssH, frame.x0, frame.y1, frame.k]) assert.ok(Number.isFinite(v));
+});
+
+test('onPlanform: a point (mm) is on the wing inside its triangles or on their edges, off it elsewhere', () => {
+  // A 40 mm × 10 mm rectangle of two triangles (nodes in m), chord toward −y.
+  const nodes = [0, 0, 0, 0.04, 0, 0, 0.04, -0.01, 0, 0, -0.01, 0];
+  const tris = [0, 1, 2, 0, 2, 3];
+  assert.equal(onPlanform(nodes, tris, 20, -5), true);
+  assert.equal(onPlanform(nodes, tris, 1, -9), true, 'in the second triangle');
+  assert.equal(onPlanform(nodes, tris, 40, 0), true, 'a corner');
+  assert.equal(onPlanform(nodes, tris, 20, 1), false, 'ahead of the leading edge');
+  assert.equal(onPlanform(nodes, tris, 41, -5), false, 'beyond the tip');
+  assert.equal(onPlanform(nodes, [0, 1, 2], 1, -9), false, 'only the triangles count, not the nodes’ hull');
+  assert.equal(onPlanform([], [], 0, 0), false);
 });

@@ -7,27 +7,24 @@
 // point (click, tap or the arrow keys on the map) and the detection probability against the
 // number of sensors K. Reads the store (result, fe, body_rate, body_axis, modes); writes only
 // body_rate / body_axis (and modes when asked to switch), and `sense_map` for the 3-D view.
-// This file runs the analysis and draws the map; its pieces: the controls
-// (sensing-controls.js), the plots (sensing-plots.js), the map's markers and legend
+// This file wires the panel and draws the map; its pieces: the analysis job (sensing-job.js),
+// the controls (sensing-controls.js), the plots (sensing-plots.js), the map's markers and legend
 // (sensing-map.js), and the pure words and data (www/sensemap.js).
 import { el, rich, isTouch } from '../dom.js';
-import { fmt, errorText } from '../format.js';
+import { fmt } from '../format.js';
 import { viridis } from '../plot.js';
-import { bodyRateVector, toQuery } from '../state.js';
+import { toQuery } from '../state.js';
 import { mapScale, deltaAt, senseFe, legendWords, senseMapOf, senseCsvColumns, COMP_LABEL } from '../sensemap.js';
-import * as S from '../scene3d.js';
-import { fitPlanform, fillPlanform, pickOnMap } from '../planform.js';
+import { fitPlanform, fillPlanform, pickOnMap, onPlanform } from '../planform.js';
 import { experimentQuery } from '../experiments.js';
 import { sensingControls } from './sensing-controls.js';
 import { sensingPlots } from './sensing-plots.js';
 import { sensingMapBox, drawSensorMarkers, drawPickRing, drawViridisLegend } from './sensing-map.js';
+import { senseJob } from './sensing-job.js';
 
 export const title = 'Sensing body rotation';
 
 /** @typedef {import('../sensemap.js').SenseMap} SenseMap */
-
-/** Wait after the last change before a new analysis is asked for, ms. */
-export const SENSE_DELAY_MS = 250;
 
 /**
  * The panel's introduction and the link to its guided experiment (a shareable link; a plain
@@ -68,11 +65,9 @@ export function mount(ctx) {
       drawCurve();
     },
     onScale: () => drawMap(),
-    onCancel: () => {
-      if (running) engine.cancel(running.id);
-    },
+    onCancel: () => job.cancel(),
   });
-  const { status, prog, cancel, needFe } = ui;
+  const { status, needFe } = ui;
   const map = sensingMapBox(ctx, touch);
   const { canvas, legend, legendText, pointText, show3d, sensorList } = map;
   const mapBox = map.box;
@@ -87,98 +82,18 @@ export function mount(ctx) {
   section.append(needFe, body);
   const plots = sensingPlots(body);
 
-  /** @type {any} the last wasm result (SensingResult) */
-  let result = null;
-  /** @type {{ fe: any, key: string } | null} what `result` was computed for */
-  let resultFor = null;
-  /** the run configuration (JSON) the result is for (published with sense_map, so the 3-D view can tell an outdated map) */
-  let resultCfg = '';
   /** @type {[number, number] | null} the picked point (mm); null = the best sensor */
   let point = null;
-  /** @type {{ id: number, key: string } | null} */
-  let running = null;
-  let dirty = false;
   let visible = typeof IntersectionObserver !== 'function';
-  /** @type {ReturnType<typeof setTimeout> | undefined} */
-  let timer;
   /** @type {{ x0: number, y1: number, k: number } | null} */
   let frame = null;
   let drawn = 0;
   /** The wing and mode set the map was last drawn for. */
   let lastFe = null,
     lastModes = '';
-
-  /** What an analysis depends on: the body rate, the point and the config (kinematics, modes, run). */
-  const keyOf = (s) => JSON.stringify({ w: bodyRateVector(s), p: point, c: s.result ? s.result.cfg : null });
-
-  /** Asks for a new analysis SENSE_DELAY_MS after the last change (one at a time). */
-  function schedule() {
-    clearTimeout(timer);
-    timer = setTimeout(request, SENSE_DELAY_MS);
-  }
-
-  function request() {
-    const s = store.get();
-    const fe = senseFe(s);
-    if (!fe || !visible || !s.result) return;
-    const cfg = s.result.cfg;
-    const key = keyOf(s);
-    if (result && resultFor && resultFor.fe === fe && resultFor.key === key) return;
-    if (running) {
-      dirty = true;
-      return;
-    }
-    const w = bodyRateVector(s);
-    const t0 = performance.now();
-    /** @type {Record<string, unknown>} */
-    const opts = {};
-    if (point) opts.point_mm = point;
-    const job = engine.run(
-      'sense',
-      { cfg, fe: { nodes: fe.nodes, triangles: fe.triangles, strain_nodes: fe.strain_nodes }, body_rate: w, opts },
-      (done, total) => {
-        prog.max = total;
-        prog.value = done;
-      },
-    );
-    running = { id: job.id, key };
-    dirty = false;
-    mapBox.dataset.state = 'computing';
-    status.textContent = `Computing: two runs of the FE wing (with and without ω_b), then ${fe.n_nodes} nodes × 3 strain components…`;
-    prog.hidden = false;
-    cancel.hidden = false;
-    job.promise
-      .then(
-        ({ result: r, ms }) => {
-          running = null;
-          result = r;
-          resultFor = { fe, key };
-          resultCfg = JSON.stringify(cfg);
-          const t1 = performance.now();
-          drawAll();
-          const t2 = performance.now();
-          mapBox.dataset.ms = String(Math.round(t2 - t0));
-          mapBox.dataset.workerMs = String(Math.round(ms));
-          status.textContent = `Done in ${fmt((t2 - t0) / 1000, 2)} s (analysis ${fmt(ms / 1000, 2)} s in the worker, drawing ${fmt(t2 - t1, 2)} ms).${r.warnings.length ? ' Warnings: ' + r.warnings.join('; ') : ''}`;
-        },
-        (e) => {
-          const why = errorText(e);
-          mapBox.dataset.state = why === 'cancelled' ? 'cancelled' : 'error';
-          status.textContent = why === 'cancelled' ? 'Cancelled; change a setting to compute again.' : `Error: ${why}`;
-        },
-      )
-      .finally(() => {
-        running = null;
-        prog.hidden = true;
-        cancel.hidden = true;
-        if (dirty) schedule();
-      });
-  }
-
-  function stale() {
-    const fe = senseFe(store.get());
-    return !result || !resultFor || resultFor.fe !== fe || fe === null;
-  }
+  const job = senseJob(ctx, ui, mapBox, { point: () => point, visible: () => visible, onResult: () => drawAll() });
+  const schedule = job.schedule;
+  const stale = job.stale;
 
   function drawAll() {
     drawMap();
@@ -187,10 +102,11 @@ export function mount(ctx) {
   }
 
   /** The K shown (the slider, at most the sensors there are). */
-  const kNow = () => Math.min(ui.k(), result ? result.sensors.length : 0);
+  const kNow = () => Math.min(ui.k(), job.result ? job.result.sensors.length : 0);
 
   function drawMap() {
     const s = store.get();
+    const result = job.result;
     const fe = senseFe(s);
     needFe.hidden = !!(s.modes === 'fe');
     body.hidden = s.modes !== 'fe';
@@ -206,7 +122,7 @@ export function mount(ctx) {
     }
     canvas.hidden = false;
     const have = result && !stale() && result.n_nodes === fe.n_nodes;
-    if (have && !running) mapBox.dataset.state = 'ready';
+    if (have && !job.running) mapBox.dataset.state = 'ready';
     const fit = fitPlanform(canvas, fe.nodes, 14);
     const { c2 } = fit;
     frame = fit.frame;
@@ -230,7 +146,7 @@ export function mount(ctx) {
     }
     drawViridisLegend(legend);
     if (!have) {
-      legendText.textContent = running ? 'computing…' : '';
+      legendText.textContent = job.running ? 'computing…' : '';
     } else if (scale && scale.max > 0) {
       const [words, note] = legendWords(scale, fmt);
       legendText.replaceChildren(rich(words));
@@ -264,18 +180,20 @@ export function mount(ctx) {
   function publish(/** @type {any} */ fe, /** @type {ReturnType<typeof mapScale>} */ scale, /** @type {number} */ K) {
     if (
       published &&
-      published.result === result &&
+      published.result === job.result &&
       published.k === K &&
       published.mode === scale.mode &&
       published.show === showCount
     )
       return;
+    const result = job.result;
     published = { result, k: K, mode: scale.mode, show: showCount };
-    store.set({ sense_map: senseMapOf(fe, result, scale, K, resultCfg, showCount) });
+    store.set({ sense_map: senseMapOf(fe, result, scale, K, job.cfg, showCount) });
   }
 
   /** The series at the point in use: the wasm result's, or (picked since) formed from dq. */
   function seriesNow() {
+    const result = job.result;
     if (!result) return null;
     if (!point) return { delta: result.delta, spectrum: result.spectrum };
     const same = result.point_source === 'opts' && result.point_mm[0] === point[0] && result.point_mm[1] === point[1];
@@ -288,28 +206,22 @@ export function mount(ctx) {
   }
 
   function drawSeries() {
-    if (!result || stale()) return;
+    if (!job.result || stale()) return;
     const sr = seriesNow();
     if (!sr) return;
-    mapBox.dataset.deltaPeak = String(plots.showSeries(result, sr));
+    mapBox.dataset.deltaPeak = String(plots.showSeries(job.result, sr));
   }
 
   function drawCurve() {
-    if (!result || stale()) return;
-    plots.showCurve(result, kNow());
+    if (!job.result || stale()) return;
+    plots.showCurve(job.result, kNow());
   }
 
   /** Picks (x, y) mm if it lies on the wing. */
   function choose(x, y) {
     const fe = senseFe(store.get());
     if (!fe) return false;
-    const n = fe.nodes.length / 3;
-    const xy = new Float64Array(2 * n);
-    for (let i = 0; i < n; i++) {
-      xy[2 * i] = fe.nodes[3 * i] * 1e3;
-      xy[2 * i + 1] = fe.nodes[3 * i + 1] * 1e3;
-    }
-    if (!S.pick(fe.nodes, fe.triangles, { xy, depth: new Float64Array(n) }, x, y)) {
+    if (!onPlanform(fe.nodes, fe.triangles, x, y)) {
       pointText.textContent = `(${fmt(x, 3)}, ${fmt(y, 3)}) mm is outside the wing: choose a point on the wing.`;
       return false;
     }
@@ -323,7 +235,7 @@ export function mount(ctx) {
   pickOnMap(
     canvas,
     () => frame,
-    () => point || (result ? result.point_mm : null),
+    () => point || (job.result ? job.result.point_mm : null),
     choose,
   );
 
@@ -337,7 +249,7 @@ export function mount(ctx) {
       // redrawn when that arrives, or now when the wing or the mode set changed
       const s = store.get();
       const fe = senseFe(s);
-      if (result && resultFor && resultFor.fe !== fe) point = null;
+      if (job.forOtherWing(fe)) point = null;
       if (fe !== lastFe || s.modes !== lastModes) {
         lastFe = fe;
         lastModes = s.modes;
@@ -367,17 +279,18 @@ export function mount(ctx) {
     csv: () => {
       const s = store.get();
       const fe = senseFe(s);
+      const result = job.result;
       if (!fe || !result || stale()) return null;
       return ctx.toCSV(senseCsvColumns(fe, result), [
         `wingbeat lab; ${toQuery(s)}`,
         `detectability per FE node, body rate [${result.body_rate.join(', ')}] rad/s (body axes); ${result.method}`,
       ]);
     },
-    canvas: () => (result && !stale() ? canvas : null),
+    canvas: () => (job.result && !stale() ? canvas : null),
   });
   return {
     get result() {
-      return result;
+      return job.result;
     },
     get point() {
       return point;
@@ -385,7 +298,7 @@ export function mount(ctx) {
     choose,
     destroy: () => {
       for (const f of unsubs) f();
-      clearTimeout(timer);
+      job.destroy();
       observers.disconnect();
       plots.destroy();
     },

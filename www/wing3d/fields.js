@@ -7,7 +7,7 @@
 // tests/js/wing3d_fields.test.mjs.
 import { errorText } from '../format.js';
 import * as S from '../scene3d.js';
-import { strainFieldOf, PEAK_DELAY_MS } from '../views/strain.js';
+import { strainFieldOf, PEAK_DELAY_MS } from '../views/strain-map.js';
 
 /** The colour option that shows the strain panel's whole-run map (the renderer's node field). */
 export const FIELD_COLOUR = 5;
