@@ -170,16 +170,14 @@ fn column_of(name: &str, units: AngleUnits) -> Result<usize> {
     Ok(idx)
 }
 
+/// Times (s) and the three angles (rad; `None` = no column) as read so far.
+type Table = (Vec<f64>, [Option<Vec<f64>>; 3]);
+
 /// Reads the table: times (s) and the three angles (rad; `None` = no column).
-#[allow(clippy::type_complexity)]
-fn read_table(text: &str, units: AngleUnits) -> Result<(Vec<f64>, [Option<Vec<f64>>; 3])> {
+fn read_table(text: &str, units: AngleUnits) -> Result<Table> {
     let mut cols: Option<Vec<usize>> = None;
     let mut t = Vec::new();
     let mut ang: [Option<Vec<f64>>; 3] = [None, None, None];
-    let scale = match units {
-        AngleUnits::Deg => PI / 180.0,
-        AngleUnits::Rad => 1.0,
-    };
     // A spreadsheet's byte-order mark and quoted fields are tolerated.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     for (lineno, raw) in text.lines().enumerate() {
@@ -192,31 +190,7 @@ fn read_table(text: &str, units: AngleUnits) -> Result<(Vec<f64>, [Option<Vec<f6
             .map(|f| f.trim().trim_matches('"').trim())
             .collect();
         let Some(c) = &cols else {
-            let mut c = Vec::with_capacity(fields.len());
-            for f in &fields {
-                let k = column_of(f, units)?;
-                if c.contains(&k) {
-                    return Err(parse_err(format!(
-                        "line {}: column `{f}` repeats a quantity already named",
-                        lineno + 1
-                    )));
-                }
-                c.push(k);
-            }
-            if !c.contains(&0) {
-                return Err(WingbeatError::invalid(
-                    format!("{WHAT} header"),
-                    line,
-                    "a header naming `t` (s) and any of alpha, beta, gamma",
-                ));
-            }
-            if c.len() < 2 {
-                return Err(WingbeatError::invalid(
-                    format!("{WHAT} header"),
-                    line,
-                    "at least one angle column: alpha, beta or gamma",
-                ));
-            }
+            let c = read_header(&fields, line, lineno, units)?;
             for &k in &c {
                 if k > 0 {
                     ang[k - 1] = Some(Vec::new());
@@ -242,45 +216,7 @@ fn read_table(text: &str, units: AngleUnits) -> Result<(Vec<f64>, [Option<Vec<f6
             });
         }
         for (f, &k) in fields.iter().zip(c) {
-            let v: f64 = f.parse().map_err(|e| {
-                parse_err(format!("line {}: `{f}` is not a number ({e})", lineno + 1))
-            })?;
-            if !v.is_finite() {
-                return Err(parse_err(format!(
-                    "line {}: `{f}` is not a finite number",
-                    lineno + 1
-                )));
-            }
-            if k == 0 {
-                if let Some(&prev) = t.last() {
-                    if v <= prev {
-                        return Err(WingbeatError::invalid(
-                            format!("{WHAT} line {} t", lineno + 1),
-                            v,
-                            format!(
-                                "a time after the previous one ({prev} s): t increases strictly"
-                            ),
-                        ));
-                    }
-                }
-                t.push(v);
-            } else {
-                let r = v * scale;
-                if r.abs() > 2.0 * PI {
-                    return Err(WingbeatError::invalid(
-                        format!(
-                            "{WHAT} line {} {}",
-                            lineno + 1,
-                            ["alpha", "beta", "gamma"][k - 1]
-                        ),
-                        format!("{v} {}", units.suffix()),
-                        "an angle within ±2π rad (±360°)",
-                    ));
-                }
-                if let Some(a) = ang[k - 1].as_mut() {
-                    a.push(r);
-                }
-            }
+            read_value(f, k, lineno, units, &mut t, &mut ang)?;
         }
     }
     if cols.is_none() {
@@ -296,6 +232,97 @@ fn read_table(text: &str, units: AngleUnits) -> Result<(Vec<f64>, [Option<Vec<f6
         ));
     }
     Ok((t, ang))
+}
+
+/// The header row (`line`, its `fields`): the quantity of each column (0 = t, 1–3 = α, β, γ),
+/// each named once, `t` and at least one angle among them.
+fn read_header(
+    fields: &[&str],
+    line: &str,
+    lineno: usize,
+    units: AngleUnits,
+) -> Result<Vec<usize>> {
+    let mut c = Vec::with_capacity(fields.len());
+    for f in fields {
+        let k = column_of(f, units)?;
+        if c.contains(&k) {
+            return Err(parse_err(format!(
+                "line {}: column `{f}` repeats a quantity already named",
+                lineno + 1
+            )));
+        }
+        c.push(k);
+    }
+    if !c.contains(&0) {
+        return Err(WingbeatError::invalid(
+            format!("{WHAT} header"),
+            line,
+            "a header naming `t` (s) and any of alpha, beta, gamma",
+        ));
+    }
+    if c.len() < 2 {
+        return Err(WingbeatError::invalid(
+            format!("{WHAT} header"),
+            line,
+            "at least one angle column: alpha, beta or gamma",
+        ));
+    }
+    Ok(c)
+}
+
+/// Parses one field `f` of quantity `k` on line `lineno` (0-based) and appends it: a time
+/// after the previous one to `t`, or an angle within ±2π rad (converted from `units`) to its
+/// column of `ang`.
+fn read_value(
+    f: &str,
+    k: usize,
+    lineno: usize,
+    units: AngleUnits,
+    t: &mut Vec<f64>,
+    ang: &mut [Option<Vec<f64>>; 3],
+) -> Result<()> {
+    let scale = match units {
+        AngleUnits::Deg => PI / 180.0,
+        AngleUnits::Rad => 1.0,
+    };
+    let v: f64 = f
+        .parse()
+        .map_err(|e| parse_err(format!("line {}: `{f}` is not a number ({e})", lineno + 1)))?;
+    if !v.is_finite() {
+        return Err(parse_err(format!(
+            "line {}: `{f}` is not a finite number",
+            lineno + 1
+        )));
+    }
+    if k == 0 {
+        if let Some(&prev) = t.last() {
+            if v <= prev {
+                return Err(WingbeatError::invalid(
+                    format!("{WHAT} line {} t", lineno + 1),
+                    v,
+                    format!("a time after the previous one ({prev} s): t increases strictly"),
+                ));
+            }
+        }
+        t.push(v);
+    } else {
+        let r = v * scale;
+        if r.abs() > 2.0 * PI {
+            return Err(WingbeatError::invalid(
+                format!(
+                    "{WHAT} line {} {}",
+                    lineno + 1,
+                    ["alpha", "beta", "gamma"][k - 1]
+                ),
+                format!("{v} {}", units.suffix()),
+                "an angle within ±2π rad (±360°)",
+            ));
+        }
+        if let Some(a) = ang[k - 1].as_mut() {
+            a.push(r);
+        }
+    }
+    Ok(())
 }
 
 fn median_step(t: &[f64]) -> f64 {
@@ -378,155 +405,21 @@ pub fn kinematics_from_csv(text: &str, opts: &CsvKinematicsOptions) -> Result<Ki
     let n = t.len();
     let period = 1.0 / opts.flap_hz;
     let dt = median_step(&t);
-    let span = t[n - 1] - t[0];
-    if !(span + dt).is_finite() || !(period / dt).is_finite() {
-        return Err(WingbeatError::invalid(
-            format!("{WHAT} t"),
-            format!("from {} s to {} s", t[0], t[n - 1]),
-            "times whose range and steps are finite in f64",
-        ));
-    }
     let mut warnings = Vec::new();
-    // Whole periods: the file ends one step before a period boundary, or on it.
-    let k_open = ((span + dt) / period).round();
-    let k_closed = (span / period).round();
-    let n_periods = if k_open >= 1.0 && (span + dt - k_open * period).abs() <= 0.25 * dt {
-        k_open
-    } else if k_closed >= 1.0 && (span - k_closed * period).abs() <= 0.25 * dt {
-        k_closed
-    } else {
-        let p = (span + dt) / period;
-        if p < 1.0 {
-            return Err(WingbeatError::invalid(
-                WHAT,
-                format!("samples over {:.6} s ({p:.3} periods)", span + dt),
-                format!(
-                    "one or more whole flap periods (1 / f_d = {period:.6} s at {} Hz)",
-                    opts.flap_hz
-                ),
-            ));
-        }
-        warnings.push(format!(
-            "the samples cover {p:.3} flap periods of {period:.6} s, not a whole number: \
-             folding them onto one period leaves a seam (check the flap frequency, {} Hz)",
-            opts.flap_hz
-        ));
-        p
-    };
+    let n_periods = whole_periods(&t, dt, opts.flap_hz, &mut warnings)?;
     let tau: Vec<f64> = t.iter().map(|x| x.rem_euclid(period)).collect();
     let zero = vec![0.0; n];
     let ys: Vec<&[f64]> = ang
         .iter()
         .map(|a| a.as_deref().unwrap_or(&zero[..]))
         .collect();
-    // Grid: every folded time on j T / N, every grid point sampled.
-    let grid_n = (period / dt).round();
-    let grid = if grid_n >= 3.0 && grid_n <= MAX_SAMPLES_PER_PERIOD as f64 {
-        let gn = grid_n as usize;
-        let mut idx = Vec::with_capacity(n);
-        let mut ok = true;
-        for &x in &tau {
-            let f = x / period * grid_n;
-            let j = f.round();
-            if (f - j).abs() > 0.01 {
-                ok = false;
-                break;
-            }
-            idx.push(j as usize % gn);
-        }
-        let mut count = vec![0usize; gn];
-        if ok {
-            idx.iter().for_each(|&j| count[j] += 1);
-            ok = count.iter().all(|&c| c > 0);
-        }
-        ok.then_some((gn, idx, count))
-    } else {
-        None
-    };
-    let (method, grid_points, max_h, values) = match grid {
-        Some((gn, idx, count)) => {
-            let mut values = vec![vec![0.0; gn]; 3];
-            let mut dev: f64 = 0.0;
-            for (a, y) in ys.iter().enumerate() {
-                for (i, &j) in idx.iter().enumerate() {
-                    values[a][j] += y[i] / count[j] as f64;
-                }
-                for (i, &j) in idx.iter().enumerate() {
-                    dev = dev.max((y[i] - values[a][j]).abs());
-                }
-            }
-            if dev > 0.0 {
-                warnings.push(format!(
-                    "{n_periods} periods averaged point by point: a sample differs from its \
-                     period mean by up to {dev:.3e} rad ({:.3}°)",
-                    dev.to_degrees()
-                ));
-            }
-            let all = (gn / 2) as u32;
-            let h = opts.max_harmonic.map_or(
-                all.min(crate::kinematics::DEFAULT_SAMPLED_MAX_HARMONIC),
-                |m| m.min(all),
-            );
-            (TableMethod::Grid, gn, h, values)
+    let (method, grid_points, max_h, values) = match uniform_grid(&tau, period, dt) {
+        Some(grid) => {
+            let (h, values) = grid_means(&ys, &grid, n_periods, opts, &mut warnings);
+            (TableMethod::Grid, grid.points, h, values)
         }
         None => {
-            let mut sorted = tau.clone();
-            sorted.sort_by(f64::total_cmp);
-            let distinct = 1 + sorted
-                .windows(2)
-                .filter(|w| w[1] - w[0] > 1e-9 * period)
-                .count();
-            let most = ((distinct.saturating_sub(1)) / 2) as u32;
-            let h = match opts.max_harmonic {
-                Some(m) if m > most => {
-                    return Err(WingbeatError::invalid(
-                        "max_harmonic",
-                        m,
-                        format!(
-                            "at most {most}: {distinct} distinct folded times determine at most \
-                             (distinct − 1) / 2 harmonics"
-                        ),
-                    ))
-                }
-                Some(m) => m,
-                None => most.min(DEFAULT_LS_HARMONICS),
-            };
-            let m = (2 * h + 1) as f64;
-            if n as f64 * m * m > MAX_LS_WORK {
-                return Err(WingbeatError::ResourceCap {
-                    field: "kinematics CSV rows × (2 max_harmonic + 1)²".into(),
-                    requested: format!("{n} × {m}²"),
-                    cap: format!("{MAX_LS_WORK:e}"),
-                    why: "the least-squares fit of samples off a uniform grid; use fewer \
-                          harmonics, fewer rows or a grid with a whole number of samples per \
-                          period"
-                        .into(),
-                });
-            }
-            let coef = ls_fit(&tau, period, &ys, h as usize)?;
-            let gn = (2 * h as usize + 1).max(3);
-            let values: Vec<Vec<f64>> = coef
-                .iter()
-                .map(|c| {
-                    (0..gn)
-                        .map(|j| eval_fit(c, 2.0 * PI * j as f64 / gn as f64))
-                        .collect()
-                })
-                .collect();
-            let mut worst: f64 = 0.0;
-            for (c, y) in coef.iter().zip(&ys) {
-                let ss: f64 = tau
-                    .iter()
-                    .zip(y.iter())
-                    .map(|(x, v)| (v - eval_fit(c, 2.0 * PI * x / period)).powi(2))
-                    .sum();
-                worst = worst.max((ss / n as f64).sqrt());
-            }
-            warnings.push(format!(
-                "samples off a uniform grid aligned with t = 0 mod T: fitted by least squares \
-                 with {h} harmonics (RMS residual up to {worst:.3e} rad, {:.3}°)",
-                worst.to_degrees()
-            ));
+            let (gn, h, values) = least_squares(&tau, period, &ys, opts, &mut warnings)?;
             (TableMethod::LeastSquares, gn, h, values)
         }
     };
@@ -570,4 +463,185 @@ pub fn kinematics_from_csv(text: &str, opts: &CsvKinematicsOptions) -> Result<Ki
         max_harmonic: max_h,
         warnings,
     })
+}
+
+/// The number of flap periods (1 / `flap_hz`) the times `t` (median step `dt`) cover: whole
+/// when the file ends one step before a period boundary, or on it, to a quarter step;
+/// otherwise fractional, with a warning about the seam. Fewer than one period, or a range or
+/// step not finite in f64, is an error.
+fn whole_periods(t: &[f64], dt: f64, flap_hz: f64, warnings: &mut Vec<String>) -> Result<f64> {
+    let n = t.len();
+    let period = 1.0 / flap_hz;
+    let span = t[n - 1] - t[0];
+    if !(span + dt).is_finite() || !(period / dt).is_finite() {
+        return Err(WingbeatError::invalid(
+            format!("{WHAT} t"),
+            format!("from {} s to {} s", t[0], t[n - 1]),
+            "times whose range and steps are finite in f64",
+        ));
+    }
+    let k_open = ((span + dt) / period).round();
+    let k_closed = (span / period).round();
+    if k_open >= 1.0 && (span + dt - k_open * period).abs() <= 0.25 * dt {
+        return Ok(k_open);
+    }
+    if k_closed >= 1.0 && (span - k_closed * period).abs() <= 0.25 * dt {
+        return Ok(k_closed);
+    }
+    let p = (span + dt) / period;
+    if p < 1.0 {
+        return Err(WingbeatError::invalid(
+            WHAT,
+            format!("samples over {:.6} s ({p:.3} periods)", span + dt),
+            format!("one or more whole flap periods (1 / f_d = {period:.6} s at {flap_hz} Hz)"),
+        ));
+    }
+    warnings.push(format!(
+        "the samples cover {p:.3} flap periods of {period:.6} s, not a whole number: \
+         folding them onto one period leaves a seam (check the flap frequency, {flap_hz} Hz)"
+    ));
+    Ok(p)
+}
+
+/// Folded samples on a uniform grid of the period: each sample's grid point and the count of
+/// samples at each point.
+struct Grid {
+    points: usize,
+    index: Vec<usize>,
+    count: Vec<usize>,
+}
+
+/// The uniform grid j T / N (N = T / `dt` rounded, 3 ..= [`MAX_SAMPLES_PER_PERIOD`]) when
+/// every folded time `tau` lies on it (to 1 % of a step) and every grid point is sampled.
+fn uniform_grid(tau: &[f64], period: f64, dt: f64) -> Option<Grid> {
+    let grid_n = (period / dt).round();
+    if !(grid_n >= 3.0 && grid_n <= MAX_SAMPLES_PER_PERIOD as f64) {
+        return None;
+    }
+    let gn = grid_n as usize;
+    let mut index = Vec::with_capacity(tau.len());
+    for &x in tau {
+        let f = x / period * grid_n;
+        let j = f.round();
+        if (f - j).abs() > 0.01 {
+            return None;
+        }
+        index.push(j as usize % gn);
+    }
+    let mut count = vec![0usize; gn];
+    index.iter().for_each(|&j| count[j] += 1);
+    count.iter().all(|&c| c > 0).then_some(Grid {
+        points: gn,
+        index,
+        count,
+    })
+}
+
+/// Per-point means of the three series on the grid, with a warning giving the largest
+/// deviation from them, and the harmonic cap: `opts.max_harmonic` or the sampled default,
+/// never above N / 2.
+fn grid_means(
+    ys: &[&[f64]],
+    grid: &Grid,
+    n_periods: f64,
+    opts: &CsvKinematicsOptions,
+    warnings: &mut Vec<String>,
+) -> (u32, Vec<Vec<f64>>) {
+    let (gn, idx, count) = (grid.points, &grid.index, &grid.count);
+    let mut values = vec![vec![0.0; gn]; 3];
+    let mut dev: f64 = 0.0;
+    for (a, y) in ys.iter().enumerate() {
+        for (i, &j) in idx.iter().enumerate() {
+            values[a][j] += y[i] / count[j] as f64;
+        }
+        for (i, &j) in idx.iter().enumerate() {
+            dev = dev.max((y[i] - values[a][j]).abs());
+        }
+    }
+    if dev > 0.0 {
+        warnings.push(format!(
+            "{n_periods} periods averaged point by point: a sample differs from its \
+             period mean by up to {dev:.3e} rad ({:.3}°)",
+            dev.to_degrees()
+        ));
+    }
+    let all = (gn / 2) as u32;
+    let h = opts.max_harmonic.map_or(
+        all.min(crate::kinematics::DEFAULT_SAMPLED_MAX_HARMONIC),
+        |m| m.min(all),
+    );
+    (h, values)
+}
+
+/// A least-squares Fourier fit of the three series at the folded times `tau`, evaluated on a
+/// grid of 2h + 1 points (at least 3), with a warning giving the worst RMS residual. The
+/// number of harmonics h is `opts.max_harmonic` (an error above what the distinct folded
+/// times determine) or at most [`DEFAULT_LS_HARMONICS`]; the work is capped by
+/// [`MAX_LS_WORK`]. Returns (grid points, h, values).
+fn least_squares(
+    tau: &[f64],
+    period: f64,
+    ys: &[&[f64]],
+    opts: &CsvKinematicsOptions,
+    warnings: &mut Vec<String>,
+) -> Result<(usize, u32, Vec<Vec<f64>>)> {
+    let n = tau.len();
+    let mut sorted = tau.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let distinct = 1 + sorted
+        .windows(2)
+        .filter(|w| w[1] - w[0] > 1e-9 * period)
+        .count();
+    let most = ((distinct.saturating_sub(1)) / 2) as u32;
+    let h = match opts.max_harmonic {
+        Some(m) if m > most => {
+            return Err(WingbeatError::invalid(
+                "max_harmonic",
+                m,
+                format!(
+                    "at most {most}: {distinct} distinct folded times determine at most \
+                     (distinct − 1) / 2 harmonics"
+                ),
+            ))
+        }
+        Some(m) => m,
+        None => most.min(DEFAULT_LS_HARMONICS),
+    };
+    let m = (2 * h + 1) as f64;
+    if n as f64 * m * m > MAX_LS_WORK {
+        return Err(WingbeatError::ResourceCap {
+            field: "kinematics CSV rows × (2 max_harmonic + 1)²".into(),
+            requested: format!("{n} × {m}²"),
+            cap: format!("{MAX_LS_WORK:e}"),
+            why: "the least-squares fit of samples off a uniform grid; use fewer \
+                  harmonics, fewer rows or a grid with a whole number of samples per \
+                  period"
+                .into(),
+        });
+    }
+    let coef = ls_fit(tau, period, ys, h as usize)?;
+    let gn = (2 * h as usize + 1).max(3);
+    let values: Vec<Vec<f64>> = coef
+        .iter()
+        .map(|c| {
+            (0..gn)
+                .map(|j| eval_fit(c, 2.0 * PI * j as f64 / gn as f64))
+                .collect()
+        })
+        .collect();
+    let mut worst: f64 = 0.0;
+    for (c, y) in coef.iter().zip(ys) {
+        let ss: f64 = tau
+            .iter()
+            .zip(y.iter())
+            .map(|(x, v)| (v - eval_fit(c, 2.0 * PI * x / period)).powi(2))
+            .sum();
+        worst = worst.max((ss / n as f64).sqrt());
+    }
+    warnings.push(format!(
+        "samples off a uniform grid aligned with t = 0 mod T: fitted by least squares \
+         with {h} harmonics (RMS residual up to {worst:.3e} rad, {:.3}°)",
+        worst.to_degrees()
+    ));
+    Ok((gn, h, values))
 }

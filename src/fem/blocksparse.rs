@@ -325,36 +325,96 @@ fn sub_mul(w: &mut Blk, l: &Blk, f: &Blk) {
     }
 }
 
+/// The blocks of A (lower and upper triangle as stored in `a`) in elimination numbering,
+/// grouped by the column they fall in of the lower triangle: for column k the entries
+/// `aent[acount[k]..acount[k + 1]]`, each (row, index of the block in `a.val`, whether the
+/// block is to be transposed).
+#[allow(clippy::type_complexity)]
+fn permuted_columns(sym: &Symbolic, a: &BlockSym) -> (Vec<usize>, Vec<(usize, usize, bool)>) {
+    let n = a.nb;
+    let mut inv = vec![0; n];
+    for (k, &v) in sym.perm.iter().enumerate() {
+        inv[v] = k;
+    }
+    let mut acount = vec![0usize; n + 1];
+    for j in 0..n {
+        for p in a.col_ptr[j]..a.col_ptr[j + 1] {
+            let (pi, pj) = (inv[a.row[p]], inv[j]);
+            acount[pi.min(pj) + 1] += 1;
+        }
+    }
+    for k in 0..n {
+        acount[k + 1] += acount[k];
+    }
+    let mut fillp = acount.clone();
+    let mut aent = vec![(0usize, 0usize, false); acount[n]];
+    for j in 0..n {
+        for p in a.col_ptr[j]..a.col_ptr[j + 1] {
+            let (pi, pj) = (inv[a.row[p]], inv[j]);
+            let c = pi.min(pj);
+            aent[fillp[c]] = (pi.max(pj), p, pi < pj);
+            fillp[c] += 1;
+        }
+    }
+    (acount, aent)
+}
+
+/// Dense LDLᵀ of a diagonal block (its lower triangle): the unit lower factor, the six
+/// pivots and how many of them are negative. `None` on a zero or non-finite pivot.
+#[inline]
+fn dense_ldlt(a0: &Blk) -> Option<(Blk, [f64; B], usize)> {
+    let mut lk = [0.0; 36];
+    let mut dk = [0.0; B];
+    let mut negatives = 0;
+    for c in 0..B {
+        let mut v = a0[7 * c];
+        for m in 0..c {
+            v -= lk[B * c + m] * lk[B * c + m] * dk[m];
+        }
+        if !v.is_finite() || v == 0.0 {
+            return None;
+        }
+        if v < 0.0 {
+            negatives += 1;
+        }
+        dk[c] = v;
+        lk[7 * c] = 1.0;
+        for r in c + 1..B {
+            let mut g = a0[B * r + c];
+            for m in 0..c {
+                g -= lk[B * r + m] * lk[B * c + m] * dk[m];
+            }
+            lk[B * r + c] = g / v;
+        }
+    }
+    Some((lk, dk, negatives))
+}
+
+/// One off-diagonal block of L: `out` = W_i Ld⁻ᵀ D⁻¹, row by row, with Ld and D the
+/// diagonal block's factor ([`dense_ldlt`]).
+#[inline]
+fn off_diagonal(wi: &Blk, lk: &Blk, dk: &[f64; B], out: &mut Blk) {
+    for r in 0..B {
+        let mut y = [0.0; B];
+        for c in 0..B {
+            let mut v = wi[B * r + c];
+            for m in 0..c {
+                v -= lk[B * c + m] * y[m];
+            }
+            y[c] = v;
+        }
+        for c in 0..B {
+            out[B * r + c] = y[c] / dk[c];
+        }
+    }
+}
+
 impl BlockLdlt {
     /// Factors `a` − `shift`·diag(`m_diag`) with the given symbolic analysis. `None` on a
     /// zero or non-finite pivot.
     pub fn factor_with(sym: Symbolic, a: &BlockSym, shift: f64, m_diag: &[f64]) -> Option<Self> {
         let n = a.nb;
-        let mut inv = vec![0; n];
-        for (k, &v) in sym.perm.iter().enumerate() {
-            inv[v] = k;
-        }
-        // A in elimination numbering, by column: (row position, block, transposed?)
-        let mut acount = vec![0usize; n + 1];
-        for j in 0..n {
-            for p in a.col_ptr[j]..a.col_ptr[j + 1] {
-                let (pi, pj) = (inv[a.row[p]], inv[j]);
-                acount[pi.min(pj) + 1] += 1;
-            }
-        }
-        for k in 0..n {
-            acount[k + 1] += acount[k];
-        }
-        let mut fillp = acount.clone();
-        let mut aent = vec![(0usize, 0usize, false); acount[n]];
-        for j in 0..n {
-            for p in a.col_ptr[j]..a.col_ptr[j + 1] {
-                let (pi, pj) = (inv[a.row[p]], inv[j]);
-                let c = pi.min(pj);
-                aent[fillp[c]] = (pi.max(pj), p, pi < pj);
-                fillp[c] += 1;
-            }
-        }
+        let (acount, aent) = permuted_columns(&sym, a);
         let nl = sym.row.len();
         let mut l = vec![[0.0; 36]; nl];
         let mut ld = vec![[0.0; 36]; n];
@@ -419,48 +479,11 @@ impl BlockLdlt {
                 }
                 j = nextj;
             }
-            // dense LDLᵀ of the diagonal block (lower triangle)
-            let a0 = w[0];
-            let mut lk = [0.0; 36];
-            let mut dk = [0.0; B];
-            for c in 0..B {
-                let mut v = a0[7 * c];
-                for m in 0..c {
-                    v -= lk[B * c + m] * lk[B * c + m] * dk[m];
-                }
-                if !v.is_finite() || v == 0.0 {
-                    return None;
-                }
-                if v < 0.0 {
-                    negatives += 1;
-                }
-                dk[c] = v;
-                lk[7 * c] = 1.0;
-                for r in c + 1..B {
-                    let mut g = a0[B * r + c];
-                    for m in 0..c {
-                        g -= lk[B * r + m] * lk[B * c + m] * dk[m];
-                    }
-                    lk[B * r + c] = g / v;
-                }
-            }
-            // L(i, k) = W_i Ld⁻ᵀ D⁻¹, row by row
+            let (lk, dk, neg) = dense_ldlt(&w[0])?;
+            negatives += neg;
+            // L(i, k) = W_i Ld⁻ᵀ D⁻¹
             for t in 0..e - s {
-                let wi = &w[t + 1];
-                let out = &mut l[s + t];
-                for r in 0..B {
-                    let mut y = [0.0; B];
-                    for c in 0..B {
-                        let mut v = wi[B * r + c];
-                        for m in 0..c {
-                            v -= lk[B * c + m] * y[m];
-                        }
-                        y[c] = v;
-                    }
-                    for c in 0..B {
-                        out[B * r + c] = y[c] / dk[c];
-                    }
-                }
+                off_diagonal(&w[t + 1], &lk, &dk, &mut l[s + t]);
             }
             ld[k] = lk;
             d[k] = dk;

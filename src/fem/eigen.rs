@@ -119,88 +119,8 @@ pub fn lowest_modes_with<F: SpdFactor>(
             format!("1 ..= number of free DOFs ({n})"),
         ));
     }
-    // shift: a small fraction of the smallest diagonal ratio K_ii / M_ii, which scales like
-    // the lowest eigenvalue × (L/h)⁴ — far below the wanted eigenvalues but far above rounding.
-    let mut ratio = f64::INFINITY;
-    for i in 0..n {
-        let r = k.diag_entry(i) / m_diag[i];
-        if r > 0.0 {
-            ratio = ratio.min(r);
-        }
-    }
-    if !ratio.is_finite() {
-        return Err(WingbeatError::NonFinite {
-            what: "stiffness matrix".into(),
-            detail: format!("no positive diagonal entry; {SOLVER_REMEDY}"),
-        });
-    }
-    let mut sigma = -1e-3 * ratio;
-    let mut fac = None;
-    for _ in 0..6 {
-        match F::factor(k, sigma, m_diag) {
-            Ok(f) if f.negative_pivots().unwrap_or(0) == 0 => {
-                fac = Some(f);
-                break;
-            }
-            _ => sigma *= 10.0,
-        }
-    }
-    let Some(mut fac) = fac else {
-        return Err(WingbeatError::NoConvergence {
-            method: "shifted LDLᵀ factorisation".into(),
-            detail: format!("K − σM is not positive definite for any tried σ < 0; {SOLVER_REMEDY}"),
-        });
-    };
-    // Re-shift. The a-priori σ above sits near λ1·(L/h)⁴·10⁻³, far below the wanted modes
-    // on a fine mesh, where (K − σM)⁻¹M then barely separates them (the Krylov basis needed
-    // grew with the mesh: 80 vectors at 1 653 nodes, 208 at 10 000). Two applications of
-    // the operator to a block of random vectors give Ritz values whose smallest, θ, is an
-    // upper bound of λ1; σ ← −θ/10 keeps K − σM positive definite and puts σ on the scale
-    // of the lowest modes. Repeated while σ still drops by 3× (at most 4 times), never
-    // below 10⁻⁶ of the a-priori |σ| (the rounding guard of a free structure's zero modes).
-    let sigma0 = sigma;
-    for _ in 0..4 {
-        let mut r2 = Rng(0x2545_F491_4F6C_DD1D);
-        let p0 = opt.block.max(6).min(n);
-        let start: Vec<Vec<f64>> = (0..p0)
-            .map(|_| {
-                let mut y: Vec<f64> = m_diag.iter().map(|m| r2.next() * m).collect();
-                fac.solve_in_place(&mut y);
-                y.iter_mut().zip(m_diag).for_each(|(a, b)| *a *= b);
-                fac.solve_in_place(&mut y);
-                y
-            })
-            .collect();
-        let (mut b0, mut kr0) = (Vec::new(), Vec::new());
-        extend(k, m_diag, p0, start, &mut b0, &mut kr0);
-        let q = b0.len();
-        if q == 0 {
-            break;
-        }
-        let mut a = DMatrix::<f64>::zeros(q, q);
-        for j in 0..q {
-            for i in 0..=j {
-                a[(i, j)] = kr0[j][i];
-                a[(j, i)] = kr0[j][i];
-            }
-        }
-        let theta = a
-            .symmetric_eigen()
-            .eigenvalues
-            .iter()
-            .fold(f64::INFINITY, |m, &v| m.min(v));
-        let s1 = -0.1 * theta;
-        if !(s1.is_finite() && s1 > 0.3 * sigma && s1 <= 1e-6 * sigma0) {
-            break;
-        }
-        match fac.refactor(k, s1, m_diag) {
-            Ok(f) if f.negative_pivots().unwrap_or(0) == 0 => {
-                fac = f;
-                sigma = s1;
-            }
-            _ => break,
-        }
-    }
+    let (fac, sigma) = initial_shift::<F>(k, m_diag)?;
+    let (fac, sigma) = reshift(k, m_diag, opt.block, fac, sigma);
     let op = |x: &[f64]| -> Vec<f64> {
         let mut y: Vec<f64> = x.iter().zip(m_diag).map(|(a, b)| a * b).collect();
         fac.solve_in_place(&mut y);
@@ -210,7 +130,6 @@ pub fn lowest_modes_with<F: SpdFactor>(
     let max_basis = opt.max_basis.max(n_modes + 2 * p).min(n);
     let mut basis: Vec<Vec<f64>> = Vec::new();
     let mut kr: Vec<Vec<f64>> = Vec::new(); // kr[j][i] = v_iᵀ K v_j, i ≤ j
-    let mut kv = vec![0.0; n];
 
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     let start: Vec<Vec<f64>> = (0..p)
@@ -226,87 +145,39 @@ pub fn lowest_modes_with<F: SpdFactor>(
         let m = basis.len();
         // Rayleigh–Ritz once the basis can hold the wanted modes
         if m >= n_modes {
-            let mut a = DMatrix::<f64>::zeros(m, m);
-            for j in 0..m {
-                for i in 0..=j {
-                    a[(i, j)] = kr[j][i];
-                    a[(j, i)] = kr[j][i];
-                }
-            }
-            let eig = a.symmetric_eigen();
+            let eig = projected(&kr, m).symmetric_eigen();
             let mut idx: Vec<usize> = (0..m).collect();
             idx.sort_by(|&x, &y| eig.eigenvalues[x].total_cmp(&eig.eigenvalues[y]));
+            idx.truncate(n_modes);
             // cheap test first: only form Ritz vectors and true residuals once the wanted
             // Ritz values have settled (relative change below 1e-9 of the spectrum scale)
-            let ritz: Vec<f64> = idx
-                .iter()
-                .take(n_modes)
-                .map(|&c| eig.eigenvalues[c])
-                .collect();
-            let scale = ritz.iter().fold(sigma.abs(), |s, v| s.max(v.abs()));
-            let settled = prev_ritz.len() == ritz.len()
-                && ritz
-                    .iter()
-                    .zip(&prev_ritz)
-                    .all(|(a, b)| (a - b).abs() <= 1e-9 * scale.max(a.abs()));
+            let ritz: Vec<f64> = idx.iter().map(|&c| eig.eigenvalues[c]).collect();
+            let settled = settled(&ritz, &prev_ritz, sigma);
             prev_ritz = ritz;
             if !settled && m < n && m < max_basis {
                 best_detail = format!(
                     "Ritz values still moving after {iterations} block iterations (basis {m})"
                 );
             } else {
-                let mut values = Vec::with_capacity(n_modes);
-                let mut vectors = Vec::with_capacity(n_modes);
-                let mut residuals = Vec::with_capacity(n_modes);
-                let mut worst: f64 = 0.0;
-                for &c in idx.iter().take(n_modes) {
-                    let lam = eig.eigenvalues[c];
-                    let mut phi = vec![0.0; n];
-                    for (r, v) in basis.iter().enumerate() {
-                        let y = eig.eigenvectors[(r, c)];
-                        phi.iter_mut().zip(v).for_each(|(a, b)| *a += y * b);
-                    }
-                    let nm = mdot(&phi, &phi, m_diag).sqrt();
-                    phi.iter_mut().for_each(|a| *a /= nm);
-                    k.mul(&phi, &mut kv);
-                    let mut rr = 0.0;
-                    let mut kk = 0.0;
-                    let mut mm = 0.0;
-                    for i in 0..n {
-                        let mphi = m_diag[i] * phi[i];
-                        rr += (kv[i] - lam * mphi).powi(2);
-                        kk += kv[i] * kv[i];
-                        mm += mphi * mphi;
-                    }
-                    let res = rr.sqrt() / kk.sqrt().max(sigma.abs() * mm.sqrt());
-                    worst = worst.max(res);
-                    values.push(lam);
-                    vectors.push(phi);
-                    residuals.push(res);
-                }
+                let found = ritz_pairs(k, m_diag, &basis, &eig, &idx, sigma);
+                let result = |(values, vectors, residuals, _): Pairs| EigenResult {
+                    values,
+                    vectors,
+                    residuals,
+                    iterations,
+                    shift: sigma,
+                    basis: m,
+                };
+                let worst = found.3;
                 if worst > opt.tol && m < n {
-                    if let Some((v2, p2, r2, w2)) = refine(k, m_diag, &op, &vectors, sigma) {
-                        if w2 <= opt.tol {
-                            return Ok(EigenResult {
-                                values: v2,
-                                vectors: p2,
-                                residuals: r2,
-                                iterations,
-                                shift: sigma,
-                                basis: m,
-                            });
+                    if let Some(better) = refine(k, m_diag, &op, &found.1, sigma) {
+                        if better.3 <= opt.tol {
+                            return Ok(result(better));
                         }
                     }
                 }
                 if worst <= opt.tol || m == n {
-                    return Ok(EigenResult {
-                        values,
-                        vectors,
-                        residuals,
-                        iterations,
-                        shift: sigma,
-                        basis: m,
-                    });
+                    return Ok(result(found));
                 }
                 best_detail = format!(
                 "worst relative residual {worst:.3e} > tol {:.1e} after {iterations} block iterations (basis {m})",
@@ -342,6 +213,153 @@ pub fn lowest_modes_with<F: SpdFactor>(
     }
 }
 
+/// Eigenvalues, M-normalised vectors, residuals and the worst residual of a set of modes.
+type Pairs = (Vec<f64>, Vec<Vec<f64>>, Vec<f64>, f64);
+
+/// The a-priori shift and its factorisation: σ a small fraction of the smallest diagonal
+/// ratio K_ii / M_ii, which scales like the lowest eigenvalue × (L/h)⁴ — far below the wanted
+/// eigenvalues but far above rounding — made ten times larger (up to 6 tries) until K − σM
+/// factors with no negative pivot.
+fn initial_shift<F: SpdFactor>(k: &F::Matrix, m_diag: &[f64]) -> Result<(F, f64)> {
+    let mut ratio = f64::INFINITY;
+    for i in 0..k.dim() {
+        let r = k.diag_entry(i) / m_diag[i];
+        if r > 0.0 {
+            ratio = ratio.min(r);
+        }
+    }
+    if !ratio.is_finite() {
+        return Err(WingbeatError::NonFinite {
+            what: "stiffness matrix".into(),
+            detail: format!("no positive diagonal entry; {SOLVER_REMEDY}"),
+        });
+    }
+    let mut sigma = -1e-3 * ratio;
+    for _ in 0..6 {
+        match F::factor(k, sigma, m_diag) {
+            Ok(f) if f.negative_pivots().unwrap_or(0) == 0 => return Ok((f, sigma)),
+            _ => sigma *= 10.0,
+        }
+    }
+    Err(WingbeatError::NoConvergence {
+        method: "shifted LDLᵀ factorisation".into(),
+        detail: format!("K − σM is not positive definite for any tried σ < 0; {SOLVER_REMEDY}"),
+    })
+}
+
+/// Re-shift. The a-priori σ of [`initial_shift`] sits near λ1·(L/h)⁴·10⁻³, far below the
+/// wanted modes on a fine mesh, where (K − σM)⁻¹M then barely separates them (the Krylov
+/// basis needed grew with the mesh: 80 vectors at 1 653 nodes, 208 at 10 000). Two
+/// applications of the operator to a block of random vectors give Ritz values whose
+/// smallest, θ, is an upper bound of λ1; σ ← −θ/10 keeps K − σM positive definite and puts σ
+/// on the scale of the lowest modes. Repeated while σ still drops by 3× (at most 4 times),
+/// never below 10⁻⁶ of the a-priori |σ| (the rounding guard of a free structure's zero
+/// modes). Returns the factorisation and shift in use.
+fn reshift<F: SpdFactor>(
+    k: &F::Matrix,
+    m_diag: &[f64],
+    block: usize,
+    mut fac: F,
+    mut sigma: f64,
+) -> (F, f64) {
+    let n = k.dim();
+    let sigma0 = sigma;
+    for _ in 0..4 {
+        let mut r2 = Rng(0x2545_F491_4F6C_DD1D);
+        let p0 = block.max(6).min(n);
+        let start: Vec<Vec<f64>> = (0..p0)
+            .map(|_| {
+                let mut y: Vec<f64> = m_diag.iter().map(|m| r2.next() * m).collect();
+                fac.solve_in_place(&mut y);
+                y.iter_mut().zip(m_diag).for_each(|(a, b)| *a *= b);
+                fac.solve_in_place(&mut y);
+                y
+            })
+            .collect();
+        let (mut b0, mut kr0) = (Vec::new(), Vec::new());
+        extend(k, m_diag, p0, start, &mut b0, &mut kr0);
+        let q = b0.len();
+        if q == 0 {
+            break;
+        }
+        let theta = projected(&kr0, q)
+            .symmetric_eigen()
+            .eigenvalues
+            .iter()
+            .fold(f64::INFINITY, |m, &v| m.min(v));
+        let s1 = -0.1 * theta;
+        if !(s1.is_finite() && s1 > 0.3 * sigma && s1 <= 1e-6 * sigma0) {
+            break;
+        }
+        match fac.refactor(k, s1, m_diag) {
+            Ok(f) if f.negative_pivots().unwrap_or(0) == 0 => {
+                fac = f;
+                sigma = s1;
+            }
+            _ => break,
+        }
+    }
+    (fac, sigma)
+}
+
+/// VᵀKV (m × m, symmetric) from its upper triangle kept by column in `kr`.
+fn projected(kr: &[Vec<f64>], m: usize) -> DMatrix<f64> {
+    let mut a = DMatrix::<f64>::zeros(m, m);
+    for j in 0..m {
+        for i in 0..=j {
+            a[(i, j)] = kr[j][i];
+            a[(j, i)] = kr[j][i];
+        }
+    }
+    a
+}
+
+/// Whether each wanted Ritz value moved by at most 1e-9 of the spectrum's scale (the largest
+/// of |σ| and the values) since the previous iteration.
+fn settled(ritz: &[f64], prev: &[f64], sigma: f64) -> bool {
+    let scale = ritz.iter().fold(sigma.abs(), |s, v| s.max(v.abs()));
+    prev.len() == ritz.len()
+        && ritz
+            .iter()
+            .zip(prev)
+            .all(|(a, b)| (a - b).abs() <= 1e-9 * scale.max(a.abs()))
+}
+
+/// The Ritz pairs of columns `idx` of the projected problem's eigen-decomposition: vectors
+/// formed from the basis and M-normalised, with their true residuals ([`residual`]).
+fn ritz_pairs<K: SymOperator>(
+    k: &K,
+    m_diag: &[f64],
+    basis: &[Vec<f64>],
+    eig: &nalgebra::SymmetricEigen<f64, nalgebra::Dyn>,
+    idx: &[usize],
+    sigma: f64,
+) -> Pairs {
+    let n = k.dim();
+    let mut kv = vec![0.0; n];
+    let mut values = Vec::with_capacity(idx.len());
+    let mut vectors = Vec::with_capacity(idx.len());
+    let mut residuals = Vec::with_capacity(idx.len());
+    let mut worst: f64 = 0.0;
+    for &c in idx {
+        let lam = eig.eigenvalues[c];
+        let mut phi = vec![0.0; n];
+        for (r, v) in basis.iter().enumerate() {
+            let y = eig.eigenvectors[(r, c)];
+            phi.iter_mut().zip(v).for_each(|(a, b)| *a += y * b);
+        }
+        let nm = mdot(&phi, &phi, m_diag).sqrt();
+        phi.iter_mut().for_each(|a| *a /= nm);
+        k.mul(&phi, &mut kv);
+        let res = residual(&kv, &phi, lam, m_diag, sigma);
+        worst = worst.max(res);
+        values.push(lam);
+        vectors.push(phi);
+        residuals.push(res);
+    }
+    (values, vectors, residuals, worst)
+}
+
 /// The residual measure of [`EigenResult::residuals`] for an M-normalised φ with Kφ = `kv`.
 fn residual(kv: &[f64], phi: &[f64], lam: f64, m_diag: &[f64], sigma: f64) -> f64 {
     let mut rr = 0.0;
@@ -362,14 +380,13 @@ fn residual(kv: &[f64], phi: &[f64], lam: f64, m_diag: &[f64], sigma: f64) -> f6
 /// dominates the residual once the Ritz values have settled, for one solve per mode instead
 /// of further Krylov blocks. Returns (values, vectors, residuals, worst) or `None` when Y
 /// loses rank.
-#[allow(clippy::type_complexity)]
 fn refine<K: SymOperator>(
     k: &K,
     m_diag: &[f64],
     op: &dyn Fn(&[f64]) -> Vec<f64>,
     phis: &[Vec<f64>],
     sigma: f64,
-) -> Option<(Vec<f64>, Vec<Vec<f64>>, Vec<f64>, f64)> {
+) -> Option<Pairs> {
     let q = phis.len();
     let n = m_diag.len();
     let mut ys: Vec<Vec<f64>> = Vec::with_capacity(q);

@@ -341,7 +341,20 @@ pub fn check_meshable(p: &[[f64; 2]], label: &dyn Fn(usize) -> String, field: &s
         crate::error::num(MIN_SEPARATION_FRACTION),
         sig3(size)
     );
-    // points: all pairs
+    check_separation(p, label, tol, &allowed)?;
+    check_touching(p, label, tol, &allowed)?;
+    check_crossings(p, label, field)?;
+    check_spikes(p, label)
+}
+
+/// Two points of `p` nearer than `tol` (a zero-length edge when they are neighbours).
+fn check_separation(
+    p: &[[f64; 2]],
+    label: &dyn Fn(usize) -> String,
+    tol: f64,
+    allowed: &str,
+) -> Result<()> {
+    let n = p.len();
     for i in 0..n {
         for j in (i + 1)..n {
             let d = (p[i][0] - p[j][0]).hypot(p[i][1] - p[j][1]);
@@ -365,7 +378,17 @@ pub fn check_meshable(p: &[[f64; 2]], label: &dyn Fn(usize) -> String, field: &s
             }
         }
     }
-    // a point near an edge it is not an end of
+    Ok(())
+}
+
+/// A point nearer than `tol` to an edge it is not an end of: the outline touches itself.
+fn check_touching(
+    p: &[[f64; 2]],
+    label: &dyn Fn(usize) -> String,
+    tol: f64,
+    allowed: &str,
+) -> Result<()> {
+    let n = p.len();
     for i in 0..n {
         for j in 0..n {
             let k = (j + 1) % n;
@@ -390,7 +413,12 @@ pub fn check_meshable(p: &[[f64; 2]], label: &dyn Fn(usize) -> String, field: &s
             }
         }
     }
-    // edges that cross (the near misses are caught above)
+    Ok(())
+}
+
+/// Edges that cross (the near misses are caught by [`check_touching`]).
+fn check_crossings(p: &[[f64; 2]], label: &dyn Fn(usize) -> String, field: &str) -> Result<()> {
+    let n = p.len();
     for i in 0..n {
         let (a, b) = (p[i], p[(i + 1) % n]);
         for j in (i + 2)..n {
@@ -413,7 +441,12 @@ pub fn check_meshable(p: &[[f64; 2]], label: &dyn Fn(usize) -> String, field: &s
             }
         }
     }
-    // spikes: the angle between the two edges at a point
+    Ok(())
+}
+
+/// A spike: an angle sharper than [`MIN_VERTEX_ANGLE_DEG`] between the two edges at a point.
+fn check_spikes(p: &[[f64; 2]], label: &dyn Fn(usize) -> String) -> Result<()> {
+    let n = p.len();
     let min_angle = MIN_VERTEX_ANGLE_DEG.to_radians();
     for i in 0..n {
         let (a, b, c) = (p[(i + n - 1) % n], p[i], p[(i + 1) % n]);

@@ -3,6 +3,7 @@
 
 use super::geometry::{camber_height, check_meshable, point_segment_distance, signed_area};
 use crate::error::{Result, WingbeatError};
+use spade::handles::{FixedFaceHandle, InnerTag};
 use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
 };
@@ -195,6 +196,51 @@ pub fn mesh_planform_with(
     opts: &MeshOptions,
 ) -> Result<Mesh> {
     let cap = opts.max_nodes.min(MAX_NODES);
+    check_mesh_inputs(h_mm, camber, opts)?;
+    let n = outline.len();
+    let perim: f64 = (0..n)
+        .map(|i| {
+            let (a, b) = (outline[i], outline[(i + 1) % n]);
+            ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt()
+        })
+        .sum();
+    let area = signed_area(outline).abs();
+    let est = estimate_nodes(area, perim, h_mm);
+    if est.is_nan() || est > cap as f64 {
+        return Err(cap_error(h_mm, est, cap, "about"));
+    }
+    let size = SizeField {
+        h_mm,
+        root: root_segment_length(outline),
+    };
+    let (poly, lines) = outline_with_lines(outline, &opts.lines_x_mm);
+    check_polygon(outline, &poly)?;
+    let (mut verts, edges) = boundary_vertices(&poly, &size);
+    let line_pts = line_stations(&poly, &lines, &size, &mut verts);
+    let (cdt, excluded) = triangulate(verts, edges, &line_pts, h_mm, cap, outline, &poly)?;
+    let (nodes, mut triangles) = lifted_mesh(&cdt, &excluded, outline, camber);
+    if nodes.len() > cap {
+        return Err(cap_error(h_mm, nodes.len() as f64, cap, ""));
+    }
+    if triangles.is_empty() {
+        return Err(WingbeatError::Geometry(
+            "the outline produced no triangles".into(),
+        ));
+    }
+    // make every triangle counter-clockwise in the x–y plane
+    for t in &mut triangles {
+        let (a, b, c) = (nodes[t[0]], nodes[t[1]], nodes[t[2]]);
+        let o = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        if o < 0.0 {
+            t.swap(1, 2);
+        }
+    }
+    Ok(Mesh { nodes, triangles })
+}
+
+/// The element size, the camber and the mesh lines' stations must be finite (the size
+/// also > 0); each error names its field.
+fn check_mesh_inputs(h_mm: f64, camber: f64, opts: &MeshOptions) -> Result<()> {
     if !(h_mm.is_finite() && h_mm > 0.0) {
         return Err(WingbeatError::invalid(
             "mesh_size_mm",
@@ -212,30 +258,30 @@ pub fn mesh_planform_with(
             "a finite station",
         ));
     }
-    let n = outline.len();
-    let perim: f64 = (0..n)
-        .map(|i| {
-            let (a, b) = (outline[i], outline[(i + 1) % n]);
-            ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt()
-        })
-        .sum();
-    let area = signed_area(outline).abs();
-    let est = estimate_nodes(area, perim, h_mm);
-    if est.is_nan() || est > cap as f64 {
-        return Err(cap_error(h_mm, est, cap, "about"));
-    }
-    // Split the outline edges so that the boundary is resolved at the target size, graded
-    // finer toward the root (the clamp corners carry the stress concentration); the
-    // quality refinement then grades the interior from these boundary sizes.
-    let root = root_segment_length(outline);
-    let local_h = |p: [f64; 2]| -> f64 {
-        match root {
-            Some(c0) => h_mm.min((h_mm / 4.0).max(0.1 * c0 + 0.3 * p[0].abs())),
-            None => h_mm,
+    Ok(())
+}
+
+/// The target element size over the planform: `h_mm`, graded finer toward the root when
+/// the outline has one (the clamp corners carry the stress concentration); the quality
+/// refinement then grades the interior from the boundary sizes.
+struct SizeField {
+    h_mm: f64,
+    /// [`root_segment_length`] of the outline.
+    root: Option<f64>,
+}
+
+impl SizeField {
+    fn at(&self, p: [f64; 2]) -> f64 {
+        match self.root {
+            Some(c0) => self
+                .h_mm
+                .min((self.h_mm / 4.0).max(0.1 * c0 + 0.3 * p[0].abs())),
+            None => self.h_mm,
         }
-    };
-    // Stations along a segment a → b at the local size (end points excluded), evened out.
-    let stations = |a: [f64; 2], b: [f64; 2]| -> Vec<[f64; 2]> {
+    }
+
+    /// Stations along a segment a → b at the local size (end points excluded), evened out.
+    fn stations(&self, a: [f64; 2], b: [f64; 2]) -> Vec<[f64; 2]> {
         let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
         let mut s = 0.0;
         let mut st = vec![0.0];
@@ -244,7 +290,7 @@ pub fn mesh_planform_with(
                 a[0] + s / len * (b[0] - a[0]),
                 a[1] + s / len * (b[1] - a[1]),
             ];
-            s += local_h(p);
+            s += self.at(p);
             st.push(s);
             if st.len() > 4 * MAX_NODES {
                 break;
@@ -260,18 +306,20 @@ pub fn mesh_planform_with(
                 [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])]
             })
             .collect()
-    };
-    let (poly, lines) = outline_with_lines(outline, &opts.lines_x_mm);
-    // Second line of defence (callers validate the outline first): nothing that floating
-    // point cannot triangulate reaches spade, including a mesh line's crossing that falls on
-    // top of an outline point.
+    }
+}
+
+/// Second line of defence (callers validate the outline first): nothing that floating point
+/// cannot triangulate reaches spade, including a mesh line's crossing that falls on top of an
+/// outline point. Points of `poly` are named by their index in `outline`, or as a crossing.
+fn check_polygon(outline: &[[f64; 2]], poly: &[[f64; 2]]) -> Result<()> {
     let names: std::collections::HashMap<(u64, u64), usize> = outline
         .iter()
         .enumerate()
         .map(|(i, p)| ((p[0].to_bits(), p[1].to_bits()), i))
         .collect();
     check_meshable(
-        &poly,
+        poly,
         &|i| {
             let p = poly[i];
             names.get(&(p[0].to_bits(), p[1].to_bits())).map_or_else(
@@ -280,38 +328,52 @@ pub fn mesh_planform_with(
             )
         },
         "planform",
-    )?;
+    )
+}
+
+/// The outline's points and the stations that split its edges at the local size, in order,
+/// and the closed chain of boundary edges through them.
+fn boundary_vertices(poly: &[[f64; 2]], size: &SizeField) -> (Vec<Point2<f64>>, Vec<[usize; 2]>) {
     let np = poly.len();
     let mut verts: Vec<Point2<f64>> = Vec::new();
-    let mut poly_index = vec![0usize; np];
-    let mut edges: Vec<[usize; 2]> = Vec::new();
     for i in 0..np {
         let (a, b) = (poly[i], poly[(i + 1) % np]);
-        poly_index[i] = verts.len();
         verts.push(Point2::new(a[0], a[1]));
-        for p in stations(a, b) {
+        for p in size.stations(a, b) {
             verts.push(Point2::new(p[0], p[1]));
         }
     }
     let m = verts.len();
-    edges.extend((0..m).map(|i| [i, (i + 1) % m]));
-    // Mesh lines: their stations go in as plain vertices now and become constraint edges
-    // after the refinement. (spade finds the outer faces by counting constraint crossings
-    // from the convex hull, which an interior line would confuse: it separates two inner
-    // regions.)
-    // Station sizes grow from each end of a line from the outline segments met there (an
-    // outline point may lie close to the crossing) by at most 1.5× per station.
+    let edges = (0..m).map(|i| [i, (i + 1) % m]).collect();
+    (verts, edges)
+}
+
+/// The stations of each mesh line (`lines`: pairs of indices into `poly`), end points
+/// included; the interior ones are also appended to `verts`.
+///
+/// They go in as plain vertices now and become constraint edges after the refinement
+/// (spade finds the outer faces by counting constraint crossings from the convex hull, which
+/// an interior line would confuse: it separates two inner regions). Station sizes grow from
+/// each end of a line from the outline segments met there (an outline point may lie close to
+/// the crossing) by at most 1.5× per station.
+fn line_stations(
+    poly: &[[f64; 2]],
+    lines: &[[usize; 2]],
+    size: &SizeField,
+    verts: &mut Vec<Point2<f64>>,
+) -> Vec<Vec<[f64; 2]>> {
+    let np = poly.len();
     let seg = |i: usize, k: usize| -> f64 {
         let (a, b) = (poly[i], poly[k]);
         ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt()
     };
     let mut line_pts: Vec<Vec<[f64; 2]>> = Vec::new();
-    for &[i, j] in &lines {
+    for &[i, j] in lines {
         let (a, b) = (poly[i], poly[j]);
         let end_size = |k: usize| {
             seg(k, (k + np - 1) % np)
                 .min(seg(k, (k + 1) % np))
-                .min(local_h(poly[k]))
+                .min(size.at(poly[k]))
         };
         let (ea, eb) = (end_size(i), end_size(j));
         let len = (b[1] - a[1]).abs();
@@ -319,7 +381,8 @@ pub fn mesh_planform_with(
         let mut st = vec![0.0];
         let mut s = 0.0;
         while s < len && st.len() < 4 * MAX_NODES {
-            s += local_h(at(s))
+            s += size
+                .at(at(s))
                 .min(ea + 0.5 * s)
                 .min(eb + 0.5 * (len - s).max(0.0));
             st.push(s);
@@ -335,12 +398,29 @@ pub fn mesh_planform_with(
         pts.push(b);
         line_pts.push(pts);
     }
+    line_pts
+}
+
+type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
+type FaceSet = std::collections::HashSet<FixedFaceHandle<InnerTag>>;
+
+/// The constrained Delaunay triangulation of the boundary, refined to equilateral-size
+/// triangles of edge `h_mm` with angles ≥ 28° and at most `cap` added vertices, with the mesh
+/// lines then forced in ([`insert_lines`]); and the set of its faces outside the planform.
+fn triangulate(
+    verts: Vec<Point2<f64>>,
+    edges: Vec<[usize; 2]>,
+    line_pts: &[Vec<[f64; 2]>],
+    h_mm: f64,
+    cap: usize,
+    outline: &[[f64; 2]],
+    poly: &[[f64; 2]],
+) -> Result<(Cdt, FaceSet)> {
     let mut conflicts = 0usize;
-    let mut cdt =
-        ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(verts, edges, |_| {
-            conflicts += 1;
-        })
-        .map_err(|e| WingbeatError::Geometry(format!("triangulation failed: {e:?}")))?;
+    let mut cdt = Cdt::try_bulk_load_cdt(verts, edges, |_| {
+        conflicts += 1;
+    })
+    .map_err(|e| WingbeatError::Geometry(format!("triangulation failed: {e:?}")))?;
     if conflicts > 0 {
         return Err(WingbeatError::Geometry(format!(
             "triangulation failed: {conflicts} outline segment(s) at the mesh size {h_mm} mm overlap \
@@ -358,10 +438,11 @@ pub fn mesh_planform_with(
     if !result.refinement_complete {
         return Err(cap_error(h_mm, cdt.num_vertices() as f64, cap, "more than"));
     }
-    let with_lines = !line_pts.is_empty();
-    if with_lines {
-        insert_lines(&mut cdt, &line_pts)?;
+    if line_pts.is_empty() {
+        let excluded = result.excluded_faces.iter().copied().collect();
+        return Ok((cdt, excluded));
     }
+    insert_lines(&mut cdt, line_pts)?;
     // with lines the face handles changed: tell inside from outside by the centroid
     // (faces of three collinear outline points, which spade may leave outside, have their
     // centroid on the outline and are dropped too)
@@ -369,17 +450,25 @@ pub fn mesh_planform_with(
         .iter()
         .map(|p| p[0].abs().max(p[1].abs()))
         .fold(0.0, f64::max);
-    let excluded: std::collections::HashSet<_> = if with_lines {
-        cdt.inner_faces()
-            .filter(|f| {
-                let c = f.center();
-                !strictly_inside(&poly, [c.x, c.y], 1e-9 * span)
-            })
-            .map(|f| f.fix())
-            .collect()
-    } else {
-        result.excluded_faces.iter().copied().collect()
-    };
+    let excluded = cdt
+        .inner_faces()
+        .filter(|f| {
+            let c = f.center();
+            !strictly_inside(poly, [c.x, c.y], 1e-9 * span)
+        })
+        .map(|f| f.fix())
+        .collect();
+    Ok((cdt, excluded))
+}
+
+/// The nodes (metres, lifted onto the camber surface) and triangles of the faces of `cdt`
+/// not in `excluded`, nodes numbered in the order the faces first use them.
+fn lifted_mesh(
+    cdt: &Cdt,
+    excluded: &FaceSet,
+    outline: &[[f64; 2]],
+    camber: f64,
+) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
     let mut used = vec![usize::MAX; cdt.num_vertices()];
     let mut nodes: Vec<[f64; 3]> = Vec::new();
     let mut triangles = Vec::new();
@@ -401,33 +490,14 @@ pub fn mesh_planform_with(
         }
         triangles.push(tri);
     }
-    if nodes.len() > cap {
-        return Err(cap_error(h_mm, nodes.len() as f64, cap, ""));
-    }
-    if triangles.is_empty() {
-        return Err(WingbeatError::Geometry(
-            "the outline produced no triangles".into(),
-        ));
-    }
-    // make every triangle counter-clockwise in the x–y plane
-    for t in &mut triangles {
-        let (a, b, c) = (nodes[t[0]], nodes[t[1]], nodes[t[2]]);
-        let o = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-        if o < 0.0 {
-            t.swap(1, 2);
-        }
-    }
-    Ok(Mesh { nodes, triangles })
+    (nodes, triangles)
 }
 
 /// Makes each mesh line (its stations, in order) a chain of constraint edges of the refined
 /// triangulation. Refinement vertices closer to a line than 0.3 × the local station spacing are removed
 /// first (unless they lie on a constraint edge), so that forcing the line in leaves no
 /// slivers; the Delaunay fill of the small gap they leave is well shaped.
-fn insert_lines(
-    cdt: &mut ConstrainedDelaunayTriangulation<Point2<f64>>,
-    lines: &[Vec<[f64; 2]>],
-) -> Result<()> {
+fn insert_lines(cdt: &mut Cdt, lines: &[Vec<[f64; 2]>]) -> Result<()> {
     let on_line: std::collections::HashSet<(u64, u64)> = lines
         .iter()
         .flatten()

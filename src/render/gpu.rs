@@ -322,6 +322,290 @@ fn attr(location: u32, offset: usize, format: wgpu::VertexFormat) -> wgpu::Verte
     }
 }
 
+/// The mesh as the renderer keeps it: at most [`MAX_MODES`] modes, with a warning for each
+/// mode dropped.
+fn limit_modes(mesh: &WingMesh) -> (WingMesh, Vec<String>) {
+    let mut warnings = Vec::new();
+    let mut mesh = mesh.clone();
+    if mesh.n_modes() > MAX_MODES {
+        warnings.push(format!(
+            "the mesh has {} modes; the renderer draws the first {MAX_MODES}",
+            mesh.n_modes()
+        ));
+        mesh.shapes.truncate(MAX_MODES);
+        mesh.strains.truncate(MAX_MODES);
+    }
+    (mesh, warnings)
+}
+
+/// The device's lost flag and its first uncaptured error, filled by callbacks registered on
+/// `device`, so that [`Renderer::check`] can report them.
+type DeviceWatch = (Arc<AtomicBool>, Arc<Mutex<Option<String>>>);
+
+fn watch_device(device: &wgpu::Device) -> DeviceWatch {
+    let lost = Arc::new(AtomicBool::new(false));
+    let error: Arc<Mutex<Option<String>>> = Arc::new(Mutex::new(None));
+    {
+        let lost = lost.clone();
+        let error = error.clone();
+        device.set_device_lost_callback(move |reason, msg| {
+            lost.store(true, Ordering::SeqCst);
+            if let Ok(mut e) = error.lock() {
+                *e = Some(format!("{reason:?}: {msg}"));
+            }
+        });
+    }
+    {
+        let error = error.clone();
+        device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
+            if let Ok(mut slot) = error.lock() {
+                if slot.is_none() {
+                    *slot = Some(e.to_string());
+                }
+            }
+        }));
+    }
+    (lost, error)
+}
+
+/// The uniform block's buffer, its bind group and the pipeline layout every pipeline shares.
+struct UniformBinding {
+    buf: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    layout: wgpu::PipelineLayout,
+}
+
+fn uniform_binding(device: &wgpu::Device) -> UniformBinding {
+    let buf = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("wing uniforms"),
+        size: size_of::<Uniforms>() as u64,
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("wing uniforms"),
+        entries: &[wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::VERTEX | wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: wgpu::BufferSize::new(size_of::<Uniforms>() as u64),
+            },
+            count: None,
+        }],
+    });
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("wing uniforms"),
+        layout: &bgl,
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: buf.as_entire_binding(),
+        }],
+    });
+    let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some("wing"),
+        bind_group_layouts: &[Some(&bgl)],
+        immediate_size: 0,
+    });
+    UniformBinding {
+        buf,
+        bind_group,
+        layout,
+    }
+}
+
+/// What differs between the renderer's three pipelines.
+struct PipelineSpec<'a> {
+    label: &'a str,
+    shader: &'a wgpu::ShaderModule,
+    buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>],
+    topology: wgpu::PrimitiveTopology,
+    blend: Option<wgpu::BlendState>,
+    depth_write: bool,
+}
+
+/// One render pipeline: `vs_main`/`fs_main` of the spec's shader, no culling, depth tested
+/// (`LessEqual`, written when the spec says so), one colour target of `format`.
+fn render_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    format: wgpu::TextureFormat,
+    spec: PipelineSpec<'_>,
+) -> wgpu::RenderPipeline {
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(spec.label),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module: spec.shader,
+            entry_point: Some("vs_main"),
+            compilation_options: Default::default(),
+            buffers: spec.buffers,
+        },
+        primitive: wgpu::PrimitiveState {
+            topology: spec.topology,
+            cull_mode: None,
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(spec.depth_write),
+            depth_compare: Some(wgpu::CompareFunction::LessEqual),
+            stencil: wgpu::StencilState::default(),
+            bias: wgpu::DepthBiasState::default(),
+        }),
+        multisample: wgpu::MultisampleState::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: spec.shader,
+            entry_point: Some("fs_main"),
+            compilation_options: Default::default(),
+            targets: &[Some(wgpu::ColorTargetState {
+                format,
+                blend: spec.blend,
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// The wing, line and stroke-plane pipelines.
+struct Pipelines {
+    wing: wgpu::RenderPipeline,
+    line: wgpu::RenderPipeline,
+    plane: wgpu::RenderPipeline,
+}
+
+fn pipelines(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    format: wgpu::TextureFormat,
+) -> Pipelines {
+    let wing_shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("wing.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(shader_source(Shader::Wing).into()),
+    });
+    let line_shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("lines.wgsl"),
+        source: wgpu::ShaderSource::Wgsl(shader_source(Shader::Lines).into()),
+    });
+
+    let f4 = wgpu::VertexFormat::Float32x4;
+    let mut wing_attrs = vec![attr(0, 0, wgpu::VertexFormat::Float32x3)];
+    for a in 0..(4 * MAX_MODES / 4) {
+        wing_attrs.push(attr(1 + a as u32, 4 * (3 + 4 * a), f4));
+    }
+    let wing_layout = wgpu::VertexBufferLayout {
+        array_stride: (WING_VERTEX_FLOATS * 4) as u64,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: &wing_attrs,
+    };
+    let field_attrs = [attr(FIELD_LOCATION, 0, wgpu::VertexFormat::Float32)];
+    let field_layout = wgpu::VertexBufferLayout {
+        array_stride: 4,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: &field_attrs,
+    };
+    let line_attrs = [
+        attr(0, 0, wgpu::VertexFormat::Float32x3),
+        attr(1, 12, f4),
+        attr(2, 28, wgpu::VertexFormat::Float32),
+    ];
+    let line_layout = wgpu::VertexBufferLayout {
+        array_stride: size_of::<LineVertex>() as u64,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: &line_attrs,
+    };
+
+    let pipeline = |spec: PipelineSpec<'_>| render_pipeline(device, layout, format, spec);
+    Pipelines {
+        wing: pipeline(PipelineSpec {
+            label: "wing",
+            shader: &wing_shader,
+            buffers: &[Some(wing_layout), Some(field_layout)],
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            blend: None,
+            depth_write: true,
+        }),
+        line: pipeline(PipelineSpec {
+            label: "lines",
+            shader: &line_shader,
+            buffers: &[Some(line_layout.clone())],
+            topology: wgpu::PrimitiveTopology::LineList,
+            blend: None,
+            depth_write: true,
+        }),
+        plane: pipeline(PipelineSpec {
+            label: "stroke plane",
+            shader: &line_shader,
+            buffers: &[Some(line_layout)],
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+            depth_write: false,
+        }),
+    }
+}
+
+/// The vertex and index buffers, uploaded once: the wing (positions and modes), its node
+/// field (zeros), its triangles, and the scene's lines and stroke plane sized to the span.
+struct SceneBuffers {
+    wing_vb: wgpu::Buffer,
+    field_vb: wgpu::Buffer,
+    field: Vec<f32>,
+    wing_ib: wgpu::Buffer,
+    n_indices: u32,
+    line_vb: wgpu::Buffer,
+    n_line_vertices: u32,
+    plane_vb: wgpu::Buffer,
+    n_plane_vertices: u32,
+    span: f32,
+}
+
+fn upload_scene(device: &wgpu::Device, mesh: &WingMesh) -> SceneBuffers {
+    let wing_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("wing vertices"),
+        contents: bytemuck::cast_slice(&pack_vertices(mesh)),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    let field = vec![0.0f32; mesh.nodes.len()];
+    let field_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("wing node field"),
+        contents: bytemuck::cast_slice(&field),
+        usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+    });
+    let indices: Vec<u32> = mesh.triangles.iter().flatten().copied().collect();
+    let wing_ib = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("wing indices"),
+        contents: bytemuck::cast_slice(&indices),
+        usage: wgpu::BufferUsages::INDEX,
+    });
+    let span = mesh.span().max(1e-6);
+    let (lines, plane) = scene_geometry(span);
+    let line_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("scene lines"),
+        contents: bytemuck::cast_slice(&lines),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    let plane_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("stroke plane"),
+        contents: bytemuck::cast_slice(&plane),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    SceneBuffers {
+        wing_vb,
+        field_vb,
+        field,
+        wing_ib,
+        n_indices: indices.len() as u32,
+        line_vb,
+        n_line_vertices: lines.len() as u32,
+        plane_vb,
+        n_plane_vertices: plane.len() as u32,
+        span,
+    }
+}
+
 impl Renderer {
     /// Builds pipelines and uploads the mesh once. `format` is the colour target's format;
     /// for a non-sRGB target the shaders gamma-encode themselves.
@@ -335,231 +619,33 @@ impl Renderer {
         mesh: &WingMesh,
     ) -> Result<Self, RenderError> {
         mesh.validate()?;
-        let mut warnings = Vec::new();
-        let mut mesh = mesh.clone();
-        if mesh.n_modes() > MAX_MODES {
-            warnings.push(format!(
-                "the mesh has {} modes; the renderer draws the first {MAX_MODES}",
-                mesh.n_modes()
-            ));
-            mesh.shapes.truncate(MAX_MODES);
-            mesh.strains.truncate(MAX_MODES);
-        }
-
-        let lost = Arc::new(AtomicBool::new(false));
-        let error: Arc<Mutex<Option<String>>> = Arc::new(Mutex::new(None));
-        {
-            let lost = lost.clone();
-            let error = error.clone();
-            device.set_device_lost_callback(move |reason, msg| {
-                lost.store(true, Ordering::SeqCst);
-                if let Ok(mut e) = error.lock() {
-                    *e = Some(format!("{reason:?}: {msg}"));
-                }
-            });
-        }
-        {
-            let error = error.clone();
-            device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
-                if let Ok(mut slot) = error.lock() {
-                    if slot.is_none() {
-                        *slot = Some(e.to_string());
-                    }
-                }
-            }));
-        }
-
-        let wing_shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("wing.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(shader_source(Shader::Wing).into()),
-        });
-        let line_shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("lines.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(shader_source(Shader::Lines).into()),
-        });
-
-        let uniform_buf = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("wing uniforms"),
-            size: size_of::<Uniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("wing uniforms"),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX | wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: wgpu::BufferSize::new(size_of::<Uniforms>() as u64),
-                },
-                count: None,
-            }],
-        });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("wing uniforms"),
-            layout: &bgl,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: uniform_buf.as_entire_binding(),
-            }],
-        });
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("wing"),
-            bind_group_layouts: &[Some(&bgl)],
-            immediate_size: 0,
-        });
-
-        let f4 = wgpu::VertexFormat::Float32x4;
-        let mut wing_attrs = vec![attr(0, 0, wgpu::VertexFormat::Float32x3)];
-        for a in 0..(4 * MAX_MODES / 4) {
-            wing_attrs.push(attr(1 + a as u32, 4 * (3 + 4 * a), f4));
-        }
-        let wing_layout = wgpu::VertexBufferLayout {
-            array_stride: (WING_VERTEX_FLOATS * 4) as u64,
-            step_mode: wgpu::VertexStepMode::Vertex,
-            attributes: &wing_attrs,
-        };
-        let field_attrs = [attr(FIELD_LOCATION, 0, wgpu::VertexFormat::Float32)];
-        let field_layout = wgpu::VertexBufferLayout {
-            array_stride: 4,
-            step_mode: wgpu::VertexStepMode::Vertex,
-            attributes: &field_attrs,
-        };
-        let line_attrs = [
-            attr(0, 0, wgpu::VertexFormat::Float32x3),
-            attr(1, 12, f4),
-            attr(2, 28, wgpu::VertexFormat::Float32),
-        ];
-        let line_layout = wgpu::VertexBufferLayout {
-            array_stride: size_of::<LineVertex>() as u64,
-            step_mode: wgpu::VertexStepMode::Vertex,
-            attributes: &line_attrs,
-        };
-
-        let depth = |write: bool| {
-            Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(write),
-                depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                stencil: wgpu::StencilState::default(),
-                bias: wgpu::DepthBiasState::default(),
-            })
-        };
-        let pipeline = |label: &str,
-                        shader: &wgpu::ShaderModule,
-                        vbs: &[Option<wgpu::VertexBufferLayout<'_>>],
-                        topology: wgpu::PrimitiveTopology,
-                        blend: Option<wgpu::BlendState>,
-                        depth_write: bool| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(label),
-                layout: Some(&layout),
-                vertex: wgpu::VertexState {
-                    module: shader,
-                    entry_point: Some("vs_main"),
-                    compilation_options: Default::default(),
-                    buffers: vbs,
-                },
-                primitive: wgpu::PrimitiveState {
-                    topology,
-                    cull_mode: None,
-                    ..Default::default()
-                },
-                depth_stencil: depth(depth_write),
-                multisample: wgpu::MultisampleState::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: shader,
-                    entry_point: Some("fs_main"),
-                    compilation_options: Default::default(),
-                    targets: &[Some(wgpu::ColorTargetState {
-                        format,
-                        blend,
-                        write_mask: wgpu::ColorWrites::ALL,
-                    })],
-                }),
-                multiview_mask: None,
-                cache: None,
-            })
-        };
-        let wing_pipeline = pipeline(
-            "wing",
-            &wing_shader,
-            &[Some(wing_layout), Some(field_layout)],
-            wgpu::PrimitiveTopology::TriangleList,
-            None,
-            true,
-        );
-        let line_pipeline = pipeline(
-            "lines",
-            &line_shader,
-            &[Some(line_layout.clone())],
-            wgpu::PrimitiveTopology::LineList,
-            None,
-            true,
-        );
-        let plane_pipeline = pipeline(
-            "stroke plane",
-            &line_shader,
-            &[Some(line_layout)],
-            wgpu::PrimitiveTopology::TriangleList,
-            Some(wgpu::BlendState::ALPHA_BLENDING),
-            false,
-        );
-
-        let wing_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("wing vertices"),
-            contents: bytemuck::cast_slice(&pack_vertices(&mesh)),
-            usage: wgpu::BufferUsages::VERTEX,
-        });
-        let field = vec![0.0f32; mesh.nodes.len()];
-        let field_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("wing node field"),
-            contents: bytemuck::cast_slice(&field),
-            usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
-        });
-        let indices: Vec<u32> = mesh.triangles.iter().flatten().copied().collect();
-        let wing_ib = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("wing indices"),
-            contents: bytemuck::cast_slice(&indices),
-            usage: wgpu::BufferUsages::INDEX,
-        });
-        let span = mesh.span().max(1e-6);
-        let (lines, plane) = scene_geometry(span);
-        let line_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("scene lines"),
-            contents: bytemuck::cast_slice(&lines),
-            usage: wgpu::BufferUsages::VERTEX,
-        });
-        let plane_vb = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("stroke plane"),
-            contents: bytemuck::cast_slice(&plane),
-            usage: wgpu::BufferUsages::VERTEX,
-        });
-
+        let (mesh, warnings) = limit_modes(mesh);
+        let (lost, error) = watch_device(device);
+        let uniforms = uniform_binding(device);
+        let pipelines = pipelines(device, &uniforms.layout, format);
+        let b = upload_scene(device, &mesh);
         let (frame, _) = FrameParams::default().sanitise();
         let renderer = Renderer {
             device: device.clone(),
             queue: queue.clone(),
             format,
-            wing_pipeline,
-            line_pipeline,
-            plane_pipeline,
-            uniform_buf,
-            bind_group,
-            wing_vb,
-            field_vb,
-            field,
-            wing_ib,
-            n_indices: indices.len() as u32,
-            line_vb,
-            n_line_vertices: lines.len() as u32,
-            plane_vb,
-            n_plane_vertices: plane.len() as u32,
+            wing_pipeline: pipelines.wing,
+            line_pipeline: pipelines.line,
+            plane_pipeline: pipelines.plane,
+            uniform_buf: uniforms.buf,
+            bind_group: uniforms.bind_group,
+            wing_vb: b.wing_vb,
+            field_vb: b.field_vb,
+            field: b.field,
+            wing_ib: b.wing_ib,
+            n_indices: b.n_indices,
+            line_vb: b.line_vb,
+            n_line_vertices: b.n_line_vertices,
+            plane_vb: b.plane_vb,
+            n_plane_vertices: b.n_plane_vertices,
             depth: None,
             size: (0, 0),
-            camera: OrbitCamera::for_span(span),
+            camera: OrbitCamera::for_span(b.span),
             mesh,
             frame,
             inv_range: 0.0,

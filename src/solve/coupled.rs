@@ -398,6 +398,47 @@ pub struct CoupledResponses {
     pub steps: usize,
 }
 
+/// The Richardson estimate of one period's relative error from the maps at the step
+/// (`map`) and twice it (`coarse`): the difference of the monodromies in the scaled norm
+/// (q, q̇/ω, ω = `w`) and of each column's p(T) relative to its largest size over the phases
+/// and the end, divided by 2⁸ − 1, plus one ε of rounding per step.
+fn richardson_error(map: &CoupledMap, coarse: &CoupledMap, w: f64) -> f64 {
+    let (n, nf) = (map.n, map.nf);
+    let d = 2 * n;
+    let scaled = |v: &[f64], i: usize| if i % d < n { v[i] } else { v[i] / w };
+    let mut err: f64 = 0.0;
+    // Φ in the scaled norm (q, q̇/ω): S Φ S⁻¹.
+    let (mut num, mut den) = (0.0f64, 0.0f64);
+    for i in 0..d {
+        for j in 0..d {
+            let sc = (if i < n { 1.0 } else { 1.0 / w }) * (if j < n { 1.0 } else { w });
+            let a = map.monodromy[i * d + j] * sc;
+            let b = coarse.monodromy[i * d + j] * sc;
+            num += (a - b) * (a - b);
+            den += a * a;
+        }
+    }
+    err = err.max(num.sqrt() / den.sqrt().max(1e-300));
+    for j in 0..nf {
+        let mut size: f64 = 0.0;
+        for c in 0..map.phases.len() {
+            let p = &map.part[c * d * nf + j * d..c * d * nf + (j + 1) * d];
+            size = size.max((0..d).map(|i| scaled(p, i).powi(2)).sum::<f64>().sqrt());
+        }
+        let pe = &map.part_end[j * d..(j + 1) * d];
+        let pc = &coarse.part_end[j * d..(j + 1) * d];
+        size = size.max((0..d).map(|i| scaled(pe, i).powi(2)).sum::<f64>().sqrt());
+        let diff = (0..d)
+            .map(|i| (scaled(pe, i) - scaled(pc, i)).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        if size > 0.0 {
+            err = err.max(diff / size);
+        }
+    }
+    err / 255.0 + map.steps as f64 * f64::EPSILON
+}
+
 /// Propagates `ode` to t_i = i·dt, i = 0..n: every forcing column's response from rest, and
 /// for the column `total` also with the initial state `x0` = (q(0), q̇(0)) (2N values).
 pub fn propagate_coupled<O: CoupledOde + ?Sized>(
@@ -416,41 +457,7 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
     let map = coupled_map(ode, period, &sched.phases, hmax)?;
     // Error estimate: the same period with twice the step (end values only).
     let coarse = coupled_map(ode, period, &[], 2.0 * hmax)?;
-    let w = ode.freq_scale().max(1e-300);
-    let scaled = |v: &[f64], i: usize| if i % d < n { v[i] } else { v[i] / w };
-    let mut err: f64 = 0.0;
-    {
-        // Φ in the scaled norm (q, q̇/ω): S Φ S⁻¹.
-        let (mut num, mut den) = (0.0f64, 0.0f64);
-        for i in 0..d {
-            for j in 0..d {
-                let sc = (if i < n { 1.0 } else { 1.0 / w }) * (if j < n { 1.0 } else { w });
-                let a = map.monodromy[i * d + j] * sc;
-                let b = coarse.monodromy[i * d + j] * sc;
-                num += (a - b) * (a - b);
-                den += a * a;
-            }
-        }
-        err = err.max(num.sqrt() / den.sqrt().max(1e-300));
-        for j in 0..nf {
-            let mut size: f64 = 0.0;
-            for c in 0..sched.phases.len() {
-                let p = &map.part[c * d * nf + j * d..c * d * nf + (j + 1) * d];
-                size = size.max((0..d).map(|i| scaled(p, i).powi(2)).sum::<f64>().sqrt());
-            }
-            let pe = &map.part_end[j * d..(j + 1) * d];
-            let pc = &coarse.part_end[j * d..(j + 1) * d];
-            size = size.max((0..d).map(|i| scaled(pe, i).powi(2)).sum::<f64>().sqrt());
-            let diff = (0..d)
-                .map(|i| (scaled(pe, i) - scaled(pc, i)).powi(2))
-                .sum::<f64>()
-                .sqrt();
-            if size > 0.0 {
-                err = err.max(diff / size);
-            }
-        }
-    }
-    let period_error = err / 255.0 + map.steps as f64 * f64::EPSILON;
+    let period_error = richardson_error(&map, &coarse, ode.freq_scale().max(1e-300));
 
     let mut q: Vec<Vec<Vec<f64>>> = (0..nf)
         .map(|_| (0..n).map(|_| Vec::with_capacity(n_samples)).collect())
