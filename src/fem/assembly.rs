@@ -2,7 +2,7 @@
 //! lumped mass diagonal, with clamped DOFs eliminated.
 
 use super::blocksparse::BlockSym;
-use super::element::{global_stiffness, lumped_mass, Frame, ShellMaterial};
+use super::element::{global_stiffness, lumped_mass, Frame, Mat18, ShellMaterial};
 use super::mesh::Mesh;
 use super::sparse::{rcm_order, Skyline};
 use crate::error::{Result, WingbeatError};
@@ -100,26 +100,8 @@ pub fn system_size_for(mesh: &Mesh, clamped: &[bool], backend: super::Backend) -
     if backend != super::Backend::Sparse || free > SPARSE_ANALYSIS_MAX_NODES {
         return system_size(mesh, clamped);
     }
-    let nn = mesh.nodes.len();
-    let mut block = vec![CLAMPED; nn];
-    let mut nb = 0;
-    for node in 0..nn {
-        if !clamped.get(node).copied().unwrap_or(false) {
-            block[node] = nb;
-            nb += 1;
-        }
-    }
-    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); nb];
-    for t in &mesh.triangles {
-        for a in 0..3 {
-            for b in 0..3 {
-                let (ba, bb) = (block[t[a]], block[t[b]]);
-                if a != b && ba != CLAMPED && bb != CLAMPED {
-                    adj[ba].push(bb);
-                }
-            }
-        }
-    }
+    let (block, nb) = free_blocks(mesh, clamped);
+    let mut adj = block_adjacency(mesh, &block, nb);
     for a in &mut adj {
         a.sort_unstable();
         a.dedup();
@@ -152,7 +134,6 @@ pub fn system_size(mesh: &Mesh, clamped: &[bool]) -> SystemSize {
 
 /// Assembles K and M for `mesh` with the nodes flagged in `clamped` fixed in all 6 DOFs.
 pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<Assembled> {
-    let nn = mesh.nodes.len();
     let (eq, neq, first) = equations(mesh, clamped);
     if neq == 0 {
         return Err(WingbeatError::Geometry(
@@ -161,19 +142,8 @@ pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<As
     }
     let mut k = Skyline::new(first);
     let mut m = vec![0.0; neq];
-    let mut node_mass = vec![0.0; nn];
-    for (ti, t) in mesh.triangles.iter().enumerate() {
-        let p = [mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]];
-        let f = Frame::new(&p);
-        let ke = global_stiffness(&p, mat);
-        let (Some(f), Some(ke)) = (f, ke) else {
-            return Err(WingbeatError::Geometry(format!(
-                "triangle {ti} is degenerate (zero area)"
-            )));
-        };
-        let (mt, mr) = lumped_mass(f.area, mat);
+    let node_mass = walk_elements(mesh, mat, |t, ke, mt, mr| {
         for a in 0..3 {
-            node_mass[t[a]] += mt;
             for d in 0..6 {
                 let ea = eq[t[a]][d];
                 if ea == CLAMPED {
@@ -191,13 +161,8 @@ pub fn assemble(mesh: &Mesh, mat: &ShellMaterial, clamped: &[bool]) -> Result<As
                 }
             }
         }
-    }
-    if k.data.iter().any(|v| !v.is_finite()) {
-        return Err(WingbeatError::NonFinite {
-            what: "stiffness assembly".into(),
-            detail: "check the material values and the outline".into(),
-        });
-    }
+    })?;
+    check_finite(&k.data)?;
     Ok(Assembled {
         k,
         m,
@@ -214,52 +179,28 @@ pub fn assemble_blocks(
     mat: &ShellMaterial,
     clamped: &[bool],
 ) -> Result<Assembled<BlockSym>> {
-    let nn = mesh.nodes.len();
-    let mut eq = vec![[CLAMPED; 6]; nn];
-    let mut block = vec![CLAMPED; nn];
-    let mut nb = 0;
-    for node in 0..nn {
-        if clamped.get(node).copied().unwrap_or(false) {
-            continue;
-        }
-        block[node] = nb;
-        for d in 0..6 {
-            eq[node][d] = 6 * nb + d;
-        }
-        nb += 1;
-    }
+    let (block, nb) = free_blocks(mesh, clamped);
+    let eq: Vec<[usize; 6]> = block
+        .iter()
+        .map(|&b| {
+            if b == CLAMPED {
+                [CLAMPED; 6]
+            } else {
+                std::array::from_fn(|d| 6 * b + d)
+            }
+        })
+        .collect();
     if nb == 0 {
         return Err(WingbeatError::Geometry(
             "every node is clamped: nothing can vibrate".into(),
         ));
     }
-    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); nb];
-    for t in &mesh.triangles {
-        for a in 0..3 {
-            for b in 0..3 {
-                let (ba, bb) = (block[t[a]], block[t[b]]);
-                if a != b && ba != CLAMPED && bb != CLAMPED {
-                    adj[ba].push(bb);
-                }
-            }
-        }
-    }
+    let adj = block_adjacency(mesh, &block, nb);
     let mut k = BlockSym::with_pattern(&adj);
     drop(adj);
     let mut m = vec![0.0; 6 * nb];
-    let mut node_mass = vec![0.0; nn];
-    for (ti, t) in mesh.triangles.iter().enumerate() {
-        let p = [mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]];
-        let f = Frame::new(&p);
-        let ke = global_stiffness(&p, mat);
-        let (Some(f), Some(ke)) = (f, ke) else {
-            return Err(WingbeatError::Geometry(format!(
-                "triangle {ti} is degenerate (zero area)"
-            )));
-        };
-        let (mt, mr) = lumped_mass(f.area, mat);
+    let node_mass = walk_elements(mesh, mat, |t, ke, mt, mr| {
         for a in 0..3 {
-            node_mass[t[a]] += mt;
             let ba = block[t[a]];
             if ba == CLAMPED {
                 continue;
@@ -281,17 +222,84 @@ pub fn assemble_blocks(
                 }
             }
         }
-    }
-    if k.val.iter().flatten().any(|v| !v.is_finite()) {
-        return Err(WingbeatError::NonFinite {
-            what: "stiffness assembly".into(),
-            detail: "check the material values and the outline".into(),
-        });
-    }
+    })?;
+    check_finite(k.val.iter().flatten())?;
     Ok(Assembled {
         k,
         m,
         eq,
         node_mass,
     })
+}
+
+/// The one walk over the elements that both assemblies share: each triangle's global
+/// stiffness `ke` (18 × 18, node-major, 6 DOFs per node) and lumped masses (`mt` per node
+/// for each translation, `mr` for each rotation) go to `scatter` with the triangle's nodes,
+/// in mesh order. Returns each node's translational mass; a degenerate triangle is an error
+/// naming it.
+fn walk_elements(
+    mesh: &Mesh,
+    mat: &ShellMaterial,
+    mut scatter: impl FnMut(&[usize; 3], &Mat18, f64, f64),
+) -> Result<Vec<f64>> {
+    let mut node_mass = vec![0.0; mesh.nodes.len()];
+    for (ti, t) in mesh.triangles.iter().enumerate() {
+        let p = [mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]];
+        let f = Frame::new(&p);
+        let ke = global_stiffness(&p, mat);
+        let (Some(f), Some(ke)) = (f, ke) else {
+            return Err(WingbeatError::Geometry(format!(
+                "triangle {ti} is degenerate (zero area)"
+            )));
+        };
+        let (mt, mr) = lumped_mass(f.area, mat);
+        for &n in t {
+            node_mass[n] += mt;
+        }
+        scatter(t, &ke, mt, mr);
+    }
+    Ok(node_mass)
+}
+
+/// Refuses an assembled stiffness with a non-finite entry.
+fn check_finite<'a>(entries: impl IntoIterator<Item = &'a f64>) -> Result<()> {
+    if entries.into_iter().any(|v| !v.is_finite()) {
+        return Err(WingbeatError::NonFinite {
+            what: "stiffness assembly".into(),
+            detail: "check the material values and the outline".into(),
+        });
+    }
+    Ok(())
+}
+
+/// Each node's block number among the free nodes in mesh order ([`CLAMPED`] for a clamped
+/// node), and the number of free nodes.
+fn free_blocks(mesh: &Mesh, clamped: &[bool]) -> (Vec<usize>, usize) {
+    let nn = mesh.nodes.len();
+    let mut block = vec![CLAMPED; nn];
+    let mut nb = 0;
+    for (node, b) in block.iter_mut().enumerate() {
+        if !clamped.get(node).copied().unwrap_or(false) {
+            *b = nb;
+            nb += 1;
+        }
+    }
+    (block, nb)
+}
+
+/// The free nodes' graph: for each block, the blocks of the nodes it shares a triangle with,
+/// once per shared triangle (unsorted, with repeats).
+fn block_adjacency(mesh: &Mesh, block: &[usize], nb: usize) -> Vec<Vec<usize>> {
+    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); nb];
+    for t in &mesh.triangles {
+        for a in 0..3 {
+            for b in 0..3 {
+                let (ba, bb) = (block[t[a]], block[t[b]]);
+                if a != b && ba != CLAMPED && bb != CLAMPED {
+                    adj[ba].push(bb);
+                }
+            }
+        }
+    }
+    adj
 }

@@ -704,31 +704,17 @@ pub fn robust_range(values: impl Iterator<Item = f32>) -> f32 {
 /// negative (the upper half of the map, as for the magnitude), else −M…M; M is `fixed_range`
 /// or [`robust_range`] of the values (at least 1e-12). Non-finite values are ignored.
 pub fn legend_for_field(values: &[f32], fixed_range: Option<f32>) -> Legend {
-    let mut lo = f32::INFINITY;
-    let mut hi = f32::NEG_INFINITY;
-    for &v in values.iter().filter(|v| v.is_finite()) {
-        lo = lo.min(v);
-        hi = hi.max(v);
-    }
-    if !lo.is_finite() {
-        lo = 0.0;
-        hi = 0.0;
-    }
-    let m = fixed_range
-        .unwrap_or_else(|| robust_range(values.iter().copied()))
-        .max(1e-12);
-    Legend {
-        component: ColourMode::Field.label(),
-        min: if lo < 0.0 { -m } else { 0.0 },
-        max: m,
-        units: "strain",
-        data_min: lo,
-        data_max: hi,
-    }
+    legend_of(
+        ColourMode::Field.label(),
+        values.iter().copied(),
+        fixed_range,
+        |lo| lo >= 0.0,
+    )
 }
 
 /// The legend for `mode` given the nodal strain field; `None` for [`ColourMode::Plain`].
-/// With no fixed range the limit is [`robust_range`] of the field (at least 1e-12).
+/// With no fixed range the limit is [`robust_range`] of the field (at least 1e-12); colours
+/// span 0…M for the magnitude, −M…M for a component.
 pub fn legend_for(
     mode: ColourMode,
     field: &[[f32; 3]],
@@ -737,33 +723,43 @@ pub fn legend_for(
     if mode == ColourMode::Plain {
         return None;
     }
+    Some(legend_of(
+        mode.label(),
+        field.iter().map(|e| mode.value(*e)),
+        fixed_range,
+        |_| mode == ColourMode::Magnitude,
+    ))
+}
+
+/// The one legend builder behind [`legend_for`] and [`legend_for_field`]: the finite
+/// extremes of `values` (0 and 0 when there are none) and the limit M = `fixed_range` or
+/// [`robust_range`] of the values, at least 1e-12; colours span 0…M when
+/// `one_sided(data_min)`, else −M…M.
+fn legend_of(
+    component: &'static str,
+    values: impl Iterator<Item = f32> + Clone,
+    fixed_range: Option<f32>,
+    one_sided: impl FnOnce(f32) -> bool,
+) -> Legend {
     let mut lo = f32::INFINITY;
     let mut hi = f32::NEG_INFINITY;
-    for e in field {
-        let v = mode.value(*e);
-        if v.is_finite() {
-            lo = lo.min(v);
-            hi = hi.max(v);
-        }
+    for v in values.clone().filter(|v| v.is_finite()) {
+        lo = lo.min(v);
+        hi = hi.max(v);
     }
     if !lo.is_finite() {
         lo = 0.0;
         hi = 0.0;
     }
     let m = fixed_range
-        .unwrap_or_else(|| robust_range(field.iter().map(|e| mode.value(*e))))
+        .unwrap_or_else(|| robust_range(values))
         .max(1e-12);
-    let min = if mode == ColourMode::Magnitude {
-        0.0
-    } else {
-        -m
-    };
-    Some(Legend {
-        component: mode.label(),
-        min,
+    Legend {
+        component,
+        min: if one_sided(lo) { 0.0 } else { -m },
         max: m,
         units: "strain",
         data_min: lo,
         data_max: hi,
-    })
+    }
 }
