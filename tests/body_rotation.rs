@@ -694,7 +694,7 @@ fn cli_body_rate_flag() {
     let (code, _, err) = run(&["simulate", "--body-rate", "0,200,0"]);
     assert_ne!(code, 0);
     assert!(
-        err.contains("--body-rate Y") && err.contains("100"),
+        err.contains("--body-rate[1]") && err.contains("100"),
         "{err}"
     );
     let (code, _, err) = run(&["simulate", "--body-rate", "1,2"]);

@@ -1,4 +1,5 @@
-//! Sensing body rotation through wing strain (issue 14, items 3–4; docs/sensing.md).
+//! Sensing body rotation through wing strain: the rotation signal, the per-node
+//! detectability map and greedy sensor placement (docs/sensing.md).
 //!
 //! **The rotation signal.** The modal equation (paper Eq. 13) is linear in q with forcing
 //! and stiffness set by the frame rate Ω. With a body angular velocity ω_b, two runs of the
@@ -160,8 +161,29 @@ pub fn set_constant_body_rate(cfg: &mut SimConfig, w: [f64; 3]) {
     cfg.kinematics.body_rate = crate::kinematics::BodyRate::constant(w);
 }
 
+/// The constant body rate ω_b (rad/s, body axes I, J, K) from a list of numbers, as the
+/// front ends receive it: exactly three, each checked by [`check_body_rate`]. The one check
+/// of the CLI's `--body-rate` (simulate, psd, sweep, sense) and of wasm `senseRotation`'s
+/// `body_rate`; errors name `field` (`field[i]` for a component) and the range.
+pub fn body_rate_vector(field: &str, v: &[f64]) -> Result<[f64; 3]> {
+    let [x, y, z] = v else {
+        return Err(WingbeatError::invalid(
+            field,
+            format!("{} numbers", v.len()),
+            format!(
+                "three numbers x, y, z in rad/s (body axes I, J, K), each a finite number in \
+                 [{}, {MAX_BODY_RATE}]",
+                -MAX_BODY_RATE
+            ),
+        ));
+    };
+    let w = [*x, *y, *z];
+    check_body_rate(field, w)?;
+    Ok(w)
+}
+
 /// Refuses a body rate that is not three finite numbers within ±[`MAX_BODY_RATE`] rad/s,
-/// naming `field`.
+/// naming `field[i]` for component i.
 pub fn check_body_rate(field: &str, w: [f64; 3]) -> Result<()> {
     for (i, v) in w.iter().enumerate() {
         crate::error::check_range(
@@ -541,29 +563,8 @@ pub fn place_sensors(
     let n = check_signal(m, sig)?;
     check_map_work(nodes.len(), m)?;
     let idx = decimation(n, opts.samples_per_sensor);
-    let gdd = gram(&sig.delta, &sig.delta, &idx);
-    let gfd = gram(&sig.flap, &sig.delta, &idx);
-    let gff = gram(&sig.flap, &sig.flap, &idx);
-    let all: Vec<usize> = (0..n).collect();
-    let mdd = gram(&sig.delta, &sig.delta, &all);
-    let mff = gram(&sig.flap, &sig.flap, &all);
-    let (r2, s2) = (opts.rho * opts.rho, opts.noise * opts.noise);
-    // candidate sums
-    let nc = nodes.len() * 3;
-    let mut cand = Vec::with_capacity(nc);
-    let mut e = vec![0.0; m];
-    for i in 0..nodes.len() {
-        for c in 0..3 {
-            for (k, ek) in e.iter_mut().enumerate() {
-                *ek = strain(k, i)[c];
-            }
-            let a = quad(&gdd, &e, &e);
-            let b = quad(&gfd, &e, &e);
-            let g = quad(&gff, &e, &e);
-            let d = (quad(&mdd, &e, &e) / n as f64) / (r2 * quad(&mff, &e, &e) / n as f64 + s2);
-            cand.push((a, b, g, d));
-        }
-    }
+    let cand = candidates(nodes.len(), strain, sig, opts, &idx);
+    let nc = cand.len();
     let dps = |a: f64, b: f64, g: f64| d_prime_sq(a, b, g, opts.rho, opts.noise);
     let (ta, tb, tg) = cand
         .iter()
@@ -618,21 +619,7 @@ pub fn place_sensors(
             break;
         }
     }
-    // the ranked baseline: best single sensors first
-    let mut order: Vec<usize> = (0..nc).collect();
-    let single: Vec<f64> = cand.iter().map(|c| dps(c.0, c.1, c.2)).collect();
-    order.sort_by(|&i, &j| single[j].total_cmp(&single[i]).then(i.cmp(&j)));
-    let (mut ra, mut rb, mut rg) = (0.0, 0.0, 0.0);
-    let d_prime_ranked = order
-        .iter()
-        .take(sensors.len())
-        .map(|&j| {
-            ra += cand[j].0;
-            rb += cand[j].1;
-            rg += cand[j].2;
-            dps(ra, rb, rg).sqrt()
-        })
-        .collect();
+    let d_prime_ranked = ranked_baseline(&cand, sensors.len(), dps);
     Ok(Placement {
         sensors,
         d_prime,
@@ -650,6 +637,69 @@ pub fn place_sensors(
             n
         ),
     })
+}
+
+/// One candidate sensor's sums: Δᵀ Δ, Fᵀ Δ, Fᵀ F over the decimated samples (the terms of
+/// d'²) and its single-sensor detectability D over the whole run.
+type Candidate = (f64, f64, f64, f64);
+
+/// The candidates of [`place_sensors`], node by node and component by component (index
+/// 3 × node + component), from the Gram matrices of the modal series on the decimated
+/// samples `idx` and on every sample.
+fn candidates(
+    n_nodes: usize,
+    strain: impl Fn(usize, usize) -> [f64; 3],
+    sig: &ModalSignal,
+    opts: &SensingOptions,
+    idx: &[usize],
+) -> Vec<Candidate> {
+    let m = sig.flap.len();
+    let n = sig.t.len();
+    let gdd = gram(&sig.delta, &sig.delta, idx);
+    let gfd = gram(&sig.flap, &sig.delta, idx);
+    let gff = gram(&sig.flap, &sig.flap, idx);
+    let all: Vec<usize> = (0..n).collect();
+    let mdd = gram(&sig.delta, &sig.delta, &all);
+    let mff = gram(&sig.flap, &sig.flap, &all);
+    let (r2, s2) = (opts.rho * opts.rho, opts.noise * opts.noise);
+    let mut cand = Vec::with_capacity(n_nodes * 3);
+    let mut e = vec![0.0; m];
+    for i in 0..n_nodes {
+        for c in 0..3 {
+            for (k, ek) in e.iter_mut().enumerate() {
+                *ek = strain(k, i)[c];
+            }
+            let a = quad(&gdd, &e, &e);
+            let b = quad(&gfd, &e, &e);
+            let g = quad(&gff, &e, &e);
+            let d = (quad(&mdd, &e, &e) / n as f64) / (r2 * quad(&mff, &e, &e) / n as f64 + s2);
+            cand.push((a, b, g, d));
+        }
+    }
+    cand
+}
+
+/// The ranked baseline: d' of the best `count` single sensors taken together, best first
+/// (ties by index), for K = 1 … `count`.
+fn ranked_baseline(
+    cand: &[Candidate],
+    count: usize,
+    dps: impl Fn(f64, f64, f64) -> f64,
+) -> Vec<f64> {
+    let mut order: Vec<usize> = (0..cand.len()).collect();
+    let single: Vec<f64> = cand.iter().map(|c| dps(c.0, c.1, c.2)).collect();
+    order.sort_by(|&i, &j| single[j].total_cmp(&single[i]).then(i.cmp(&j)));
+    let (mut ra, mut rb, mut rg) = (0.0, 0.0, 0.0);
+    order
+        .iter()
+        .take(count)
+        .map(|&j| {
+            ra += cand[j].0;
+            rb += cand[j].1;
+            rg += cand[j].2;
+            dps(ra, rb, rg).sqrt()
+        })
+        .collect()
 }
 
 /// Δε(t) and the flapping strain at points given by their modal strains (`modal[p][k]` =

@@ -262,29 +262,8 @@ pub(crate) fn build_config(inp: &SimInput) -> Result<SimConfig> {
         p::Limits::Core,
     )?;
     if !inp.body_rate.is_empty() {
-        if inp.body_rate.len() != 3 {
-            return Err(WingbeatError::invalid(
-                "--body-rate",
-                format!("{} values", inp.body_rate.len()),
-                "three comma-separated rates X,Y,Z in rad/s (body axes)",
-            ));
-        }
-        let range = wingbeat::params::body_rate_range("peak");
-        for (i, v) in inp.body_rate.iter().enumerate() {
-            let axis = ["X", "Y", "Z"][i];
-            wingbeat::error::check_range(
-                &format!("--body-rate {axis}"),
-                *v,
-                -range.max,
-                range.max,
-                range.unit,
-            )?;
-        }
-        cfg.kinematics.body_rate = wingbeat::kinematics::BodyRate::constant([
-            inp.body_rate[0],
-            inp.body_rate[1],
-            inp.body_rate[2],
-        ]);
+        let w = wingbeat::analysis::sensing::body_rate_vector("--body-rate", &inp.body_rate)?;
+        cfg.kinematics.body_rate = wingbeat::kinematics::BodyRate::constant(w);
     }
     if let Some(d) = inp.duration {
         cfg.duration_s = d;

@@ -1,15 +1,17 @@
 //! `wingbeat sense`: where body rotation shows up in wing strain, and how many sensors it
-//! takes to detect it (issue 14; docs/sensing.md).
+//! takes to detect it (docs/sensing.md).
 
 use super::{build_config, read_file, to_json, Format, SimInput};
 use clap::{Args, ValueEnum};
 use serde_json::json;
 use wingbeat::analysis::psd::{welch, WelchOptions};
 use wingbeat::analysis::sensing::{
-    check_body_rate, check_sensing_cost, delta_strain_series, modal_rotation_signal,
-    modal_strains_at_points, sense_fe, ModalSignal, SensingOptions, COMPONENTS,
+    body_rate_vector, check_sensing_cost, delta_strain_series, modal_rotation_signal,
+    modal_strains_at_points, sense_fe, DetectabilityMap, ModalSignal, Placement, SensingOptions,
+    SensingResult, COMPONENTS,
 };
 use wingbeat::analysis::strain::{strain_series, StrainSeries};
+use wingbeat::config::SimConfig;
 use wingbeat::fem::{compute_modes, FemInput, FemModes};
 use wingbeat::modes_doc::read_modes_document;
 use wingbeat::{Result, WingbeatError};
@@ -63,16 +65,7 @@ fn body_rate_of(v: &[f64]) -> Result<[f64; 3]> {
     if v.is_empty() {
         return Ok([0.0, 0.0, 1.0]);
     }
-    if v.len() != 3 {
-        return Err(WingbeatError::invalid(
-            "--body-rate",
-            format!("{} values", v.len()),
-            "X,Y,Z: three finite numbers, rad/s",
-        ));
-    }
-    let w = [v[0], v[1], v[2]];
-    check_body_rate("--body-rate", w)?;
-    Ok(w)
+    body_rate_vector("--body-rate", v)
 }
 
 fn parse_points(s: &str) -> Result<Vec<(f64, f64)>> {
@@ -147,39 +140,7 @@ pub fn run(a: SenseArgs) -> Result<String> {
     opts.validate_named(["--k-max", "--rho", "--noise", "--samples-per-sensor"])?;
     let user_points = a.points.as_deref().map(parse_points).transpose()?;
     let fe = fe_of(&a)?;
-    // The config: the FE modes (when computed here) replace the preset's, keeping --zeta.
-    let mut input = a.input.clone();
-    // the runs set the body rate themselves (with and without it)
-    input.body_rate.clear();
-    if input.preset == "fe-wing" && input.modes.is_none() {
-        input.preset = "paper".into();
-    }
-    // The medium is applied once the FE wing's shapes are attached (air needs them).
-    let air = input.air_density.take();
-    let mut cfg = build_config(&input)?;
-    if let (Some(fe), None) = (&fe, &a.input.modes) {
-        cfg.modes = fe.to_modes(a.input.zeta.unwrap_or(0.0), &[]);
-        cfg.initial_conditions.truncate(cfg.modes.len());
-        cfg.validate()?;
-    }
-    if let Some(fe) = &fe {
-        cfg.wing = Some(std::sync::Arc::new(wingbeat::aero::WingGeometry::from_fem(
-            fe,
-        )));
-    }
-    if air.is_some() {
-        super::apply_air_density(&mut cfg, air)?;
-        cfg.validate()?;
-    }
-    if let Some(fe) = &fe {
-        if fe.strain_nodes.len() != cfg.modes.len() {
-            return Err(WingbeatError::invalid(
-                "--modes",
-                format!("{} FE modes", fe.strain_nodes.len()),
-                format!("the {} modes of the config", cfg.modes.len()),
-            ));
-        }
-    }
+    let cfg = sensing_config(&a, fe.as_ref())?;
     // points outside the wing are refused before any run
     if let (Some(fe), Some(pts)) = (&fe, &user_points) {
         for &(x, y) in pts {
@@ -227,118 +188,194 @@ pub fn run(a: SenseArgs) -> Result<String> {
     let series = delta_strain_series(&names, &modal, &sig)?;
     let elapsed = t0.elapsed().as_secs_f64();
     eprintln!("sense: done in {elapsed:.2} s");
+    match (a.format, a.table) {
+        (Format::Csv, Table::Series) => Ok(series_csv(&sig.t, &series)),
+        (Format::Csv, Table::Map) => Ok(map_csv(&fe, &res.map)),
+        (Format::Csv, Table::Sensors) => Ok(sensors_csv(&res.placement)),
+        (Format::Csv, Table::Curve) => Ok(curve_csv(&res.placement)),
+        (Format::Json, _) => fe_json(FeReport {
+            body_rate: w,
+            options: opts,
+            cfg: &cfg,
+            elapsed,
+            fe: &fe,
+            res: &res,
+            pts: &pts,
+            series: &series,
+            sig: &sig,
+        }),
+    }
+}
+
+/// The config of the two runs: the input's, with the FE modes (when computed here) in place of
+/// the preset's, keeping --zeta; the FE wing's shapes attached, then the medium; the body
+/// rate left to the runs (they set it themselves, with and without it).
+fn sensing_config(a: &SenseArgs, fe: Option<&FemModes>) -> Result<SimConfig> {
+    let mut input = a.input.clone();
+    input.body_rate.clear();
+    if input.preset == "fe-wing" && input.modes.is_none() {
+        input.preset = "paper".into();
+    }
+    // The medium is applied once the FE wing's shapes are attached (air needs them).
+    let air = input.air_density.take();
+    let mut cfg = build_config(&input)?;
+    if let (Some(fe), None) = (fe, &a.input.modes) {
+        cfg.modes = fe.to_modes(a.input.zeta.unwrap_or(0.0), &[]);
+        cfg.initial_conditions.truncate(cfg.modes.len());
+        cfg.validate()?;
+    }
+    if let Some(fe) = fe {
+        cfg.wing = Some(std::sync::Arc::new(wingbeat::aero::WingGeometry::from_fem(
+            fe,
+        )));
+    }
+    if air.is_some() {
+        super::apply_air_density(&mut cfg, air)?;
+        cfg.validate()?;
+    }
+    if let Some(fe) = fe {
+        if fe.strain_nodes.len() != cfg.modes.len() {
+            return Err(WingbeatError::invalid(
+                "--modes",
+                format!("{} FE modes", fe.strain_nodes.len()),
+                format!("the {} modes of the config", cfg.modes.len()),
+            ));
+        }
+    }
+    Ok(cfg)
+}
+
+/// `--table map`: one row per node with its detectability and energies per component.
+fn map_csv(fe: &FemModes, m: &DetectabilityMap) -> String {
+    let mut out = String::from("node,x_mm,y_mm,d_eps_x,d_eps_y,d_gamma_xy,e_delta_eps_x,e_delta_eps_y,e_delta_gamma_xy,e_flap_eps_x,e_flap_eps_y,e_flap_gamma_xy,best_component\n");
+    for (i, p) in fe.nodes.iter().enumerate() {
+        out.push_str(&format!(
+            "{i},{:.6},{:.6},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{}\n",
+            p[0] * 1e3,
+            p[1] * 1e3,
+            m.d[i][0],
+            m.d[i][1],
+            m.d[i][2],
+            m.e_delta[i][0],
+            m.e_delta[i][1],
+            m.e_delta[i][2],
+            m.e_flap[i][0],
+            m.e_flap[i][1],
+            m.e_flap[i][2],
+            COMPONENTS[m.best_component[i]]
+        ));
+    }
+    out
+}
+
+/// `--table sensors`: the greedy sensors in rank order.
+fn sensors_csv(pl: &Placement) -> String {
+    let mut out = String::from("rank,node,component,x_mm,y_mm,d\n");
+    for s in &pl.sensors {
+        out.push_str(&format!(
+            "{},{},{},{:.6},{:.6},{:.9e}\n",
+            s.rank, s.node, s.component, s.x_mm, s.y_mm, s.d
+        ));
+    }
+    out
+}
+
+/// `--table curve`: d′ and the detection probability against the number of sensors K.
+fn curve_csv(pl: &Placement) -> String {
+    let mut out = String::from("k,d_prime,pd,d_prime_ranked\n");
+    for (k, (d, p)) in pl.d_prime.iter().zip(&pl.pd).enumerate() {
+        out.push_str(&format!(
+            "{},{d:.9e},{p:.9},{:.9e}\n",
+            k + 1,
+            pl.d_prime_ranked[k]
+        ));
+    }
+    out
+}
+
+/// What an FE wing's sensing run produced, for its JSON.
+struct FeReport<'a> {
+    body_rate: [f64; 3],
+    options: SensingOptions,
+    cfg: &'a SimConfig,
+    elapsed: f64,
+    fe: &'a FemModes,
+    res: &'a SensingResult,
+    pts: &'a [(f64, f64)],
+    series: &'a [(StrainSeries, StrainSeries)],
+    sig: &'a ModalSignal,
+}
+
+/// The JSON of an FE wing's run: everything, with Δε and its spectra at each point.
+fn fe_json(r: FeReport<'_>) -> Result<String> {
+    let sig = r.sig;
     let fd = sig.flap_freq_hz;
     let wopts = WelchOptions {
         segment_len: sig.t.len().clamp(8, 8192),
         ..Default::default()
     };
-    match (a.format, a.table) {
-        (Format::Csv, Table::Series) => Ok(series_csv(&sig.t, &series)),
-        (Format::Csv, Table::Map) => {
-            let mut out = String::from("node,x_mm,y_mm,d_eps_x,d_eps_y,d_gamma_xy,e_delta_eps_x,e_delta_eps_y,e_delta_gamma_xy,e_flap_eps_x,e_flap_eps_y,e_flap_gamma_xy,best_component\n");
-            for (i, p) in fe.nodes.iter().enumerate() {
-                let m = &res.map;
-                out.push_str(&format!(
-                    "{i},{:.6},{:.6},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{}\n",
-                    p[0] * 1e3,
-                    p[1] * 1e3,
-                    m.d[i][0],
-                    m.d[i][1],
-                    m.d[i][2],
-                    m.e_delta[i][0],
-                    m.e_delta[i][1],
-                    m.e_delta[i][2],
-                    m.e_flap[i][0],
-                    m.e_flap[i][1],
-                    m.e_flap[i][2],
-                    COMPONENTS[m.best_component[i]]
-                ));
-            }
-            Ok(out)
-        }
-        (Format::Csv, Table::Sensors) => {
-            let mut out = String::from("rank,node,component,x_mm,y_mm,d\n");
-            for s in &res.placement.sensors {
-                out.push_str(&format!(
-                    "{},{},{},{:.6},{:.6},{:.9e}\n",
-                    s.rank, s.node, s.component, s.x_mm, s.y_mm, s.d
-                ));
-            }
-            Ok(out)
-        }
-        (Format::Csv, Table::Curve) => {
-            let pl = &res.placement;
-            let mut out = String::from("k,d_prime,pd,d_prime_ranked\n");
-            for (k, (d, p)) in pl.d_prime.iter().zip(&pl.pd).enumerate() {
-                out.push_str(&format!(
-                    "{},{d:.9e},{p:.9},{:.9e}\n",
-                    k + 1,
-                    pl.d_prime_ranked[k]
-                ));
-            }
-            Ok(out)
-        }
-        (Format::Json, _) => {
-            let mut points = Vec::new();
-            for ((x, y), (d, _)) in pts.iter().zip(&series) {
-                points.push(SensePoint {
-                    delta_strain: d,
-                    spectrum: Spectra {
-                        eps_x: welch(&d.eps_x, sig.sample_rate_hz, &wopts, Some(fd))?,
-                        eps_y: welch(&d.eps_y, sig.sample_rate_hz, &wopts, Some(fd))?,
-                        gamma_xy: welch(&d.gamma_xy, sig.sample_rate_hz, &wopts, Some(fd))?,
-                    },
-                    x_mm: *x,
-                    y_mm: *y,
-                });
-            }
-            // Written straight from the results (a `serde_json::Value` of the series took
-            // several times the memory of the text; issue 20). Keys in alphabetical order,
-            // as before.
-            #[derive(serde::Serialize)]
-            struct Out<'a> {
-                air_density_kg_m3: f64,
-                body_rate: [f64; 3],
-                elapsed_s: f64,
-                flap_freq_hz: f64,
-                map: &'a wingbeat::analysis::sensing::DetectabilityMap,
-                n_nodes: usize,
-                nodes_mm: Vec<[f64; 2]>,
-                options: SensingOptions,
-                placement: &'a wingbeat::analysis::sensing::Placement,
-                points: Vec<SensePoint<'a>>,
-                sample_rate_hz: f64,
-                t: &'a [f64],
-                units: serde_json::Value,
-                warnings: &'a [String],
-            }
-            to_json(&Out {
-                air_density_kg_m3: cfg.aero.air_density_kg_m3,
-                body_rate: w,
-                elapsed_s: elapsed,
-                flap_freq_hz: fd,
-                map: &res.map,
-                n_nodes: fe.nodes.len(),
-                nodes_mm: fe.nodes.iter().map(|p| [p[0] * 1e3, p[1] * 1e3]).collect(),
-                options: opts,
-                placement: &res.placement,
-                points,
-                sample_rate_hz: sig.sample_rate_hz,
-                t: &sig.t,
-                units: json!({
-                    "air_density_kg_m3": "kg/m³ of the medium both runs are in (0 = vacuum)",
-                    "body_rate": "rad/s, body axes (I roll, J pitch, K yaw)",
-                    "strain": "dimensionless (FE modes, SI)",
-                    "x_mm": "mm, spanwise from the root", "y_mm": "mm, chordwise",
-                    "d": "E_delta / (rho^2 E_flap + noise^2), per node and component (eps_x, eps_y, gamma_xy)",
-                    "d_prime": "sqrt(Delta^T (rho^2 F F^T + noise^2 I)^-1 Delta), stacked decimated series",
-                    "pd": "detection probability at a 1 % false-alarm rate",
-                    "psd": "strain^2 / Hz, one-sided Welch",
-                }),
-                warnings: &sig.warnings,
-            })
-        }
+    let mut points = Vec::new();
+    for ((x, y), (d, _)) in r.pts.iter().zip(r.series) {
+        points.push(SensePoint {
+            delta_strain: d,
+            spectrum: Spectra {
+                eps_x: welch(&d.eps_x, sig.sample_rate_hz, &wopts, Some(fd))?,
+                eps_y: welch(&d.eps_y, sig.sample_rate_hz, &wopts, Some(fd))?,
+                gamma_xy: welch(&d.gamma_xy, sig.sample_rate_hz, &wopts, Some(fd))?,
+            },
+            x_mm: *x,
+            y_mm: *y,
+        });
     }
+    // Written straight from the results (a `serde_json::Value` of the series took several
+    // times the memory of the text). Keys in alphabetical order, as before.
+    #[derive(serde::Serialize)]
+    struct Out<'a> {
+        air_density_kg_m3: f64,
+        body_rate: [f64; 3],
+        elapsed_s: f64,
+        flap_freq_hz: f64,
+        map: &'a DetectabilityMap,
+        n_nodes: usize,
+        nodes_mm: Vec<[f64; 2]>,
+        options: SensingOptions,
+        placement: &'a Placement,
+        points: Vec<SensePoint<'a>>,
+        sample_rate_hz: f64,
+        t: &'a [f64],
+        units: serde_json::Value,
+        warnings: &'a [String],
+    }
+    to_json(&Out {
+        air_density_kg_m3: r.cfg.aero.air_density_kg_m3,
+        body_rate: r.body_rate,
+        elapsed_s: r.elapsed,
+        flap_freq_hz: fd,
+        map: &r.res.map,
+        n_nodes: r.fe.nodes.len(),
+        nodes_mm: r
+            .fe
+            .nodes
+            .iter()
+            .map(|p| [p[0] * 1e3, p[1] * 1e3])
+            .collect(),
+        options: r.options,
+        placement: &r.res.placement,
+        points,
+        sample_rate_hz: sig.sample_rate_hz,
+        t: &sig.t,
+        units: json!({
+            "air_density_kg_m3": "kg/m³ of the medium both runs are in (0 = vacuum)",
+            "body_rate": "rad/s, body axes (I roll, J pitch, K yaw)",
+            "strain": "dimensionless (FE modes, SI)",
+            "x_mm": "mm, spanwise from the root", "y_mm": "mm, chordwise",
+            "d": "E_delta / (rho^2 E_flap + noise^2), per node and component (eps_x, eps_y, gamma_xy)",
+            "d_prime": "sqrt(Delta^T (rho^2 F F^T + noise^2 I)^-1 Delta), stacked decimated series",
+            "pd": "detection probability at a 1 % false-alarm rate",
+            "psd": "strain^2 / Hz, one-sided Welch",
+        }),
+        warnings: &sig.warnings,
+    })
 }
 
 /// One point of `wingbeat sense`'s JSON: Δε there and its spectra.
@@ -381,11 +418,7 @@ fn series_csv(t: &[f64], series: &[(StrainSeries, StrainSeries)]) -> String {
 
 /// Paper-table modes (no strain field): the modal signal Δq and Δε at the modes' named
 /// strain points; no map or placement.
-fn modal_only(
-    a: &SenseArgs,
-    cfg: &wingbeat::config::SimConfig,
-    sig: &ModalSignal,
-) -> Result<String> {
+fn modal_only(a: &SenseArgs, cfg: &SimConfig, sig: &ModalSignal) -> Result<String> {
     if a.points.is_some() {
         return Err(WingbeatError::invalid(
             "--points",

@@ -1,4 +1,4 @@
-//! Sensing body rotation through wing strain (issue 14) for the lab: `senseRotation` and
+//! Sensing body rotation through wing strain for the lab: `senseRotation` and
 //! `bodyRateRanges`. The analysis is the core's ([`crate::analysis::sensing`]); this file only
 //! reads `feModes`' flat arrays, checks every input and cap before any work, and writes the
 //! long results as typed arrays.
@@ -10,11 +10,11 @@ use super::marshal::{
 };
 use crate::analysis::psd::{welch, WelchOptions};
 use crate::analysis::sensing::{
-    check_body_rate, check_sensing_cost, delta_strain_series, detectability_map,
-    modal_rotation_signal, place_sensors, SensingOptions, DEFAULT_NOISE, DEFAULT_RHO,
-    DEFAULT_SAMPLES_PER_SENSOR, MAX_K,
+    body_rate_vector, check_sensing_cost, delta_strain_series, detectability_map,
+    modal_rotation_signal, place_sensors, DetectabilityMap, ModalSignal, Placement, SensingOptions,
+    Sensor, DEFAULT_NOISE, DEFAULT_RHO, DEFAULT_SAMPLES_PER_SENSOR, MAX_K,
 };
-use crate::analysis::strain::modal_strains_at;
+use crate::analysis::strain::{modal_strains_at, StrainSeries};
 use crate::error::WingbeatError;
 use js_sys::{Object, Uint8Array};
 use serde::{Deserialize, Serialize};
@@ -54,20 +54,6 @@ fn sensing_options(o: &SenseOptions) -> Result<SensingOptions, JsError> {
     Ok(s)
 }
 
-/// The body rate from JS: exactly three finite numbers within the core's range (rad/s).
-fn body_rate_of(v: &[f64]) -> Result<[f64; 3], WingbeatError> {
-    if v.len() != 3 {
-        return Err(WingbeatError::invalid(
-            "body_rate",
-            format!("{} numbers", v.len()),
-            "[x, y, z]: three numbers in rad/s (body axes I, J, K)",
-        ));
-    }
-    let w = [v[0], v[1], v[2]];
-    check_body_rate("body_rate", w)?;
-    Ok(w)
-}
-
 /// The accepted ranges of the body angular velocity (core `params::BODY_RATE_RANGES`): one
 /// entry per quantity (`mean`, `amplitude`, `phase`, `value`, `peak`) with `min`, `max`, `unit`.
 #[wasm_bindgen(js_name = bodyRateRanges, unchecked_return_type = "BodyRateRange[]")]
@@ -75,7 +61,7 @@ pub fn body_rate_ranges() -> Result<JsValue, JsError> {
     to_js(&crate::params::BODY_RATE_RANGES[..])
 }
 
-/// Where rotation shows up in the strain of an FE wing (issue 14; docs/sensing.md): two runs
+/// Where rotation shows up in the strain of an FE wing (docs/sensing.md): two runs
 /// of `config` (whose modes must be the FE wing's, in `feModes`' order), one under the constant
 /// body rate `body_rate` = [x, y, z] rad/s (body axes) and one without; from their difference
 /// Δq and the nodal modal strains (`nodes`, `triangles`, `strain_nodes` as `feModes` returns
@@ -106,7 +92,7 @@ pub fn sense_rotation(
     let o: SenseOptions = from_js(opts, "opts")?;
     let sopts = sensing_options(&o)?;
     let body_rate = f64_array_arg(&body_rate, "body_rate", 0, 3)?;
-    let w = body_rate_of(&body_rate).map_err(err)?;
+    let w = body_rate_vector("body_rate", &body_rate).map_err(err)?;
     let n_modes = cfg.modes.len();
     let (nodes, triangles, strain_nodes) =
         super::wing::flat_mesh_args(&nodes, &triangles, &strain_nodes, n_modes)?;
@@ -155,7 +141,40 @@ pub fn sense_rotation(
         }
     };
     let series = delta_strain_series(&["P".to_string()], &[modal], &sig).map_err(err)?;
-    let (d, f) = &series[0];
+    result_js(&Outcome {
+        body_rate: w,
+        options: sopts,
+        n_nodes: nn,
+        n_modes,
+        sig: &sig,
+        map: &map,
+        placement: &placement,
+        point,
+        point_source: source,
+        series: &series[0],
+    })
+}
+
+/// What [`sense_rotation`] found, for [`result_js`].
+struct Outcome<'a> {
+    body_rate: [f64; 3],
+    options: SensingOptions,
+    n_nodes: usize,
+    n_modes: usize,
+    sig: &'a ModalSignal,
+    map: &'a DetectabilityMap,
+    placement: &'a Placement,
+    point: [f64; 2],
+    point_source: &'a str,
+    /// Δε and the flapping strain at the point.
+    series: &'a (StrainSeries, StrainSeries),
+}
+
+/// The `SensingResult` object: the scalars through serde, the long series as typed arrays,
+/// and the Welch spectra of Δε at the point.
+fn result_js(r: &Outcome<'_>) -> Result<JsValue, JsError> {
+    let (sig, map, placement) = (r.sig, r.map, r.placement);
+    let (d, f) = r.series;
     let fd = sig.flap_freq_hz;
     let wopts = WelchOptions {
         segment_len: sig.t.len().clamp(8, 8192),
@@ -174,7 +193,7 @@ pub fn sense_rotation(
         n_nodes: usize,
         n_modes: usize,
         warnings: &'a [String],
-        sensors: &'a [crate::analysis::sensing::Sensor],
+        sensors: &'a [Sensor],
         d_prime_all: f64,
         pd_all: f64,
         k_for_90_percent: Option<usize>,
@@ -183,20 +202,20 @@ pub fn sense_rotation(
         point_source: &'a str,
     }
     let o: Object = to_js(&Meta {
-        body_rate: w,
-        options: sopts,
+        body_rate: r.body_rate,
+        options: r.options,
         flap_freq_hz: fd,
         sample_rate_hz: sig.sample_rate_hz,
-        n_nodes: nn,
-        n_modes,
+        n_nodes: r.n_nodes,
+        n_modes: r.n_modes,
         warnings: &sig.warnings,
         sensors: &placement.sensors,
         d_prime_all: placement.d_prime_all,
         pd_all: placement.pd_all,
         k_for_90_percent: placement.k_for_90_percent,
         method: &placement.method,
-        point_mm: point,
-        point_source: source,
+        point_mm: r.point,
+        point_source: r.point_source,
     })?
     .unchecked_into();
     let flat3 = |v: &[[f64; 3]]| -> Vec<f64> { v.iter().flatten().copied().collect() };
@@ -210,7 +229,7 @@ pub fn sense_rotation(
     set(&o, "pd", &f64a(&placement.pd))?;
     set(&o, "d_prime_ranked", &f64a(&placement.d_prime_ranked))?;
     set(&o, "t", &f64a(&sig.t))?;
-    let comps = |s: &crate::analysis::strain::StrainSeries| -> Result<JsValue, JsError> {
+    let comps = |s: &StrainSeries| -> Result<JsValue, JsError> {
         let c = Object::new();
         set(&c, "eps_x", &f64a(&s.eps_x))?;
         set(&c, "eps_y", &f64a(&s.eps_y))?;
