@@ -158,10 +158,11 @@ pub const MIN_FLAP_HZ: f64 = 1.0e-3;
 /// Harmonics a sampled angle keeps when its `max_harmonic` is not given (the table's N/2 if
 /// fewer). Every harmonic costs work at every solver step and shortens the step, so the run's
 /// cost grows with its square; measured wing kinematics carry next to nothing above the
-/// tenth harmonic. Ask for more (up to [`MAX_HARMONIC`]) with `max_harmonic`. 24 keeps a
-/// typical measured table (200 samples per period, the paper's two modes at 25 Hz) at about
-/// 4e5 work units, inside the browser's budget (`WEB_MAX_RUN_WORK`, 1e6); at 64 the same
-/// table cost 3.0e6 and was refused in the lab.
+/// tenth harmonic. Ask for more (up to [`MAX_HARMONIC`]) with `max_harmonic`. This default
+/// of 24 harmonics keeps a typical measured table (200 samples per period, the paper's two
+/// modes at 25 Hz) at about 4e5 work units, inside the browser's budget (`WEB_MAX_RUN_WORK`,
+/// 1e6); the same table with 64 harmonics costs 3.0e6 and is refused in the lab. The DFT of
+/// [`Angle::series`], the CSV reader and the cap's warning all take it from here.
 pub const DEFAULT_SAMPLED_MAX_HARMONIC: u32 = 24;
 
 impl Angle {
@@ -179,7 +180,7 @@ impl Angle {
 
     /// The warning for a sampled table low-passed by the default cap: without `max_harmonic`
     /// a table of N samples keeps min(N/2, [`DEFAULT_SAMPLED_MAX_HARMONIC`]) harmonics, so a
-    /// table of more than 2 × 24 samples does not pass through its samples. Says by how much
+    /// table of more than twice that many samples does not pass through its samples. Says by how much
     /// (the largest deviation at the sample times) and how to keep them all. `None` when the
     /// cap changes nothing.
     pub fn default_cap_warning(&self, field: &str, unit: &str) -> Option<String> {
@@ -317,7 +318,8 @@ impl Angle {
                 values,
                 max_harmonic,
             } => {
-                // Direct O(N·H) DFT: tables are short and this runs once per model.
+                // Direct O(N·H) DFT, H = min(N/2, max_harmonic or DEFAULT_SAMPLED_MAX_HARMONIC):
+                // tables are short and this runs once per model.
                 let n = values.len();
                 let nf = n as f64;
                 let mean = values.iter().sum::<f64>() / nf;

@@ -1,6 +1,6 @@
 //! Analyses built on the solver: spectra, force contributions, parameter sweeps, the
 //! initial-condition map, beat measurement, strain (paper §3.3–§4.4) and sensing body rotation
-//! through strain (issue 14).
+//! through strain.
 
 pub mod angles;
 pub mod beat;

@@ -341,7 +341,7 @@ fn cmd_simulate(a: SimulateArgs) -> Result<String> {
         Format::Csv => Ok(csv_of(&r)),
         Format::Json => {
             // Written straight from the result (no intermediate `serde_json::Value`, which
-            // took about 3× the memory of the text: issue 13).
+            // took about 3× the memory of the text).
             #[derive(serde::Serialize)]
             struct Out<'a> {
                 #[serde(flatten)]
@@ -383,7 +383,7 @@ fn cmd_psd(a: PsdArgs) -> Result<String> {
     let fd = Some(cfg.kinematics.flap_freq_hz);
     // The run first, keeping only each mode's total response (the other series of the run
     // are not needed here), then the forces: the peak memory is the larger of the two, not
-    // their sum (issue 20: 4.3 GB with four modes at the sample cap).
+    // their sum (the sum was 4.3 GB with four modes at the sample cap).
     let sim = simulate(&cfg)?;
     for w in &sim.warnings {
         eprintln!("warning: {w}");

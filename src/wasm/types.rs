@@ -143,7 +143,7 @@ export interface Limits {
   max_resonance_points: number; max_resonance_alpha0_values: number; max_resonance_work: number;
   /** strainField's peak cap (nodes × samples × modes) and the most outline points accepted. */
   max_strain_field_work: number; max_outline_points: number;
-  /** Work budget (issue 13, docs/limits.md): one browser run and one sweep, in step equivalents; the flap frequency range, Hz; strain points per run. */
+  /** Work budget (docs/limits.md): one browser run and one sweep, in step equivalents; the flap frequency range, Hz; strain points per run. */
   web_max_run_work: number; max_sweep_work: number; min_flap_hz: number; max_flap_hz: number; max_strain_points: number;
   /** Harmonics a sampled angle keeps when its `max_harmonic` is not given (the table's N/2 if fewer). */
   default_sampled_max_harmonic: number;
