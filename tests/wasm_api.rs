@@ -836,11 +836,6 @@ fn integer_arguments_are_never_coerced() {
         ));
         assert!(m.contains("`mode`"), "{k}: {m}");
     }
-    let x = wasm_common::fa(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
-    for b in [-1.0, f64::NAN, 1e20, 2.5] {
-        let m = message(wasm::decimate_min_max(x.clone(), JsValue::from(b)));
-        assert!(m.contains("decimate.buckets"), "{b}: {m}");
-    }
 }
 
 #[wasm_bindgen_test]

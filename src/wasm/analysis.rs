@@ -1,10 +1,10 @@
 //! The analyses of the wasm API: spectra (per series, per mode, and everything the live
-//! panels need in one `analyze` call), envelopes, plot decimation, sweeps, the
+//! panels need in one `analyze` call), envelopes, sweeps, the
 //! initial-condition map and the resonance map.
 
 use super::helpers::{self, opt_or_nan};
 use super::marshal::{
-    config_from, err, f64a, from_js, function_arg, int_arg, number_arg, obj_with, opt_number_arg,
+    config_from, err, f64a, from_js, function_arg, number_arg, obj_with, opt_number_arg,
     progress_fn, required_js, series_from_js, set, sim_js, spectrum_js, to_js,
 };
 use crate::analysis::angles::angles_on;
@@ -13,6 +13,7 @@ use crate::analysis::ic_map::{ic_map as core_ic_map, IcMapOptions};
 use crate::analysis::psd::{welch, WelchOptions};
 use crate::analysis::resonance::{resonance_map as core_resonance_map, ResonanceOptions};
 use crate::analysis::spectra::mode_spectra;
+use crate::analysis::strain::peak_abs;
 use crate::analysis::sweep::{sweep as core_sweep, SweepOptions};
 use crate::config::SimConfig;
 use crate::error::WingbeatError;
@@ -57,19 +58,6 @@ pub fn envelope(
     let series = series_from_js(&series, "envelope.series", crate::config::MAX_SAMPLES)?;
     let e = beat::checked_envelope(&series, "envelope.series").map_err(err)?;
     Ok(Float64Array::from(&e[..]))
-}
-
-/// Min/max decimation for plotting: returns `{ index: Float64Array, value: Float64Array }`.
-#[wasm_bindgen(js_name = decimateMinMax)]
-pub fn decimate_min_max(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] series: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "number")] buckets: JsValue,
-) -> Result<JsValue, JsError> {
-    let buckets = int_arg(&buckets, "decimate.buckets", 0, 1 << 20)?;
-    let series = series_from_js(&series, "decimate.series", crate::config::MAX_SAMPLES)?;
-    let (idx, v) = helpers::decimate_minmax(&series, buckets);
-    let idx: Vec<f64> = idx.into_iter().map(|i| i as f64).collect();
-    Ok(obj_with(&[("index", &idx), ("value", &v)])?.into())
 }
 
 /// What `spectra` and `analyze` compute from one config.
@@ -227,19 +215,6 @@ pub fn analyze(
     );
     set(&o, "extreme_samples", &Uint32Array::from(&idx[..]).into())?;
     Ok(o.into())
-}
-
-/// Largest |v| over a series, 0 for an empty one; a NaN sample makes it NaN (as JS `Math.max`),
-/// never hidden.
-fn peak_abs(y: &[f64]) -> f64 {
-    let mut p = 0.0_f64;
-    for &v in y {
-        if v.is_nan() {
-            return f64::NAN;
-        }
-        p = p.max(v.abs());
-    }
-    p
 }
 
 /// `Analysis.peaks`: the run's largest |q| per mode and response, and the largest |strain| per
@@ -427,8 +402,6 @@ mod tests {
             assert!(three.iter().any(|&i| q[i as usize] == mx));
         }
         assert!(extreme_samples(&[]).is_empty());
-        assert_eq!(peak_abs(&[1.0, -3.0, 2.0]), 3.0);
-        assert!(peak_abs(&[1.0, f64::NAN]).is_nan());
     }
 }
 

@@ -59,38 +59,6 @@ pub fn check_series(field: &str, x: &[f64]) -> Result<()> {
     Ok(())
 }
 
-/// Min/max decimation for plotting: splits `x` into `buckets` equal index ranges and keeps, in
-/// time order, the minimum and the maximum of each (so peaks survive). Returns the kept
-/// indices and values; a series no longer than `2 × buckets` is returned whole.
-pub fn decimate_minmax(x: &[f64], buckets: usize) -> (Vec<usize>, Vec<f64>) {
-    let n = x.len();
-    if buckets == 0 || n <= 2 * buckets {
-        return ((0..n).collect(), x.to_vec());
-    }
-    let mut idx = Vec::with_capacity(2 * buckets);
-    for b in 0..buckets {
-        let lo = b * n / buckets;
-        let hi = ((b + 1) * n / buckets).max(lo + 1);
-        let (mut imin, mut imax) = (lo, lo);
-        for i in lo..hi {
-            if x[i] < x[imin] {
-                imin = i;
-            }
-            if x[i] > x[imax] {
-                imax = i;
-            }
-        }
-        if imin == imax {
-            idx.push(imin);
-        } else {
-            idx.push(imin.min(imax));
-            idx.push(imin.max(imax));
-        }
-    }
-    let vals = idx.iter().map(|&i| x[i]).collect();
-    (idx, vals)
-}
-
 /// Largest m ≤ n of the form 2^a·3^b·5^c (0 for n = 0): an FFT length without large prime
 /// factors.
 pub fn smooth_len(n: usize) -> usize {
@@ -247,20 +215,6 @@ mod tests {
         let e = check_series("x", &[1.0, f64::NAN]).unwrap_err().to_string();
         assert!(e.contains("`x[1]`"), "{e}");
         assert!(check_series("x", &[]).is_err());
-    }
-
-    #[test]
-    fn decimation_keeps_extremes_in_order() {
-        let x: Vec<f64> = (0..1000).map(|i| ((i as f64) * 0.37).sin()).collect();
-        let (idx, v) = decimate_minmax(&x, 10);
-        assert!(idx.len() <= 20 && idx.len() >= 10);
-        assert!(idx.windows(2).all(|w| w[0] < w[1]));
-        let mx = x.iter().cloned().fold(f64::MIN, f64::max);
-        let mn = x.iter().cloned().fold(f64::MAX, f64::min);
-        assert!(v.contains(&mx) && v.contains(&mn));
-        let (idx, v) = decimate_minmax(&x[..15], 10);
-        assert_eq!(idx.len(), 15);
-        assert_eq!(v, x[..15]);
     }
 
     #[test]

@@ -10,7 +10,7 @@
 //! * [`marshal`]: JS values in and out (the seam itself);
 //! * [`sim`]: configs, limits, the lab's `parameters` and `applyOverrides`, `simulate`,
 //!   `forceSeries`, `anglesAt`, `kinematicsFromCsv`, `reproduce`;
-//! * [`analysis`]: `psd`, `spectra`, `analyze`, `envelope`, `decimateMinMax`, `sweep`, `icMap`,
+//! * [`analysis`]: `psd`, `spectra`, `analyze`, `envelope`, `sweep`, `icMap`,
 //!   `resonanceMap`;
 //! * [`fe`]: `feModes`, the shell finite elements;
 //! * [`wing`]: the lab's own wing: `planforms`, `parsePlanform`, `checkPlanform`,
@@ -18,7 +18,7 @@
 //!   `modesFromJson`;
 //! * `view` (wasm32 with feature `render`): `WingView`, the 3-D view of the flexing wing;
 //! * [`types`]: the TypeScript declarations of all of the above;
-//! * [`helpers`]: plain-Rust helpers (web caps, decimation, ...) tested natively.
+//! * [`helpers`]: plain-Rust helpers (web caps, series checks, the fast envelope, ...) tested natively.
 //!
 //! Every entry point returns `Result<_, JsError>`; the error message is the core's
 //! [`WingbeatError`](crate::WingbeatError) text, which names the field and the allowed range.
@@ -43,9 +43,7 @@ pub mod types;
 pub mod view;
 pub mod wing;
 
-pub use analysis::{
-    analyze, decimate_min_max, envelope, ic_map, psd, resonance_map, spectra, sweep,
-};
+pub use analysis::{analyze, envelope, ic_map, psd, resonance_map, spectra, sweep};
 pub use fe::fe_modes;
 pub use sim::{
     angles_at, apply_overrides, default_config, force_series, kinematics_from_csv, limits,

@@ -412,12 +412,6 @@ pub fn defaults_limits_reproduce() {
     let l = wasm::limits().unwrap();
     assert_eq!(num(&l, "web_max_sample_values"), 2_000_000.0);
     assert!(wasm::validate_config(JsValue::UNDEFINED).is_ok());
-    let x = [1.0, 5.0, 2.0, 0.0, 3.0, 3.0];
-    let d = wasm::decimate_min_max(fa(&x), JsValue::from(3.0)).unwrap();
-    assert_eq!(f64s(&d, "value"), x.to_vec());
-    let d = wasm::decimate_min_max(fa(&x), JsValue::from(1.0)).unwrap();
-    assert_eq!(f64s(&d, "value"), vec![5.0, 0.0]);
-    assert_eq!(f64s(&d, "index"), vec![1.0, 3.0]);
 }
 
 pub fn reproduce_matches_core() {
