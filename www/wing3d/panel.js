@@ -1,39 +1,23 @@
 // @ts-check
-// 3-D wing panel: the shell-FE wing flapping (roll α, pitch β, yaw γ about the root), bending
-// and twisting as the simulated q_k(t) say, coloured by strain — drawn by the wasm WingView
-// (WebGPU where the browser has it, WebGL2 otherwise; a plain explanation where neither works).
-//
-// What makes it show the physics:
-// * the camera fits the whole stroke (every pose of the run stays in frame; www/scene3d.js
-//   mirrors the renderer's camera, so the fit is done here with orbit/zoom only);
-// * one strain colour range per component for the whole run (robust maximum over time), fixed
-//   while playing, so the beat shows as pulsing colour;
-// * speeds "one flap per second" and "one beat in 4 s" besides fixed slow-motion factors;
-// * the largest deflection over the run in mm for the FE wing (the paper table is not SI);
-// * a legend for the stroke plane, the body axis and both frames, each hideable.
-// The instant shown is the store's `t3d`; the angles come with the analysis (no wasm call per
-// frame). Test hooks on the box: data-state (loading | ready | unavailable), data-backend,
-// data-frames, data-coverage (estimated wing share of the canvas at the fitted view).
-//
-// This file wires the panel's parts (www/wing3d/): panel-dom.js builds the elements,
-// camera.js keeps the renderer's camera and its mirror and binds drag / wheel / keys,
-// frame-loop.js plays, picking.js maps pointer ↔ wing, overlays.js moves the labels, the
-// strain point's ring and the sensors, canvas.js sizes the canvas, legend.js draws the colour bar and its words, fields.js
-// uploads colours 5 and 6, texts.js words the status lines.
+// The 3-D wing panel's state and the wiring of its parts (views/wing3d.js mounts it; what the
+// panel shows and why is said there). panel-dom.js builds the elements, camera.js keeps the
+// renderer's camera and its mirror and binds drag / wheel / keys, frame-loop.js plays,
+// marks.js places the labels, the strain point's ring and the sensors on the drawn wing (with
+// picking.js and overlays.js), canvas.js sizes the canvas, legend.js draws the colour bar and its
+// words, fields.js uploads colours 5 and 6, texts.js words the status lines.
 import { el, rich, isTouch } from '../dom.js';
 import { fmt, errorText } from '../format.js';
 import * as S from '../scene3d.js';
-import { buildPanel, makeCanvas } from '../wing3d/panel-dom.js';
-import { canvasSize, prepareContext } from '../wing3d/canvas.js';
-import { createCameraRig, bindCamera, strokePoses, fitLift, refitKey } from '../wing3d/camera.js';
-import { createFrameLoop, PUSH_MS } from '../wing3d/frame-loop.js';
-import * as P from '../wing3d/picking.js';
-import { createOverlays, labelPlaces } from '../wing3d/overlays.js';
-import { createStrainLegend } from '../wing3d/legend.js';
-import { createFields, FIELD_COLOUR, SENSE_COLOUR } from '../wing3d/fields.js';
-import * as T from '../wing3d/texts.js';
-
-export const title = '3-D wing';
+import { buildPanel, makeCanvas } from './panel-dom.js';
+import { canvasSize, prepareContext } from './canvas.js';
+import { createCameraRig, bindCamera, strokePoses, fitLift, refitKey } from './camera.js';
+import { createFrameLoop, PUSH_MS } from './frame-loop.js';
+import * as P from './picking.js';
+import { createOverlays } from './overlays.js';
+import { createWingMarks } from './marks.js';
+import { createStrainLegend } from './legend.js';
+import { createFields, FIELD_COLOUR, SENSE_COLOUR } from './fields.js';
+import * as T from './texts.js';
 
 /**
  * States of the run (evenly spaced samples plus each mode's extremes) over which the colour
@@ -50,13 +34,8 @@ function setText(/** @type {HTMLElement} */ e, /** @type {string} */ t) {
   if (e.textContent !== t) e.textContent = t;
 }
 
-/** @param {import('../lab.js').ViewContext} ctx */
-export function mount(ctx) {
-  return new Wing3dPanel(ctx).api();
-}
-
-/** One mounted 3-D panel: its state, and the wiring of its parts. */
-class Wing3dPanel {
+/** One mounted 3-D panel (views/wing3d.js mounts it): its state, and the wiring of its parts. */
+export class Wing3dPanel {
   /** @param {import('../lab.js').ViewContext} ctx */
   constructor(ctx) {
     const { store, section, engine, uid } = ctx;
@@ -98,7 +77,6 @@ class Wing3dPanel {
      */
     this.cssW = 0;
     this.cssH = 0;
-    this.planformHit = P.planformHits();
     this.overlays = createOverlays();
     this.dom = buildPanel(uid, this.touch, this.overlays.overlay, {
       play: () => store.set({ playing: !store.get().playing }),
@@ -133,6 +111,18 @@ class Wing3dPanel {
       colour: () => this.colour(),
       draw: () => this.draw(),
     });
+    this.marks = createWingMarks({
+      store,
+      rig: this.rig,
+      overlays: this.overlays,
+      fields: this.fields,
+      dom: this.dom,
+      fe: () => this.fe,
+      cssSize: () => this.canvasCss(),
+      colour: () => this.colour(),
+      exaggeration: () => this.exaggeration(),
+      tNow: () => this.tNow(),
+    });
     this.drawLegend = createStrainLegend(this.dom.legend, this.dom.legendText);
     this.loop = createFrameLoop({
       box: this.dom.box,
@@ -166,7 +156,7 @@ class Wing3dPanel {
         }
       }),
       store.subscribe(['strain_point'], () => {
-        if (this.view) this.placePoint();
+        if (this.view) this.marks.placePoint();
       }),
       // (a time set from outside while playing — the time slider, a click on the responses plot —
       // becomes the loop's time, so a pause then keeps it)
@@ -186,7 +176,7 @@ class Wing3dPanel {
       view: () => this.view,
       moved: () => this.draw(),
       click: (x, y) => {
-        this.pickAt(x, y);
+        this.marks.pickAt(x, y);
       },
       togglePlay: () => this.store.set({ playing: !this.store.get().playing }),
     });
@@ -484,44 +474,11 @@ class Wing3dPanel {
     }
     this.frames += 1;
     this.dom.box.dataset.frames = String(this.frames);
-    this.placeOverlays(ang, q, tNow, texts);
+    this.marks.placeOverlays(ang, q, tNow, texts);
     if (!lg) return;
     this.lastText = now;
     this.dom.box.dataset.modes = String(q.length);
     this.writeTexts(lg, ang, ex, tNow, modes.length);
-  }
-
-  /** The labels, the strain point's ring and the sensors for the frame just drawn. */
-  placeOverlays(
-    /** @type {number[]} */ ang,
-    /** @type {ArrayLike<number>} */ q,
-    /** @type {number} */ t,
-    /** @type {boolean} */ regroup,
-  ) {
-    const { rig, fe, overlays, dom } = this;
-    if (rig.cam && fe) {
-      const [w, h] = this.canvasCss();
-      const show = {
-        fixed: dom.showAxes.checked,
-        wing: dom.showAxes.checked,
-        body: dom.showBody.checked,
-        plane: dom.showPlane.checked,
-      };
-      overlays.placeLabels(labelPlaces(rig.cam, S.spanOf(fe.nodes), ang, w, h, show));
-    }
-    this.placePoint(t);
-    const m = this.colour() === SENSE_COLOUR && rig.cam ? this.fields.senseUp : null;
-    if (!m || !fe || !m.sensors.length) {
-      overlays.placeSensors(null, 0, 0, regroup);
-      return;
-    }
-    const [w, h] = this.canvasCss();
-    overlays.placeSensors(
-      P.sensorPoints(fe, m.sensors, ang, q, this.exaggeration(), /** @type {S.Camera} */ (rig.cam), w, h),
-      w,
-      h,
-      regroup,
-    );
   }
 
   /** The status, deflection, legend, note and summary texts of a frame (WingView.set_frame's legend `lg`). */
@@ -555,56 +512,6 @@ class Wing3dPanel {
       dom.note.replaceChildren(rich(noteText));
     }
     setText(dom.summary, T.summaryText(t, ang, d, isFe, this.runDeflection, dom.legendText.textContent || ''));
-  }
-
-  /** Places the strain-point ring over the drawn wing (hidden for the paper mode set). */
-  placePoint(/** @type {number | undefined} */ t = undefined) {
-    const s = this.store.get();
-    const fe = this.fe;
-    const p = s.strain_point || (fe && fe.strain_point_mm);
-    if (!fe || !p || s.modes !== 'fe' || !this.rig.cam) {
-      this.overlays.hidePoint();
-      return;
-    }
-    const [cw, ch] = this.canvasCss();
-    this.overlays.placePoint(this.drawnPoint(p[0], p[1], t), cw, ch, p);
-  }
-
-  /** The drawn wing's nodes on screen at the instant shown (CSS pixels), for picking and the point mark. */
-  screenNodes(/** @type {number} */ t = this.tNow()) {
-    const [w, h] = this.canvasCss();
-    return P.screenNodes(this.fe, this.store.get().result, this.rig.cam, t, this.exaggeration(), w, h);
-  }
-
-  /**
-   * A click on the drawn wing at (x, y) CSS pixels: the front-most triangle there gives the
-   * planform point (undeformed x, y), which becomes the strain point (mm). FE wings only.
-   */
-  pickAt(/** @type {number} */ x, /** @type {number} */ y) {
-    if (!this.fe || this.store.get().modes !== 'fe') {
-      this.dom.status.textContent =
-        'The strain point can be chosen on an FE wing only (the paper’s strains exist only at P).';
-      return null;
-    }
-    const sn = this.screenNodes();
-    if (!sn) return null;
-    const mm = P.strainPointAt(this.fe, sn.proj, x, y);
-    if (!mm) return null;
-    this.store.set({ strain_point: mm });
-    return mm;
-  }
-
-  /**
-   * Where the planform point (x, y) mm is drawn now (CSS px in the canvas): its triangle of the
-   * flat planform gives barycentric weights, applied to the drawn (cambered, deflected, rotated,
-   * projected) nodes. Null when the point is off the wing or behind the eye.
-   */
-  drawnPoint(/** @type {number} */ xmm, /** @type {number} */ ymm, /** @type {number | undefined} */ t = undefined) {
-    if (!this.fe) return null;
-    const sn = this.screenNodes(t);
-    if (!sn) return null;
-    const hit = this.planformHit(this.fe, xmm, ymm);
-    return hit ? P.drawnAt(hit, sn.proj) : null;
   }
 
   setPlaying(/** @type {boolean} */ on) {
@@ -663,12 +570,12 @@ class Wing3dPanel {
       get fe() {
         return p.fe;
       },
-      pickAt: (/** @type {number} */ x, /** @type {number} */ y) => p.pickAt(x, y),
+      pickAt: (/** @type {number} */ x, /** @type {number} */ y) => p.marks.pickAt(x, y),
       /** Where the strain point is drawn (CSS px in the canvas), or null when hidden. */
       pointOnScreen: () => p.overlays.pointOnScreen(),
       /** CSS px of the planform point (x, y) mm on the drawn wing at the current instant (tests). */
       screenOf: (/** @type {number} */ x, /** @type {number} */ y, /** @type {number | undefined} */ t = undefined) =>
-        p.drawnPoint(x, y, t),
+        p.marks.drawnPoint(x, y, t),
       setTime(/** @type {number} */ t) {
         const r = p.store.get().result;
         const dur = r ? r.analysis.sim.t[r.analysis.sim.t.length - 1] : 2;
