@@ -2,8 +2,9 @@
 // The Wing panel's form, pure (views/wing.js and its pieces): how each wing parameter is shown
 // (unit, scale, step, label), reading a typed value back with its range check, the material
 // preset that matches the parameters, and the outline edits (the drawing's box, a point added
-// halfway to the next one, the label of an edited outline). No DOM; unit-tested in
-// tests/js/wingform.test.mjs.
+// halfway to the next one, the label of an edited outline) and the store patch that makes the
+// draft the wing in use. No DOM; unit-tested in tests/js/wingform.test.mjs.
+import { WING } from './state.js';
 
 /** The parameters a material preset sets. */
 export const MATERIAL_KEYS = ['e_pa', 'rho', 'nu', 'thickness_um'];
@@ -109,3 +110,29 @@ export function insertMidpoint(pts, i) {
  */
 export const editedLabel = (label) =>
   label && !/^edited/.test(label) ? `edited ${label}`.slice(0, 80) : label || 'edited outline';
+
+/**
+ * The store patch that makes the draft the wing in use (the FE mode set): the wing parameters
+ * from `p`, the outline, the planform text kept only for an outline from a link, and for an own
+ * outline (`own`) the wing record with its checked `input` and a copy of the points.
+ * @param {{ outline: string, planform: string, source: string, label: string, points: number[][] | null }} draft
+ * @param {Record<string, any>} p the parameters as computed (store and draft)
+ * @param {any} own truthy for an own outline
+ * @param {any} input the core's checked wing input
+ * @returns {Record<string, any>}
+ */
+export function wingPatch(draft, p, own, input) {
+  /** @type {Record<string, any>} */
+  const patch = { modes: 'fe', outline: draft.outline, planform: draft.source === 'url' ? draft.planform : '' };
+  for (const w of WING) patch[w.key] = p[w.key];
+  patch.wing = own
+    ? {
+        input,
+        source: draft.source,
+        label: draft.label,
+        outline: 'own',
+        points: draft.points && draft.points.map((q) => [q[0], q[1]]),
+      }
+    : null;
+  return patch;
+}

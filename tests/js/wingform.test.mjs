@@ -11,6 +11,7 @@ import {
   outlineBox,
   insertMidpoint,
   editedLabel,
+  wingPatch,
 } from '../../www/wingform.js';
 import { looksLikeModes, feFromModesDocument } from '../../www/modesdoc.js';
 
@@ -138,4 +139,27 @@ test('a read modes document becomes the lab’s FE wing: typed arrays, per-mode 
   // no strains: no point; no mesh: refused
   assert.equal(feFromModesDocument({ ...r, modes: [{ freq_hz: 20 }] }, '').strain_point_mm, undefined);
   assert.throws(() => feFromModesDocument({ modes: r.modes, fe: null }, ''), /no FE mesh/);
+});
+
+test('the patch that makes the draft the wing in use: FE modes, its parameters, an own outline with a copy of its points', () => {
+  const p = Object.fromEntries(WING.map((w, k) => [w.key, k + 0.5]));
+  const builtin = { outline: 'bee', planform: 'x', source: 'builtin', label: 'Bee', points: [[1, 2]] };
+  const a = wingPatch(builtin, { ...p, flap_hz: 99 }, false, { any: 1 });
+  assert.equal(a.modes, 'fe');
+  assert.equal(a.outline, 'bee');
+  assert.equal(a.planform, '', 'the planform text is kept only for an outline from a link');
+  assert.equal(a.wing, null, 'a built-in outline needs no wing record');
+  for (const w of WING) assert.equal(a[w.key], p[w.key], w.key);
+  assert.ok(!('flap_hz' in a), 'only the wing parameters');
+  const points = [
+    [0, 0],
+    [30, -5],
+  ];
+  const link = { outline: 'manduca', planform: '0,0;30,-5', source: 'url', label: 'from a link', points };
+  const input = { planform: 'checked' };
+  const b = wingPatch(link, p, true, input);
+  assert.equal(b.planform, '0,0;30,-5');
+  assert.deepEqual(b.wing, { input, source: 'url', label: 'from a link', outline: 'own', points });
+  assert.notEqual(b.wing.points, points, 'a copy: later edits of the draft leave the wing in use alone');
+  assert.notEqual(b.wing.points[1], points[1]);
 });

@@ -7,16 +7,17 @@
 // The same file input reads a `wingbeat modes` JSON document (import); "Export modes JSON"
 // writes the wing in use in that format (for `wingbeat simulate --modes`).
 // Reads and writes the store; calls ctx.engine for the wasm helpers (never wasm itself).
-// This file holds the draft, the outline's source, the actions and the wing in use; its pieces:
-// the outline editor (wing-outline.js), the parameters (wing-params.js), the pure form rules
-// (www/wingform.js) and modes documents (www/modesdoc.js).
+// This file holds the draft, the outline's source and the wing in use; its pieces: the outline
+// editor (wing-outline.js), the parameters (wing-params.js), the actions (wing-actions.js:
+// compute, cancel, import, export, reset), the pure form rules (www/wingform.js) and modes
+// documents (www/modesdoc.js).
 import { WING, customWing } from '../state.js';
 import { el } from '../dom.js';
 import { fmt, errorText } from '../format.js';
-import { download } from '../export.js';
-import { looksLikeModes, modesDocument, feFromModesDocument, CHOSEN_POINT } from '../modesdoc.js';
+import { looksLikeModes } from '../modesdoc.js';
 import { outlineEditor } from './wing-outline.js';
 import { wingParams } from './wing-params.js';
+import { wingActions } from './wing-actions.js';
 
 export const title = 'Wing';
 
@@ -108,7 +109,7 @@ export function mount(ctx) {
     try {
       if (f.size > 20e6) throw new Error(`${f.name} is larger than 20 MB`);
       const text = await f.text();
-      if (looksLikeModes(text)) importModes(text, f.name);
+      if (looksLikeModes(text)) actions.importModes(text, f.name);
       else {
         const format = /\.json$/i.test(f.name) || text.trimStart().startsWith('[') ? 'json' : 'csv';
         const pts = engine.parsePlanform(text, format);
@@ -128,149 +129,18 @@ export function mount(ctx) {
     fileIn.value = '';
   });
 
-  // ---------- compute, cancel, export ----------
-  const computeBtn = el('button', {
-    type: 'button',
-    class: 'wl-primary',
-    text: 'Compute modes',
-    'data-wing': 'compute',
+  // ---------- compute, cancel, import, export, reset ----------
+  const actions = wingActions(ctx, form, {
+    say,
+    reset: () => {
+      fromStore();
+      fillOutlines();
+      params.sync();
+      drawOutline();
+    },
   });
-  const cancelBtn = el('button', { type: 'button', text: 'Cancel', 'data-wing': 'cancel', hidden: true });
-  const progress = el('progress', { 'aria-label': 'Computing the wing’s modes', hidden: true });
-  const exportBtn = el('button', {
-    type: 'button',
-    text: 'Export modes JSON',
-    'data-wing': 'export',
-    title: 'The wing in use as a `wingbeat modes` document (for wingbeat simulate --modes)',
-  });
-  const resetBtn = el('button', { type: 'button', text: 'Default wing', 'data-wing': 'reset' });
+
   const inUse = el('div', { class: 'wl-wing-inuse', 'data-wing': 'in-use' });
-  /** @type {{ id: number, t0: number, timer: ReturnType<typeof setInterval> } | null} */
-  let job = null;
-  const busy = (on) => {
-    progress.hidden = !on;
-    cancelBtn.hidden = !on;
-    computeBtn.disabled = on;
-  };
-  const compute = () => {
-    if (job) return;
-    /** @type {any} */
-    const p = { ...store.get(), ...draft.params, outline: draft.outline, planform: draft.planform };
-    const own = draft.source !== 'builtin' && draft.points;
-    let input;
-    try {
-      input = engine.wingInput(p, own ? draft.points : draft.outline !== 'manduca' ? draft.points : null);
-    } catch (e) {
-      say(`The wing is not valid: ${errorText(e)}`, true);
-      return;
-    }
-    const t0 = performance.now();
-    const j = engine.computeWing(input, () => {});
-    if (!j.id) return apply(p, own, input);
-    busy(true);
-    const timer = setInterval(
-      () =>
-        say(
-          `Computing ${p.n_modes} modes in the worker… ${((performance.now() - t0) / 1000).toFixed(1)} s (the wing in use stays until this one is ready)`,
-        ),
-      250,
-    );
-    job = { id: j.id, t0, timer };
-    say(`Computing ${p.n_modes} modes in the worker…`);
-    ctx.emit('wl-wing', { state: 'started' });
-    j.promise.then(
-      (r) => {
-        clearInterval(timer);
-        job = null;
-        busy(false);
-        apply(p, own, input);
-        say(
-          `Computed in ${((performance.now() - t0) / 1000).toFixed(1)} s: ${r.n_nodes} nodes, element size ${fmt(r.mesh_size_mm, 3)} mm.`,
-        );
-        ctx.emit('wl-wing', { state: 'done' });
-      },
-      (e) => {
-        clearInterval(timer);
-        job = null;
-        busy(false);
-        const msg = errorText(e);
-        if (msg === 'cancelled') say('Cancelled. The wing in use is unchanged.');
-        else say(`The wing could not be computed: ${msg}. The wing in use is unchanged.`, true);
-        ctx.emit('wl-wing', { state: msg === 'cancelled' ? 'cancelled' : 'failed', error: msg });
-      },
-    );
-  };
-  /** Makes the draft the wing in use (the store follows; the engine has the result cached). */
-  const apply = (p, own, input) => {
-    /** @type {Record<string, any>} */
-    const patch = { modes: 'fe', outline: draft.outline, planform: draft.source === 'url' ? draft.planform : '' };
-    for (const w of WING) patch[w.key] = p[w.key];
-    patch.wing = own
-      ? {
-          input,
-          source: draft.source,
-          label: draft.label,
-          outline: 'own',
-          points: draft.points && draft.points.map((q) => [q[0], q[1]]),
-        }
-      : null;
-    if (own) patch.outline = draft.outline;
-    form.dirty = false;
-    store.set(patch);
-  };
-  computeBtn.addEventListener('click', compute);
-  cancelBtn.addEventListener('click', () => {
-    if (job) engine.cancel(job.id);
-  });
-  exportBtn.addEventListener('click', () => {
-    const s = store.get();
-    const fe = s.fe;
-    if (!fe || s.modes !== 'fe')
-      return say('No FE wing in use yet: choose the FE wing mode set or compute a wing first.', true);
-    const raw = /** @type {any} */ (fe).modes_json;
-    if (typeof raw !== 'string')
-      return say('This wasm build does not produce the modes document: rebuild www/pkg.', true);
-    // A chosen strain point goes with the modes, first (the one simulate --modes reports).
-    let json;
-    try {
-      json = modesDocument(raw, s.strain_point ? engine.modalStrainAt(s.strain_point) : null);
-    } catch (e) {
-      return say(`Could not export the modes: ${errorText(e)}`, true);
-    }
-    download('wingbeat-modes.json', new Blob([json], { type: 'application/json' }));
-    const sp = s.strain_point;
-    say(
-      `Exported ${fe.modes.length} modes as wingbeat-modes.json${sp ? `, with the chosen strain point ${CHOSEN_POINT} = (${fmt(sp[0], 4)}, ${fmt(sp[1], 4)}) mm first` : ''} (use it with: wingbeat simulate --modes wingbeat-modes.json).`,
-    );
-    ctx.emit('wl-wing', { state: 'exported' });
-  });
-  resetBtn.addEventListener('click', () => {
-    /** @type {Record<string, any>} */
-    const patch = { wing: null, outline: 'manduca', planform: '' };
-    for (const w of WING) patch[w.key] = w.def;
-    store.set(patch);
-    fromStore();
-    fillOutlines();
-    params.sync();
-    drawOutline();
-  });
-
-  /** A `wingbeat modes` document → the wing in use (mesh and modes as computed by the CLI). */
-  const importModes = (text, name) => {
-    const r = engine.modesFromJson(text);
-    const fe = feFromModesDocument(r, text);
-    engine.useFe(fe, `import:${name}:${text.length}`);
-    store.set({
-      modes: 'fe',
-      wing: { input: null, source: 'import', label: name.slice(0, 80), outline: 'file', points: null },
-      fe,
-      mode: '1',
-      strain_point: null,
-    });
-    say(`Imported ${r.modes.length} modes from ${name}.`);
-    ctx.emit('wl-wing', { state: 'imported' });
-  };
-
   const describeInUse = (s) => {
     inUse.replaceChildren();
     if (s.modes !== 'fe') {
@@ -333,14 +203,14 @@ export function mount(ctx) {
     editor.pointsRow,
     editor.checkEl,
     params.box,
-    el('div', { class: 'wl-wing-actions' }, computeBtn, cancelBtn, progress, exportBtn, resetBtn),
+    actions.row,
     statusEl,
     inUse,
   );
 
   const unsub = [
     store.subscribe([...WING.map((w) => w.key), 'outline', 'planform', 'wing'], () => {
-      if (form.dirty || job) return;
+      if (form.dirty || actions.busy) return;
       fromStore();
       fillOutlines();
       if (draft.source !== 'builtin') outlineSel.value = 'own';
@@ -373,13 +243,13 @@ export function mount(ctx) {
     else params.fillPresets();
   }, 100);
   return {
-    compute,
+    compute: actions.compute,
     get draft() {
       return draft;
     },
     destroy() {
       clearInterval(whenReady);
-      if (job) clearInterval(job.timer);
+      actions.destroy();
       for (const f of unsub) f();
     },
   };
