@@ -2,7 +2,7 @@
 // The 3-D panel's elements, built once: the box with the canvas and its overlay, the summary and
 // status lines, and the controls (play, speed, time, exaggeration, colour, colour bar, which
 // scene lines to show, "Fit view", the scene legend, the note and the deflection sentence).
-// Handlers come from views/wing3d.js; nothing here holds state.
+// Handlers come from wing3d/panel.js; nothing here holds state.
 import { el } from '../dom.js';
 import { SPEEDS } from './texts.js';
 import { sceneLegendList } from './legend.js';

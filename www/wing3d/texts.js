@@ -1,7 +1,7 @@
 // @ts-check
 // The 3-D panel's words (pure, no DOM): the playback speed, the time line, the status line, the
-// deflection sentence, the note under the options and the screen-reader summary. views/wing3d.js
-// puts them on the page; tests/js/wing3d_texts.test.mjs checks them.
+// deflection sentence, the note under the options and the screen-reader summary. wing3d/panel.js
+// puts them on the page; tests/js/wing3d_fields.test.mjs checks them.
 import { fmt } from '../format.js';
 import { beatInfo } from '../beat.js';
 import { spanOf } from '../scene3d.js';
