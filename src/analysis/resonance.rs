@@ -92,37 +92,10 @@ pub struct ResonanceMap {
 /// the run budget of `simulate` uses as well).
 pub use crate::floquet::analysis_cost;
 
-fn grid(from: f64, to: f64, n: usize) -> Vec<f64> {
-    (0..n)
-        .map(|i| from + (to - from) * i as f64 / (n - 1) as f64)
-        .collect()
-}
-
-fn with_context(e: WingbeatError, at: &str) -> WingbeatError {
-    match e {
-        WingbeatError::InvalidInput {
-            field,
-            value,
-            allowed,
-        } => WingbeatError::InvalidInput {
-            field: format!("{field} ({at})"),
-            value,
-            allowed,
-        },
-        other => other,
-    }
-}
-
 /// Checks the options and the caps; returns the flap-frequency grid and the α0 rows.
 fn plan(cfg: &SimConfig, opts: &ResonanceOptions) -> Result<(Vec<f64>, Option<Vec<f64>>)> {
     cfg.validate()?;
-    if opts.points < 2 || opts.points > MAX_POINTS {
-        return Err(WingbeatError::invalid(
-            "resonance.points",
-            opts.points,
-            format!("an integer in [2, {MAX_POINTS}]"),
-        ));
-    }
+    sweep::check_points("resonance.points", opts.points)?;
     check_positive("resonance.from_hz", opts.from_hz, MAX_FLAP_HZ, "Hz")?;
     check_positive("resonance.to_hz", opts.to_hz, MAX_FLAP_HZ, "Hz")?;
     if let Some(a) = &opts.alpha0_values {
@@ -145,7 +118,7 @@ fn plan(cfg: &SimConfig, opts: &ResonanceOptions) -> Result<(Vec<f64>, Option<Ve
         // Only the first harmonic of a Fourier α can be set.
         sweep::apply(cfg, SweepParam::Alpha0, a[0])?;
     }
-    let flap = grid(opts.from_hz, opts.to_hz, opts.points);
+    let flap = sweep::grid(opts.from_hz, opts.to_hz, opts.points);
     let rows = opts.alpha0_values.as_ref().map_or(1, Vec::len) as f64;
     // The step size does not depend on α0 (only on the harmonics present and f_d), so one row's
     // estimate times the number of rows is the total.
@@ -210,7 +183,9 @@ pub fn resonance_map(
                 Some(a) => format!("resonance point α0 = {a}, f_d = {f} Hz"),
                 None => format!("resonance point f_d = {f} Hz"),
             };
-            c.model().validate().map_err(|e| with_context(e, &at))?;
+            c.model()
+                .validate()
+                .map_err(|e| sweep::in_context(e, &at))?;
             let kin = c.kinematics.compile();
             for (m, out) in c.modes.iter().zip(modes.iter_mut()) {
                 let r: FloquetResult = floquet_for(&kin, m);

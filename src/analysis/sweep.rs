@@ -69,20 +69,48 @@ pub struct SweepOptions {
     pub points: usize,
 }
 
-/// Names the sweep value in an input error.
-fn at_value(e: WingbeatError, v: f64) -> WingbeatError {
+/// Adds where an input error happened to its field, `{field} ({at})` (e.g. `kinematics.gamma
+/// (sweep value 0.3)`); other errors come back unchanged. Sweeps and resonance maps name the
+/// point that failed with it.
+pub fn in_context(e: WingbeatError, at: &str) -> WingbeatError {
     match e {
         WingbeatError::InvalidInput {
             field,
             value,
             allowed,
         } => WingbeatError::InvalidInput {
-            field: format!("{field} (sweep value {})", crate::error::num(v)),
+            field: format!("{field} ({at})"),
             value,
             allowed,
         },
         other => other,
     }
+}
+
+/// Names the sweep value in an input error.
+fn at_value(e: WingbeatError, v: f64) -> WingbeatError {
+    in_context(e, &format!("sweep value {}", crate::error::num(v)))
+}
+
+/// `n` evenly spaced values from `from` to `to`, both included (n ≥ 2): value i is
+/// from + (to − from)·i/(n − 1). The points of a sweep and the flap frequencies of a resonance
+/// map.
+pub fn grid(from: f64, to: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| from + (to - from) * i as f64 / (n - 1) as f64)
+        .collect()
+}
+
+/// Refuses a number of points outside [2, [`MAX_POINTS`]], naming `field`.
+pub fn check_points(field: &str, n: usize) -> Result<()> {
+    if !(2..=MAX_POINTS).contains(&n) {
+        return Err(WingbeatError::invalid(
+            field,
+            n,
+            format!("an integer in [2, {MAX_POINTS}]"),
+        ));
+    }
+    Ok(())
 }
 
 /// Most sweep points.
@@ -141,20 +169,14 @@ pub fn sweep(
     opts: &SweepOptions,
     mut progress: impl FnMut(usize, usize),
 ) -> Result<Sweep> {
-    if opts.points < 2 || opts.points > MAX_POINTS {
-        return Err(WingbeatError::invalid(
-            "sweep.points",
-            opts.points,
-            format!("an integer in [2, {MAX_POINTS}]"),
-        ));
-    }
+    check_points("sweep.points", opts.points)?;
     crate::error::check_range("sweep.from", opts.from, -1e6, 1e6, "")?;
     crate::error::check_range("sweep.to", opts.to, -1e6, 1e6, "")?;
     // The whole sweep's cost, before any work: every point's config is built (and checked)
     // first, and the sum of their run costs must fit.
+    let values = grid(opts.from, opts.to, opts.points);
     let mut work = 0.0;
-    for i in 0..opts.points {
-        let v = opts.from + (opts.to - opts.from) * i as f64 / (opts.points - 1) as f64;
+    for (i, &v) in values.iter().enumerate() {
         let c = apply(cfg, opts.param, v)?;
         c.validate().map_err(|e| at_value(e, v))?;
         work += crate::simulate::run_cost(&c).0;
@@ -179,8 +201,7 @@ pub fn sweep(
         }
     }
     let mut points = Vec::with_capacity(opts.points);
-    for i in 0..opts.points {
-        let v = opts.from + (opts.to - opts.from) * i as f64 / (opts.points - 1) as f64;
+    for (i, &v) in values.iter().enumerate() {
         let c = apply(cfg, opts.param, v)?;
         let r = simulate(&c).map_err(|e| at_value(e, v))?;
         let modes = r
