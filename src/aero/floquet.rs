@@ -86,6 +86,57 @@ fn eigvec(m: &DMatrix<C64>, lam: C64) -> DVector<C64> {
     v
 }
 
+/// Greedy assignment of Floquet candidates to modes: the largest share first, each candidate
+/// and each mode used once (`shares[c][k]`: candidate c's share in mode k). `None` for a mode
+/// left without a candidate.
+fn assign_by_share(shares: &[&[f64]], n: usize) -> Vec<Option<usize>> {
+    let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+    for (ci, share) in shares.iter().enumerate() {
+        for k in 0..n {
+            pairs.push((share[k], ci, k));
+        }
+    }
+    pairs.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut of_mode: Vec<Option<usize>> = vec![None; n];
+    let mut used = vec![false; shares.len()];
+    for (_, ci, k) in pairs {
+        if of_mode[k].is_none() && !used[ci] {
+            of_mode[k] = Some(ci);
+            used[ci] = true;
+        }
+    }
+    of_mode
+}
+
+/// The DFT's twiddle factors e^(−2πi m/nh), m = 0..nh.
+fn twiddles(nh: usize) -> Vec<C64> {
+    (0..nh)
+        .map(|m| {
+            let th = -2.0 * PI * m as f64 / nh as f64;
+            C64::new(th.cos(), th.sin())
+        })
+        .collect()
+}
+
+/// The harmonic h in (−nh/2, nh/2] with the largest DFT magnitude of the periodic samples `y`
+/// (`tw[m]` = e^(−2πi m/nh)); ties within 1e-12 go to the first.
+fn dominant_harmonic(y: &[C64], tw: &[C64]) -> i64 {
+    let nh = tw.len();
+    let half = nh as i64 / 2;
+    let mut best = (0i64, -1.0f64);
+    for h in (-half + 1)..=half {
+        let mut s = C64::new(0.0, 0.0);
+        for (j, yj) in y.iter().enumerate() {
+            s += yj * tw[(h * j as i64).rem_euclid(nh as i64) as usize];
+        }
+        let mag = s.norm();
+        if mag > best.1 * (1.0 + 1e-12) {
+            best = (h, mag);
+        }
+    }
+    best.0
+}
+
 /// Analyses the coupled system `ode` whose full-period monodromy is `mono` (2N × 2N row-major).
 pub fn analyse_coupled(ode: &AirOde<'_>, mono: &[f64], flap_hz: f64) -> Result<CoupledFloquet> {
     let n = ode.n_modes();
@@ -156,46 +207,16 @@ pub fn analyse_coupled(ode: &AirOde<'_>, mono: &[f64], flap_hz: f64) -> Result<C
             share: energy.iter().map(|e| e / tot).collect(),
         });
     }
-    // Greedy assignment of candidates to modes by share.
-    let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
-    for (ci, c) in info.iter().enumerate() {
-        for k in 0..n {
-            pairs.push((c.share[k], ci, k));
-        }
-    }
-    pairs.sort_by(|a, b| b.0.total_cmp(&a.0));
-    let mut of_mode: Vec<Option<usize>> = vec![None; n];
-    let mut used = vec![false; info.len()];
-    for (_, ci, k) in pairs {
-        if of_mode[k].is_none() && !used[ci] {
-            of_mode[k] = Some(ci);
-            used[ci] = true;
-        }
-    }
-    let tw: Vec<C64> = (0..nh)
-        .map(|m| {
-            let th = -2.0 * PI * m as f64 / nh as f64;
-            C64::new(th.cos(), th.sin())
-        })
-        .collect();
+    let shares: Vec<&[f64]> = info.iter().map(|c| c.share.as_slice()).collect();
+    let of_mode = assign_by_share(&shares, n);
+    let tw = twiddles(nh);
     let mut modes = Vec::with_capacity(n);
     for k in 0..n {
         let ci = of_mode[k].unwrap_or(0);
         let c = &info[ci];
-        let half = nh as i64 / 2;
-        let mut best = (0i64, -1.0f64);
-        for h in (-half + 1)..=half {
-            let mut s = C64::new(0.0, 0.0);
-            for (j, yj) in c.y[k].iter().enumerate() {
-                s += yj * tw[(h * j as i64).rem_euclid(nh as i64) as usize];
-            }
-            let mag = s.norm();
-            if mag > best.1 * (1.0 + 1e-12) {
-                best = (h, mag);
-            }
-        }
+        let h_dom = dominant_harmonic(&c.y[k], &tw);
         let mu = c.nu.im;
-        let f_eff = (mu / (2.0 * PI) + best.0 as f64 * fp).abs();
+        let f_eff = (mu / (2.0 * PI) + h_dom as f64 * fp).abs();
         let nb = ((f_eff / flap_hz).round() as u32).max(1);
         let lam_t = (c.nu * t).exp();
         let pair = [lam_t, lam_t.conj()];
@@ -217,7 +238,7 @@ pub fn analyse_coupled(ode: &AirOde<'_>, mono: &[f64], flap_hz: f64) -> Result<C
                 growth_rate_per_s: c.nu.re,
                 homogeneous_period_s: tp,
                 characteristic_freq_hz: (mu / (2.0 * PI)).abs(),
-                dominant_harmonic: best.0,
+                dominant_harmonic: h_dom,
                 effective_freq_hz: f_eff,
                 averaged_freq_hz: f64::NAN,
                 beat_harmonic: nb,

@@ -147,23 +147,7 @@ pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult
         let zeta_a = cbar[k] / (2.0 * ode.mass[k * n + k] * w_air.max(1e-300));
         let decay = f.decay_rate_per_s;
         let decay_time = (decay > 0.0).then(|| 1.0 / decay);
-        let beat = match (decay_time, f.floquet.beat_period_s) {
-            (_, None) => "no beat (the effective frequency sits on a flap harmonic, or the mode is unstable)".to_string(),
-            (Some(tau), Some(tb)) if tau < tb => format!(
-                "no beat: the free vibration decays with a time constant of {} s, shorter than the beat period {} s",
-                crate::error::num(round_sig(tau, 3)),
-                crate::error::num(round_sig(tb, 3))
-            ),
-            (Some(tau), Some(tb)) => format!(
-                "the beat (period {} s) fades with the free vibration, time constant {} s",
-                crate::error::num(round_sig(tb, 3)),
-                crate::error::num(round_sig(tau, 3))
-            ),
-            (None, Some(tb)) => format!(
-                "the beat (period {} s) does not fade (no decay)",
-                crate::error::num(round_sig(tb, 3))
-            ),
-        };
+        let beat = beat_fate(decay_time, f.floquet.beat_period_s);
         modes.push(ModeResult {
             name: mode.name.clone(),
             freq_hz: mode.freq_hz,
@@ -208,6 +192,28 @@ pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult
 }
 
 /// `v` rounded to `sig` significant digits (for messages).
+/// What happens to a mode's beat in air, in words: whether its free vibration (time constant
+/// `decay_time`, s) outlives the beat period (s); `None` periods and times as in [`ModeAir`].
+fn beat_fate(decay_time: Option<f64>, beat_period_s: Option<f64>) -> String {
+    match (decay_time, beat_period_s) {
+        (_, None) => "no beat (the effective frequency sits on a flap harmonic, or the mode is unstable)".to_string(),
+        (Some(tau), Some(tb)) if tau < tb => format!(
+            "no beat: the free vibration decays with a time constant of {} s, shorter than the beat period {} s",
+            crate::error::num(round_sig(tau, 3)),
+            crate::error::num(round_sig(tb, 3))
+        ),
+        (Some(tau), Some(tb)) => format!(
+            "the beat (period {} s) fades with the free vibration, time constant {} s",
+            crate::error::num(round_sig(tb, 3)),
+            crate::error::num(round_sig(tau, 3))
+        ),
+        (None, Some(tb)) => format!(
+            "the beat (period {} s) does not fade (no decay)",
+            crate::error::num(round_sig(tb, 3))
+        ),
+    }
+}
+
 fn round_sig(v: f64, sig: i32) -> f64 {
     if v == 0.0 || !v.is_finite() {
         return v;
