@@ -1,7 +1,7 @@
 //! One run's result and budget, shared by the vacuum path ([`crate::simulate`]) and the air
 //! path ([`crate::aero::simulate`]): the types `simulate` returns ([`SimResult`],
 //! [`ModeResult`], [`Responses`], [`Accuracy`], and in air [`ModeAir`] and [`AirSummary`]),
-//! their assembly from per-mode results ([`assemble`]: strain at the named points, warnings),
+//! their assembly from per-mode results (`assemble`: strain at the named points, warnings),
 //! and the work budget of one run ([`MAX_RUN_WORK`]). Both paths import this module and
 //! neither imports the other's result code, so `simulate` can dispatch to the air path without
 //! a cycle. [`crate::simulate`] re-exports everything here under its old paths.
