@@ -10,12 +10,18 @@
 //!   added mass, the coupled solve and its Floquet analysis;
 //! * [`solve`] — exact-to-rounding period propagation plus two independent time steppers;
 //! * [`floquet`] — monodromy, multipliers, stability, effective frequency and beat period;
-//! * [`simulate`] — the driver: a [`config::SimConfig`] in, responses and summaries out;
+//! * [`simulate`] — the driver: a [`config::SimConfig`] in, responses and summaries out
+//!   ([`run`]: the result types and work budget it shares with the air path);
 //! * [`analysis`] — spectra, contributions, sweeps, initial-condition maps, beats, strain;
 //! * [`fem`] — shell finite elements: modes of any planform with camber (paper §3.1);
 //! * [`reproduce`] — every claim of the paper's §3–4 against what wingbeat computes;
 //! * [`modes_doc`] — reading a `wingbeat modes` document (CLI `--modes` and the lab);
-//! * [`presets`] and [`config`] — the paper's data and the serde types every front end shares.
+//! * [`presets`] and [`config`] — the paper's data and the serde types every front end shares;
+//! * [`ranges`] and [`params`] — every input's accepted range as plain data, and the one
+//!   interpretation of a named value (the lab's sliders, the CLI's flags, the sweeps).
+//!
+//! Which module may use which is fixed by the layer list in ARCHITECTURE.md, checked with the
+//! absence of import cycles by `tests/module_graph.rs`.
 //!
 //! The core is `f64` throughout, single-threaded, and uses no filesystem or web APIs, so it
 //! builds natively and for `wasm32-unknown-unknown` alike.
