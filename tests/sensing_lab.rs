@@ -19,7 +19,7 @@ fn keys<T: Serialize>(v: &T) -> Vec<String> {
     }
 }
 
-/// The value of `name: <number>` in one line of JS text.
+/// The value of `name: <number>` in a piece of JS text.
 fn num_in(line: &str, name: &str) -> f64 {
     let at = line
         .find(&format!("{name}: "))
@@ -37,10 +37,17 @@ fn num_in(line: &str, name: &str) -> f64 {
 fn lab_body_rate_range_is_the_cores() {
     let js = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/www/state.js"))
         .expect("www/state.js");
-    let line = js
-        .lines()
-        .find(|l| l.starts_with("export const BODY_RATE = "))
-        .expect("BODY_RATE in www/state.js");
+    // The whole statement, however the formatter lays it out over lines.
+    let statement = |name: &str| -> String {
+        let at = js
+            .find(&format!("export const {name} = "))
+            .unwrap_or_else(|| panic!("{name} in www/state.js"));
+        let end = js[at..]
+            .find("});")
+            .unwrap_or_else(|| panic!("the end of {name}"));
+        js[at..at + end].to_string()
+    };
+    let line = &statement("BODY_RATE");
     let mean = body_rate_range("mean");
     assert_eq!(num_in(line, "min"), mean.min, "{line}");
     assert_eq!(num_in(line, "max"), mean.max, "{line}");
@@ -49,10 +56,7 @@ fn lab_body_rate_range_is_the_cores() {
     assert!(mean.check("body_rate", def).is_ok());
     // the peak of a constant component is its magnitude: the same bound
     assert_eq!(body_rate_range("peak").max, mean.max);
-    let axis = js
-        .lines()
-        .find(|l| l.starts_with("export const BODY_AXIS = "))
-        .expect("BODY_AXIS in www/state.js");
+    let axis = statement("BODY_AXIS");
     assert!(axis.contains("['x', 'y', 'z']"), "{axis}");
     assert_eq!(BODY_RATE_RANGES.len(), 5);
 }

@@ -20,7 +20,10 @@ const PKG = path.join(ROOT, 'www', 'pkg');
 async function loadReal() {
   const glue = path.join(PKG, 'wingbeat.js');
   const bin = path.join(PKG, 'wingbeat_bg.wasm');
-  assert.ok(fs.existsSync(glue) && fs.existsSync(bin), 'www/pkg is missing: run `bash scripts/build-web.sh www` first (npm test does)');
+  assert.ok(
+    fs.existsSync(glue) && fs.existsSync(bin),
+    'www/pkg is missing: run `bash scripts/build-web.sh www` first (npm test does)',
+  );
   const m = await import(new URL(`file://${glue}`).href);
   m.initSync({ module: fs.readFileSync(bin) });
   return m;
@@ -38,7 +41,11 @@ const plainSym = (s) => s.replace(/_\{([^}]*)\}/g, '_$1').replace(/_([^A-Za-z])/
 test('the slider table agrees with the core’s parameter table, field by field', async () => {
   const wb = await wbPromise;
   const core = wb.parameters();
-  assert.deepEqual(core.map((p) => p.key), NUMERIC.map((p) => p.key), 'same keys, same order');
+  assert.deepEqual(
+    core.map((p) => p.key),
+    NUMERIC.map((p) => p.key),
+    'same keys, same order',
+  );
   for (const p of NUMERIC) {
     const c = core.find((q) => q.key === p.key);
     assert.equal(p.min, c.min, `${p.key}.min`);
@@ -53,7 +60,12 @@ test('the slider table agrees with the core’s parameter table, field by field'
 
 test('the URL defaults, applied by the core, are exactly the paper case at the lab’s sample rate', async () => {
   const wb = await wbPromise;
-  const e = createEngine({ load: async () => wb, createWorker: () => { throw new Error('no worker in this test'); } });
+  const e = createEngine({
+    load: async () => wb,
+    createWorker: () => {
+      throw new Error('no worker in this test');
+    },
+  });
   await e.load();
   const cfg = e.config(defaults());
   const paper = wb.defaultConfig();
@@ -63,10 +75,20 @@ test('the URL defaults, applied by the core, are exactly the paper case at the l
 
 test('the engine’s config is built by the core: γ0 and phases on the first harmonic, ζ on every mode', async () => {
   const wb = await wbPromise;
-  const e = createEngine({ load: async () => wb, createWorker: () => { throw new Error('no worker in this test'); } });
+  const e = createEngine({
+    load: async () => wb,
+    createWorker: () => {
+      throw new Error('no worker in this test');
+    },
+  });
   await e.load();
   const s = defaults();
-  s.zeta = 0.01; s.gamma_phase = 0.5; s.gamma0 = 0.125; s.flap_hz = 30; s.duration = 1.5; s.alpha_phase = -1.5;
+  s.zeta = 0.01;
+  s.gamma_phase = 0.5;
+  s.gamma0 = 0.125;
+  s.flap_hz = 30;
+  s.duration = 1.5;
+  s.alpha_phase = -1.5;
   const c = e.config(s);
   const h1 = (a) => a.harmonics.find((h) => h.n === 1);
   assert.equal(h1(c.kinematics.gamma).amplitude, 0.125);
@@ -82,14 +104,22 @@ test('the engine’s config is built by the core: γ0 and phases on the first ha
   // and this engine's config at γ0 = 0.125 give the same Coriolis share.
   const sw = wb.sweep(e.config(defaults()), { param: 'gamma0', from: 0.125, to: 0.25, points: 2 });
   const sim = wb.simulate(e.config({ ...defaults(), gamma0: 0.125 }));
-  assert.ok(Math.abs(sim.modes[0].contribution_percent.coriolis - sw.modes[0].coriolis[0]) < 1e-9, 'applyOverrides γ0 = sweep γ0');
+  assert.ok(
+    Math.abs(sim.modes[0].contribution_percent.coriolis - sw.modes[0].coriolis[0]) < 1e-9,
+    'applyOverrides γ0 = sweep γ0',
+  );
   // The core rejects an out-of-range value by name (the URL parser keeps such values out).
   assert.throws(() => e.config({ ...defaults(), gamma0: 0.9 }), /gamma0/);
 });
 
 test('analyze on the real wasm: stiffness_force and the angles on sim.t', async () => {
   const wb = await wbPromise;
-  const e = createEngine({ load: async () => wb, createWorker: () => { throw new Error('no worker in this test'); } });
+  const e = createEngine({
+    load: async () => wb,
+    createWorker: () => {
+      throw new Error('no worker in this test');
+    },
+  });
   await e.load();
   const r = e.analyze({ ...defaults(), duration: 0.4 });
   const a = r.analysis;
@@ -106,7 +136,8 @@ test('the share links’ DFT (fourier.js) samples a measured angle with the core
   assert.equal(DEFAULT_SAMPLED_MAX_HARMONIC, wb.limits().default_sampled_max_harmonic);
   // A 200-sample, one-period table at 25 Hz with a little measurement noise (deterministic):
   // with the default cap it runs under the browser's work budget (at 64 harmonics it was refused).
-  const fd = 25, n = 200;
+  const fd = 25,
+    n = 200;
   let csv = 't,alpha,beta,gamma\n';
   for (let i = 0; i < n; i++) {
     const p = (2 * Math.PI * i) / n;
@@ -116,8 +147,14 @@ test('the share links’ DFT (fourier.js) samples a measured angle with the core
   const k = wb.kinematicsFromCsv(csv, { units: 'deg', flap_hz: fd });
   assert.equal(k.max_harmonic, DEFAULT_SAMPLED_MAX_HARMONIC);
   const r = wb.analyze({ ...wb.defaultConfig(), kinematics: k.kinematics }, undefined, 0);
-  assert.ok(Number.isFinite(r.sim.modes[0].floquet.effective_freq_hz), 'the measured stroke runs in the browser budget');
+  assert.ok(
+    Number.isFinite(r.sim.modes[0].floquet.effective_freq_hz),
+    'the measured stroke runs in the browser budget',
+  );
   // and 64 harmonics (asked for) is still refused by name, so the budget is what the default keeps us under
   const k64 = wb.kinematicsFromCsv(csv, { units: 'deg', flap_hz: fd, max_harmonic: 64 });
-  assert.throws(() => wb.analyze({ ...wb.defaultConfig(), kinematics: k64.kinematics }, undefined, 0), /highest harmonic|max_harmonic/);
+  assert.throws(
+    () => wb.analyze({ ...wb.defaultConfig(), kinematics: k64.kinematics }, undefined, 0),
+    /highest harmonic|max_harmonic/,
+  );
 });

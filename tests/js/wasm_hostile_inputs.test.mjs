@@ -34,18 +34,59 @@ const TIME_BUDGET_MS = 40_000;
 async function loadReal() {
   const glue = path.join(PKG, 'wingbeat.js');
   const bin = path.join(PKG, 'wingbeat_bg.wasm');
-  assert.ok(fs.existsSync(glue) && fs.existsSync(bin), 'www/pkg is missing: run `bash scripts/build-web.sh www` first (npm test does)');
+  assert.ok(
+    fs.existsSync(glue) && fs.existsSync(bin),
+    'www/pkg is missing: run `bash scripts/build-web.sh www` first (npm test does)',
+  );
   const m = await import(new URL(`file://${glue}`).href);
   const exports = m.initSync({ module: fs.readFileSync(bin) });
   return { m, exports };
 }
 
+const TYPED = [
+  Int8Array,
+  Uint8Array,
+  Uint8ClampedArray,
+  Int16Array,
+  Uint16Array,
+  Int32Array,
+  Uint32Array,
+  Float32Array,
+  Float64Array,
+  BigInt64Array,
+  BigUint64Array,
+  ...(typeof Float16Array === 'function' ? [Float16Array] : []),
+];
 
-const TYPED = [Int8Array, Uint8Array, Uint8ClampedArray, Int16Array, Uint16Array, Int32Array, Uint32Array,
-  Float32Array, Float64Array, BigInt64Array, BigUint64Array, ...(typeof Float16Array === 'function' ? [Float16Array] : [])];
-
-const NUMBERS = [0, -0, 1, -1, 0.5, 1.5, 2, 3, 7, 64, 65, 1000, 2 ** 31, 2 ** 32, 2 ** 53, -(2 ** 53), 1e300, -1e300,
-  5e-324, NaN, Infinity, -Infinity, 1e-300, 0.01, 25, 100, 10000];
+const NUMBERS = [
+  0,
+  -0,
+  1,
+  -1,
+  0.5,
+  1.5,
+  2,
+  3,
+  7,
+  64,
+  65,
+  1000,
+  2 ** 31,
+  2 ** 32,
+  2 ** 53,
+  -(2 ** 53),
+  1e300,
+  -1e300,
+  5e-324,
+  NaN,
+  Infinity,
+  -Infinity,
+  1e-300,
+  0.01,
+  25,
+  100,
+  10000,
+];
 
 /** One hostile value (`depth` bounds nesting). Each kind is labelled for the failure report. */
 function hostile(r, depth = 0) {
@@ -53,48 +94,167 @@ function hostile(r, depth = 0) {
   const kinds = [
     () => ['undefined', undefined],
     () => ['null', null],
-    () => { const n = pick(NUMBERS); return [`number ${Object.is(n, -0) ? '-0' : n}`, n]; },
-    () => { const n = (r() - 0.5) * 10 ** Math.floor(r() * 12); return [`number ${n}`, n]; },
+    () => {
+      const n = pick(NUMBERS);
+      return [`number ${Object.is(n, -0) ? '-0' : n}`, n];
+    },
+    () => {
+      const n = (r() - 0.5) * 10 ** Math.floor(r() * 12);
+      return [`number ${n}`, n];
+    },
     () => ['boolean', r() < 0.5],
     () => ['symbol', Symbol('x')],
     () => ['bigint', pick([0n, 10n, 2n ** 64n, -1n])],
     () => ['function', () => 1],
     () => ['empty string', ''],
-    () => { const s = pick(['csv', 'json', 'rms', 'peak', 'deg', 'rad', '0', '1e308', 'NaN', 'null', '{}', '[]', '{"modes": []}', '[[0,0],[1,0],[1,1]]', 'x_mm,y_mm\n0,0\n1,0\n1,1\n', 't,alpha\n0,0\n0.01,1\n']); return [`string ${JSON.stringify(s)}`, s]; },
+    () => {
+      const s = pick([
+        'csv',
+        'json',
+        'rms',
+        'peak',
+        'deg',
+        'rad',
+        '0',
+        '1e308',
+        'NaN',
+        'null',
+        '{}',
+        '[]',
+        '{"modes": []}',
+        '[[0,0],[1,0],[1,1]]',
+        'x_mm,y_mm\n0,0\n1,0\n1,1\n',
+        't,alpha\n0,0\n0.01,1\n',
+      ]);
+      return [`string ${JSON.stringify(s)}`, s];
+    },
     () => ['unicode string', '\u{1F98B}\uD800 wing \u0000 \u202E é' + '\uDFFF'.repeat(3)],
-    () => { const n = pick([1e5, 1e6, 5e6, 4e7]); return [`string of ${n} characters`, 'x'.repeat(n)]; },
+    () => {
+      const n = pick([1e5, 1e6, 5e6, 4e7]);
+      return [`string of ${n} characters`, 'x'.repeat(n)];
+    },
     () => ['empty object', {}],
     () => ['object with junk keys', { a: 1, b: [1, 2], __proto__x: 'y', toString: 5 }],
-    () => { const n = pick([2e9, 6e7, 2 ** 32 - 1, -1, NaN, 1.5, '5', 3]); return [`{ length: ${String(n)} }`, { length: n }]; },
+    () => {
+      const n = pick([2e9, 6e7, 2 ** 32 - 1, -1, NaN, 1.5, '5', 3]);
+      return [`{ length: ${String(n)} }`, { length: n }];
+    },
     () => ['{ 0: 1, length: 1 }', { 0: 1, length: 1 }],
     () => ['empty array', []],
     () => ['small numeric array', [1, 2, 3]],
     () => ['array of strings', ['1', '2', '3']],
     () => ['array of NaN', [NaN, Infinity]],
-    () => ['outline-like array', [[0, 0], [10, 0], [10, -5], [0, -5]]],
-    () => ['nested junk array', [[[[]]], { a: [null] }, 'x', 1n === 1n ? 1 : 0]],
-    () => { const a = []; a.length = 2 ** 32 - 1; return ['sparse array of length 2^32 - 1', a]; },
-    () => { const a = []; a.length = 6e7; return ['sparse array of length 6e7', a]; },
-    () => { const C = pick(TYPED); const n = Math.floor(r() * 20); const a = new C(n); return [`${C.name}(${n})`, a]; },
-    () => { const n = pick([0, 3, 64, 1e6, 3e6]); const a = new Float64Array(n).fill(pick([0, 1, NaN, Infinity, 1e300])); return [`Float64Array(${n}) filled`, a]; },
+    () => [
+      'outline-like array',
+      [
+        [0, 0],
+        [10, 0],
+        [10, -5],
+        [0, -5],
+      ],
+    ],
+    () => ['nested junk array', [[[[]]], { a: [null] }, 'x', 1]],
+    () => {
+      const a = [];
+      a.length = 2 ** 32 - 1;
+      return ['sparse array of length 2^32 - 1', a];
+    },
+    () => {
+      const a = [];
+      a.length = 6e7;
+      return ['sparse array of length 6e7', a];
+    },
+    () => {
+      const C = pick(TYPED);
+      const n = Math.floor(r() * 20);
+      const a = new C(n);
+      return [`${C.name}(${n})`, a];
+    },
+    () => {
+      const n = pick([0, 3, 64, 1e6, 3e6]);
+      const a = new Float64Array(n).fill(pick([0, 1, NaN, Infinity, 1e300]));
+      return [`Float64Array(${n}) filled`, a];
+    },
     () => ['Uint32Array with big indices', new Uint32Array([0, 1, 4294967295])],
     () => ['DataView', new DataView(new ArrayBuffer(16))],
     () => ['ArrayBuffer', new ArrayBuffer(16)],
-    () => ['cyclic object', (() => { const o = { a: 1 }; o.self = o; return o; })()],
-    () => ['object with throwing getter', { get length() { throw new Error('getter'); }, get x() { throw new Error('getter'); } }],
-    () => ['array with throwing element getter', (() => { const a = [1, 2, 3]; Object.defineProperty(a, 1, { get() { throw new Error('getter'); } }); return a; })()],
-    () => ['revoked proxy', (() => { const p = Proxy.revocable([], {}); p.revoke(); return p.proxy; })()],
-    () => ['proxy array that throws', new Proxy([1, 2, 3], { get() { throw new Error('trap'); } })],
+    () => [
+      'cyclic object',
+      (() => {
+        const o = { a: 1 };
+        o.self = o;
+        return o;
+      })(),
+    ],
+    () => [
+      'object with throwing getter',
+      {
+        get length() {
+          throw new Error('getter');
+        },
+        get x() {
+          throw new Error('getter');
+        },
+      },
+    ],
+    () => [
+      'array with throwing element getter',
+      (() => {
+        const a = [1, 2, 3];
+        Object.defineProperty(a, 1, {
+          get() {
+            throw new Error('getter');
+          },
+        });
+        return a;
+      })(),
+    ],
+    () => [
+      'revoked proxy',
+      (() => {
+        const p = Proxy.revocable([], {});
+        p.revoke();
+        return p.proxy;
+      })(),
+    ],
+    () => [
+      'proxy array that throws',
+      new Proxy([1, 2, 3], {
+        get() {
+          throw new Error('trap');
+        },
+      }),
+    ],
     () => ['fake Float64Array', Object.create(Float64Array.prototype)],
-    () => ['typed array with a lying length', (() => { const a = new Float64Array(4); Object.defineProperty(a, 'length', { value: 2e9 }); return a; })()],
+    () => [
+      'typed array with a lying length',
+      (() => {
+        const a = new Float64Array(4);
+        Object.defineProperty(a, 'length', { value: 2e9 });
+        return a;
+      })(),
+    ],
     () => ['Date', new Date(0)],
     () => ['Map', new Map([[1, 2]])],
-    () => ['object with toJSON', { toJSON() { return 'x'.repeat(1000); } }],
+    () => [
+      'object with toJSON',
+      {
+        toJSON() {
+          return 'x'.repeat(1000);
+        },
+      },
+    ],
     () => ['Object.create(null)', Object.create(null)],
   ];
   if (depth < 2) {
-    kinds.push(() => { const [l, v] = hostile(r, depth + 1); return [`[${l}]`, [v]]; });
-    kinds.push(() => { const [l, v] = hostile(r, depth + 1); return [`{ k: ${l} }`, { duration_s: v, modes: v, planform_mm: v, stat: v }]; });
+    kinds.push(() => {
+      const [l, v] = hostile(r, depth + 1);
+      return [`[${l}]`, [v]];
+    });
+    kinds.push(() => {
+      const [l, v] = hostile(r, depth + 1);
+      return [`{ k: ${l} }`, { duration_s: v, modes: v, planform_mm: v, stat: v }];
+    });
   }
   return pick(kinds)();
 }
@@ -102,25 +262,53 @@ function hostile(r, depth = 0) {
 /** Valid arguments per export, so that a call with one hostile argument gets past the others. */
 function validArgs(wb) {
   const cfg = { ...wb.defaultConfig(), duration_s: 0.02, sample_rate_hz: 2000 };
-  const square = [[0, 0], [10, 0], [10, -5], [0, -5]];
-  const fe = wb.feModes({ planform_mm: [[0, 0], [0, -8], [30, -8], [30, 0]], n_modes: 2, mesh_size_mm: 4 }, 0.01, undefined);
+  const square = [
+    [0, 0],
+    [10, 0],
+    [10, -5],
+    [0, -5],
+  ];
+  const fe = wb.feModes(
+    {
+      planform_mm: [
+        [0, 0],
+        [0, -8],
+        [30, -8],
+        [30, 0],
+      ],
+      n_modes: 2,
+      mesh_size_mm: 4,
+    },
+    0.01,
+    undefined,
+  );
   const nModes = fe.n_modes;
   const series = new Float64Array(256).map((_, i) => Math.sin(i / 5));
   const qs = Array.from({ length: nModes }, () => series.slice(0, 64));
   const feCfg = { ...cfg, modes: fe.modes };
-  const body = { 'nodes': fe.nodes, 'triangles': fe.triangles, 'strain_nodes': fe.strain_nodes };
+  const body = { nodes: fe.nodes, triangles: fe.triangles, strain_nodes: fe.strain_nodes };
   return {
     fe,
     valid: {
-      version: [], planforms: [], wingParameters: [], materialPresets: [], defaultConfig: [], limits: [],
-      parameters: [], bodyRateRanges: [], reproduceText: [], reproduce: [],
+      version: [],
+      planforms: [],
+      wingParameters: [],
+      materialPresets: [],
+      defaultConfig: [],
+      limits: [],
+      parameters: [],
+      bodyRateRanges: [],
+      reproduceText: [],
+      reproduce: [],
       parsePlanform: ['x_mm,y_mm\n0,0\n10,0\n10,-5\n0,-5\n', 'csv'],
       checkPlanform: [square],
       wingInput: [{ camber: 0.1 }, square],
       modalStrainAt: [body.nodes, body.triangles, body.strain_nodes, nModes, [5, -3]],
       strainField: [body.strain_nodes, nModes, qs, { stat: 'rms' }],
       modesFromJson: ['{"modes": [{"name": "m", "freq_hz": 50, "a": [[0,0],[0,0],[0,0]], "b": [0,0,0]}]}'],
-      validateConfig: [cfg], simulate: [cfg], forceSeries: [cfg],
+      validateConfig: [cfg],
+      simulate: [cfg],
+      forceSeries: [cfg],
       anglesAt: [cfg, [0, 0.001, 0.002]],
       applyOverrides: [cfg, { gamma0: 0.1 }],
       kinematicsFromCsv: ['t,alpha\n0,0\n0.01,10\n0.02,0\n0.03,-10\n', { units: 'deg', flap_hz: 25 }],
@@ -131,8 +319,29 @@ function validArgs(wb) {
       sweep: [cfg, { param: 'gamma0', from: 0, to: 0.2, points: 2 }, () => {}],
       icMap: [cfg, { n_q: 2, n_qdot: 2 }],
       resonanceMap: [cfg, { from_hz: 20, to_hz: 30, points: 2 }, () => {}],
-      feModes: [{ planform_mm: [[0, 0], [0, -8], [30, -8], [30, 0]], n_modes: 1, mesh_size_mm: 6 }, 0.01, undefined],
-      senseRotation: [feCfg, body.nodes, body.triangles, body.strain_nodes, [0, 0, 1], { k_max: 2, samples_per_sensor: 8 }, undefined],
+      feModes: [
+        {
+          planform_mm: [
+            [0, 0],
+            [0, -8],
+            [30, -8],
+            [30, 0],
+          ],
+          n_modes: 1,
+          mesh_size_mm: 6,
+        },
+        0.01,
+        undefined,
+      ],
+      senseRotation: [
+        feCfg,
+        body.nodes,
+        body.triangles,
+        body.strain_nodes,
+        [0, 0, 1],
+        { k_max: 2, samples_per_sensor: 8 },
+        undefined,
+      ],
     },
   };
 }
@@ -141,7 +350,10 @@ function validArgs(wb) {
 function clear(e) {
   if (!(e instanceof Error) || typeof e.message !== 'string') return false;
   const m = e.message;
-  return /`[^`]+`/.test(m) || /^(could not parse|invalid geometry|rendering failed|non-finite result|.* did not converge)/.test(m);
+  return (
+    /`[^`]+`/.test(m) ||
+    /^(could not parse|invalid geometry|rendering failed|non-finite result|.* did not converge)/.test(m)
+  );
 }
 
 test('every wasm export refuses hostile arguments by name, without trapping, dying or leaking', async (t) => {
@@ -152,7 +364,14 @@ test('every wasm export refuses hostile arguments by name, without trapping, dyi
   const alive = () => {
     try {
       const e = Array.from(wb.envelope(probeSeries)).join(',');
-      const ok = e === probeEnvelope && wb.checkPlanform([[0, 0], [10, 0], [10, -5], [0, -5]]).ok === true;
+      const ok =
+        e === probeEnvelope &&
+        wb.checkPlanform([
+          [0, 0],
+          [10, 0],
+          [10, -5],
+          [0, -5],
+        ]).ok === true;
       return ok;
     } catch {
       return false;
@@ -163,14 +382,21 @@ test('every wasm export refuses hostile arguments by name, without trapping, dyi
   const { valid } = validArgs(wb);
   // Every exported function, found at run time (a new export is fuzzed without editing this list).
   const skip = new Set(['default', 'initSync', 'start']);
-  const fns = Object.keys(wb).filter((k) => typeof wb[k] === 'function' && !skip.has(k) && !k.startsWith('__') && !/^[A-Z]/.test(k));
+  const fns = Object.keys(wb).filter(
+    (k) => typeof wb[k] === 'function' && !skip.has(k) && !k.startsWith('__') && !/^[A-Z]/.test(k),
+  );
   const classes = Object.keys(wb).filter((k) => typeof wb[k] === 'function' && /^[A-Z]/.test(k));
   const missing = fns.filter((k) => !(k in valid));
   assert.deepEqual(missing, [], 'every export has valid arguments in this test (add them for a new export)');
   // The class statics (WingView.create, createFromArrays, createSynthetic, colourMap): node has no
   // canvas, so these are called for their argument checks only (instances need a browser).
   /** @type {{ name: string, call: (...a: unknown[]) => unknown, arity: number, valid: unknown[] }[]} */
-  const targets = fns.map((k) => ({ name: k, call: (...a) => wb[k](...a), arity: Math.max(wb[k].length, valid[k].length), valid: valid[k] }));
+  const targets = fns.map((k) => ({
+    name: k,
+    call: (...a) => wb[k](...a),
+    arity: Math.max(wb[k].length, valid[k].length),
+    valid: valid[k],
+  }));
   for (const c of classes) {
     for (const s of Object.getOwnPropertyNames(wb[c])) {
       if (['length', 'name', 'prototype', '__wrap'].includes(s) || typeof wb[c][s] !== 'function') continue;
@@ -242,7 +468,12 @@ test('every wasm export refuses hostile arguments by name, without trapping, dyi
         problems.push(`TRAP ${what}: ${res.e.message}`);
       } else if (!clear(res.e)) {
         counts.unclear++;
-        problems.push(`UNCLEAR ${what}: ${res.e instanceof Error ? `${res.e.name}: ${res.e.message}` : `threw ${typeof res.e}`}`.slice(0, 400));
+        problems.push(
+          `UNCLEAR ${what}: ${res.e instanceof Error ? `${res.e.name}: ${res.e.message}` : `threw ${typeof res.e}`}`.slice(
+            0,
+            400,
+          ),
+        );
       }
     }
     if (!alive()) {
@@ -259,18 +490,25 @@ test('every wasm export refuses hostile arguments by name, without trapping, dyi
       const grewAgain = memory.buffer.byteLength - b2;
       if (grewAgain > 0) {
         counts.leaks++;
-        problems.push(`LEAK ${what}: +${(grew / 2 ** 20).toFixed(1)} MiB, then +${(grewAgain / 2 ** 20).toFixed(1)} MiB over two repeats`);
+        problems.push(
+          `LEAK ${what}: +${(grew / 2 ** 20).toFixed(1)} MiB, then +${(grewAgain / 2 ** 20).toFixed(1)} MiB over two repeats`,
+        );
       }
     }
   }
   const ms = Date.now() - started;
-  t.diagnostic(`seed ${SEED}: ${counts.calls} calls in ${(ms / 1000).toFixed(1)} s — ${counts.returned} returned, ${counts.refused} refused; ` +
-    `traps ${counts.traps}, dead instances ${counts.dead}, leaks ${counts.leaks}, unclear errors ${counts.unclear}, slow (refusal > 2 s or any call > 20 s) ${counts.slow}; ` +
-    `wasm memory ${(memory.buffer.byteLength / 2 ** 20).toFixed(0)} MiB`);
+  t.diagnostic(
+    `seed ${SEED}: ${counts.calls} calls in ${(ms / 1000).toFixed(1)} s — ${counts.returned} returned, ${counts.refused} refused; ` +
+      `traps ${counts.traps}, dead instances ${counts.dead}, leaks ${counts.leaks}, unclear errors ${counts.unclear}, slow (refusal > 2 s or any call > 20 s) ${counts.slow}; ` +
+      `wasm memory ${(memory.buffer.byteLength / 2 ** 20).toFixed(0)} MiB`,
+  );
   for (const p of problems.slice(0, 40)) t.diagnostic(p);
   assert.ok(counts.calls >= Math.min(CALLS, 500), `at least 500 calls ran (${counts.calls})`);
-  assert.deepEqual({ traps: counts.traps, dead: counts.dead, leaks: counts.leaks, unclear: counts.unclear, slow: counts.slow },
-    { traps: 0, dead: 0, leaks: 0, unclear: 0, slow: 0 }, problems.slice(0, 20).join('\n'));
+  assert.deepEqual(
+    { traps: counts.traps, dead: counts.dead, leaks: counts.leaks, unclear: counts.unclear, slow: counts.slow },
+    { traps: 0, dead: 0, leaks: 0, unclear: 0, slow: 0 },
+    problems.slice(0, 20).join('\n'),
+  );
 });
 
 test('text arguments refuse non-strings by name (parsePlanform(12345, "csv") used to trap)', async () => {
@@ -281,7 +519,11 @@ test('text arguments refuse non-strings by name (parsePlanform(12345, "csv") use
     ['modesFromJson', [{ modes: [] }], 'modesFromJson.text'],
     ['kinematicsFromCsv', [null, { units: 'deg', flap_hz: 25 }], 'kinematicsFromCsv.text'],
   ]) {
-    assert.throws(() => wb[f](...args), (e) => e instanceof Error && !(e instanceof WebAssembly.RuntimeError) && e.message.includes(`\`${field}\``), `${f}: names ${field}`);
+    assert.throws(
+      () => wb[f](...args),
+      (e) => e instanceof Error && !(e instanceof WebAssembly.RuntimeError) && e.message.includes(`\`${field}\``),
+      `${f}: names ${field}`,
+    );
   }
 });
 
@@ -291,8 +533,12 @@ test('array arguments are length-checked before any copy ({ length: 2e9 } is ref
   for (let i = 0; i < 5; i++) {
     assert.throws(() => wb.modalStrainAt({ length: 2e9 }, [0, 1, 2], [0, 0, 0], 1, [0, 0]), /`nodes`/);
     assert.throws(() => wb.strainField({ length: 6e7 }, 1, [[1]], { stat: 'rms' }), /`strain_nodes`/);
-    assert.throws(() => wb.senseRotation(wb.defaultConfig(), [0, 0, 0], [0, 0, 0], [0, 0, 0], { length: 6e7 }), /`body_rate`/);
-    const a = []; a.length = 2 ** 32 - 1;
+    assert.throws(
+      () => wb.senseRotation(wb.defaultConfig(), [0, 0, 0], [0, 0, 0], [0, 0, 0], { length: 6e7 }),
+      /`body_rate`/,
+    );
+    const a = [];
+    a.length = 2 ** 32 - 1;
     assert.throws(() => wb.psd(a, 100), /`psd.series`/);
   }
   assert.equal(exports.memory.buffer.byteLength, before, 'refused calls allocate nothing in wasm memory');
@@ -306,12 +552,21 @@ test('numbers are never coerced: "3", true and [5] are refused where a number is
     assert.throws(() => wb.psd(s, bad), /`psd\.sample_rate_hz`/, String(bad));
   }
   assert.throws(() => wb.envelope(['1', '2']), /`envelope\.series\[0\]`/);
-  assert.throws(() => wb.sweep(wb.defaultConfig(), { param: 'gamma0', from: 0, to: 0.1, points: 2 }, 'not a function'), /`progress`/);
+  assert.throws(
+    () => wb.sweep(wb.defaultConfig(), { param: 'gamma0', from: 0, to: 0.1, points: 2 }, 'not a function'),
+    /`progress`/,
+  );
 });
 
 test('a geometry the mesher cannot take is refused by checkPlanform and feModes alike', async () => {
   const { m: wb } = await loadReal();
-  const outline = [[0, 0], [0, -5], [30, -5], [30, 0], [1e-300, 0]];
+  const outline = [
+    [0, 0],
+    [0, -5],
+    [30, -5],
+    [30, 0],
+    [1e-300, 0],
+  ];
   const check = wb.checkPlanform(outline);
   let feError = null;
   try {
