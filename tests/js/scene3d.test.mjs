@@ -3,19 +3,12 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/scene3d.js';
 import { prng } from './prng.mjs';
+import { flatWing } from './wing_fixture.mjs';
 
-// A flat rectangular "wing": span 0.05 m along x, chord 0.02 m toward −y, on a 11 × 5 grid.
+// The shared flat wing (wing_fixture.mjs), its triangles named `tris` here.
 function wing() {
-  const nodes = [],
-    tris = [];
-  for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
-  for (let i = 0; i < 10; i++)
-    for (let j = 0; j < 4; j++) {
-      const a = i * 5 + j,
-        b = a + 5;
-      tris.push(a, b, a + 1, b, b + 1, a + 1);
-    }
-  return { nodes: Float64Array.from(nodes), tris: Uint32Array.from(tris) };
+  const { nodes, triangles } = flatWing();
+  return { nodes, tris: triangles };
 }
 
 test('the default camera projects its target to the image centre; orbit/zoom mirror the renderer', () => {

@@ -6,20 +6,7 @@ import assert from 'node:assert/strict';
 import * as C from '../../www/wing3d/camera.js';
 import { canvasSize, MAX_BACKING_PX } from '../../www/wing3d/canvas.js';
 import * as S from '../../www/scene3d.js';
-
-// A flat rectangular "wing": span 0.05 m along x, chord 0.02 m toward −y, on a 11 × 5 grid.
-function wing() {
-  const nodes = [],
-    tris = [];
-  for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
-  for (let i = 0; i < 10; i++)
-    for (let j = 0; j < 4; j++) {
-      const a = i * 5 + j,
-        b = a + 5;
-      tris.push(a, b, a + 1, b, b + 1, a + 1);
-    }
-  return { nodes: Float64Array.from(nodes), triangles: Uint32Array.from(tris) };
-}
+import { flatWing as wing } from './wing_fixture.mjs';
 
 /** A stand-in WingView: keeps a camera, applies orbit/zoom/key as the renderer does, logs calls. */
 function fakeView(span) {

@@ -7,25 +7,11 @@ import assert from 'node:assert/strict';
 import { createWingMarks } from '../../www/wing3d/marks.js';
 import { SENSE_COLOUR } from '../../www/wing3d/fields.js';
 import * as S from '../../www/scene3d.js';
+import { flatWing } from './wing_fixture.mjs';
 
-// A flat wing, span 50 mm along x, chord 20 mm toward −y (11 × 5 nodes), one mode growing to the tip.
+// The shared flat wing (wing_fixture.mjs) with its strain point at (20, −10) mm.
 function wing() {
-  const nodes = [],
-    tris = [];
-  for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
-  for (let i = 0; i < 10; i++)
-    for (let j = 0; j < 4; j++) {
-      const a = i * 5 + j,
-        b = a + 5;
-      tris.push(a, b, a + 1, b, b + 1, a + 1);
-    }
-  const n = nodes.length / 3;
-  return {
-    nodes: Float64Array.from(nodes),
-    triangles: Uint32Array.from(tris),
-    shapes: Float64Array.from({ length: n }, (_, i) => nodes[3 * i]),
-    strain_point_mm: [20, -10],
-  };
+  return { ...flatWing(), strain_point_mm: [20, -10] };
 }
 
 const result = {

@@ -4,23 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as P from '../../www/wing3d/picking.js';
 import * as S from '../../www/scene3d.js';
-
-// A flat rectangular "wing": span 0.05 m along x, chord 0.02 m toward −y, on a 11 × 5 grid; one
-// mode whose shape is the node's x (a bending-like deflection growing to the tip).
-function wing() {
-  const nodes = [],
-    tris = [];
-  for (let i = 0; i <= 10; i++) for (let j = 0; j <= 4; j++) nodes.push(0.005 * i, -0.005 * j, 0);
-  for (let i = 0; i < 10; i++)
-    for (let j = 0; j < 4; j++) {
-      const a = i * 5 + j,
-        b = a + 5;
-      tris.push(a, b, a + 1, b, b + 1, a + 1);
-    }
-  const n = nodes.length / 3;
-  const shapes = Float64Array.from({ length: n }, (_, i) => nodes[3 * i]);
-  return { nodes: Float64Array.from(nodes), triangles: Uint32Array.from(tris), shapes };
-}
+import { flatWing as wing } from './wing_fixture.mjs';
 
 /** Screen positions of a top view: x → 10 px per mm right, y → 10 px per mm down (y < 0 on the wing). */
 function topView(nodes) {
