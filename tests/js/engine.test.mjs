@@ -8,6 +8,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createEngine, splitAngles } from '../../www/engine.js';
 import { defaults } from '../../www/state.js';
+import { fakeWorker } from './fake_worker.mjs';
 
 function fakeWasm() {
   const calls = { analyze: 0, anglesAt: 0, applyOverrides: [] };
@@ -51,23 +52,6 @@ function fakeWasm() {
     },
   };
   return wb;
-}
-
-function fakeWorker() {
-  const w = {
-    posted: [],
-    terminated: false,
-    postMessage(m) {
-      w.posted.push(m);
-    },
-    terminate() {
-      w.terminated = true;
-    },
-    reply(data) {
-      w.onmessage({ data });
-    },
-  };
-  return w;
 }
 
 test('analyze builds the config from the parameters; the angles come with the analysis (no anglesAt call)', async () => {

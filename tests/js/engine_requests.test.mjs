@@ -6,23 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { liveAsk, liveOverrides, createLiveQueue, STROKE_KEYS, LIVE_SEGMENT_LEN } from '../../www/engine/requests.js';
 import { defaults } from '../../www/state.js';
-
-function fakeWorker() {
-  const w = {
-    posted: [],
-    terminated: false,
-    postMessage(m) {
-      w.posted.push(m);
-    },
-    terminate() {
-      w.terminated = true;
-    },
-    reply(data) {
-      w.onmessage({ data });
-    },
-  };
-  return w;
-}
+import { fakeWorker } from './fake_worker.mjs';
 
 /** A queue whose main-thread compute returns 'here:<tag>' and whose worker results are 'worker:<result>'. */
 function queue({ start } = {}) {
