@@ -1,27 +1,12 @@
 // The lab's grid (www/layout.js): every visible panel gets one rectangle, no cell is empty,
-// the full set keeps the designed templates, subsets fill the width.
+// the full set keeps the designed templates, subsets fill the width. LAYOUT is the lab's own
+// panel list (www/lab/panels.js), so a panel of state.js missing from it fails here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { layoutMode, gridLayout, areasCss, TEMPLATES, WIDE_AT, MEDIUM_AT } from '../../www/layout.js';
 import { PANELS } from '../../www/state.js';
+import { LAYOUT } from '../../www/lab/panels.js';
 import { prng } from './prng.mjs';
-
-const LAYOUT = [
-  'wing3d',
-  'controls',
-  'time',
-  'experiments',
-  'wing',
-  'kinematics',
-  'spectrum',
-  'numbers',
-  'modeshape',
-  'strain',
-  'sensing',
-  'studies',
-  'resonance',
-  'report',
-];
 
 /** Every visible panel occupies a rectangle; every cell holds a visible panel. */
 function checkGrid(g, visible) {
