@@ -95,6 +95,27 @@ export function context2d(c) {
   return ctx;
 }
 
+/**
+ * Walks a flat polyline [x0, y0, x1, y1, …] for both painters: calls `to(x, y, drawing)` at each
+ * finite point, with `drawing` false where the pen is lifted (the first point, and the first one
+ * after a non-finite coordinate, which breaks the line).
+ * @param {ArrayLike<number>} pts
+ * @param {(x: number, y: number, drawing: boolean) => void} to
+ */
+function tracePolyline(pts, to) {
+  let pen = false;
+  for (let i = 0; i < pts.length; i += 2) {
+    const x = pts[i],
+      y = pts[i + 1];
+    if (!Number.isFinite(x) || !Number.isFinite(y)) {
+      pen = false;
+      continue;
+    }
+    to(x, y, pen);
+    pen = true;
+  }
+}
+
 /** @typedef {(s: string, size: number) => number} MeasureFn text width in CSS px of rich markup at a font size */
 
 /**
@@ -124,18 +145,10 @@ export function canvasPainter(ctx) {
       ctx.lineJoin = 'round';
       ctx.setLineDash(dash || []);
       ctx.beginPath();
-      let pen = false;
-      for (let i = 0; i < pts.length; i += 2) {
-        const x = pts[i],
-          y = pts[i + 1];
-        if (!Number.isFinite(x) || !Number.isFinite(y)) {
-          pen = false;
-          continue;
-        }
-        if (pen) ctx.lineTo(x, y);
+      tracePolyline(pts, (x, y, drawing) => {
+        if (drawing) ctx.lineTo(x, y);
         else ctx.moveTo(x, y);
-        pen = true;
-      }
+      });
       ctx.stroke();
       ctx.restore();
     },
@@ -203,17 +216,9 @@ export function svgPainter(width, height, measureFn = null) {
     },
     line(pts, color, width = 1, dash = /** @type {number[] | null} */ (null), alpha = 1) {
       let d = '';
-      let pen = false;
-      for (let i = 0; i < pts.length; i += 2) {
-        const x = pts[i],
-          y = pts[i + 1];
-        if (!Number.isFinite(x) || !Number.isFinite(y)) {
-          pen = false;
-          continue;
-        }
-        d += `${pen ? 'L' : 'M'}${x.toFixed(2)} ${y.toFixed(2)}`;
-        pen = true;
-      }
+      tracePolyline(pts, (x, y, drawing) => {
+        d += `${drawing ? 'L' : 'M'}${x.toFixed(2)} ${y.toFixed(2)}`;
+      });
       if (!d) return;
       parts.push(
         `<path d="${d}" fill="none" stroke="${color}" stroke-width="${width}"${dash ? ` stroke-dasharray="${dash.join(' ')}"` : ''}${alpha < 1 ? ` stroke-opacity="${alpha}"` : ''} stroke-linejoin="round"/>`,
