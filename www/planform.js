@@ -1,8 +1,8 @@
 // @ts-check
 // The planform map shared by the strain panel and the sensing panel: a 2-D canvas showing the
 // FE wing seen from above (x spanwise, y chordwise, mm), sized to the planform's aspect and the
-// panel's width, on which a click or the arrow keys pick a point (mm), and whether a point lies on
-// the wing.
+// panel's width (redrawn when that changes), on which a click or the arrow keys pick a point (mm),
+// drawn as a ring, and whether a point lies on the wing.
 import { context2d } from './export.js';
 import { pick } from './scene3d.js';
 
@@ -144,4 +144,52 @@ export function pickOnMap(canvas, frameOf, pointOf, choose) {
     const step = KEY_STEP_MM * (e.shiftKey ? 4 : 1);
     choose(p[0] + d[0] * step, p[1] + d[1] * step);
   });
+}
+
+/**
+ * A ring around a point on a map, with a dark and a light edge so it shows on every colour.
+ * @param {CanvasRenderingContext2D} c2
+ * @param {number} x canvas px
+ * @param {number} y canvas px
+ * @param {number} radius canvas px
+ * @param {string} light the inner edge's colour
+ */
+export function drawRing(c2, x, y, radius, light) {
+  c2.lineWidth = 3;
+  c2.strokeStyle = '#111';
+  c2.beginPath();
+  c2.arc(x, y, radius, 0, 2 * Math.PI);
+  c2.stroke();
+  c2.lineWidth = 1.5;
+  c2.strokeStyle = light;
+  c2.beginPath();
+  c2.arc(x, y, radius, 0, 2 * Math.PI);
+  c2.stroke();
+}
+
+/**
+ * Calls `redraw()` when the map's box changes width by more than 4 px (where the browser has
+ * ResizeObserver); `disconnect()` stops watching.
+ * @param {HTMLElement} box
+ * @param {() => void} redraw
+ */
+export function watchWidth(box, redraw) {
+  /** @type {ResizeObserver | null} */
+  let ro = null;
+  if (typeof ResizeObserver === 'function') {
+    let lastW = 0;
+    ro = new ResizeObserver(() => {
+      const w = box.clientWidth;
+      if (w && Math.abs(w - lastW) > 4) {
+        lastW = w;
+        redraw();
+      }
+    });
+    ro.observe(box);
+  }
+  return {
+    disconnect() {
+      if (ro) ro.disconnect();
+    },
+  };
 }

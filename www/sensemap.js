@@ -167,8 +167,9 @@ export function rateError(text) {
 }
 
 /**
- * The FE wing the sensing analysis can use: the store's `fe` when the FE mode set is chosen and
- * the live result was computed with that wing's modes; else null.
+ * The FE wing the sensing analysis can use, and the one the strain panel's map is drawn for
+ * (views/strain-map.js): the store's `fe` when the FE mode set is chosen and the live result was
+ * computed with that wing's modes; else null.
  * @param {any} s store state
  */
 export const senseFe = (s) =>

@@ -1,7 +1,8 @@
-// The planform map's frame (www/planform.js), shared by the strain and sensing panels.
+// The planform map (www/planform.js), shared by the strain and sensing panels: its frame, the
+// picked point's ring and the redraw on a change of the box's width.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { planformFrame, KEY_STEP_MM, onPlanform } from '../../www/planform.js';
+import { planformFrame, KEY_STEP_MM, onPlanform, drawRing, watchWidth } from '../../www/planform.js';
 
 test('a planform fills the width, keeps its aspect and maps mm to pixels inside the margins', () => {
   // A 40 mm × 10 mm rectangle (nodes in m), drawn 400 px wide with 10 px margins.
@@ -42,4 +43,74 @@ test('onPlanform: a point (mm) is on the wing inside its triangles or on their e
   assert.equal(onPlanform(nodes, tris, 41, -5), false, 'beyond the tip');
   assert.equal(onPlanform(nodes, [0, 1, 2], 1, -9), false, 'only the triangles count, not the nodes’ hull');
   assert.equal(onPlanform([], [], 0, 0), false);
+});
+
+test('drawRing strokes a dark 3 px circle, then the light 1.5 px one, both at the radius', () => {
+  const log = [];
+  const c2 = {
+    set lineWidth(v) {
+      log.push(['lineWidth', v]);
+    },
+    set strokeStyle(v) {
+      log.push(['strokeStyle', v]);
+    },
+    beginPath: () => log.push(['beginPath']),
+    arc: (...a) => log.push(['arc', ...a]),
+    stroke: () => log.push(['stroke']),
+  };
+  drawRing(/** @type {any} */ (c2), 12, 34, 6, '#fff');
+  const ring = (w, colour) => [
+    ['lineWidth', w],
+    ['strokeStyle', colour],
+    ['beginPath'],
+    ['arc', 12, 34, 6, 0, 2 * Math.PI],
+    ['stroke'],
+  ];
+  assert.deepEqual(log, [...ring(3, '#111'), ...ring(1.5, '#fff')]);
+});
+
+test('watchWidth redraws when the box width changes by more than 4 px, and stops on disconnect', () => {
+  const had = globalThis.ResizeObserver;
+  /** @type {any} */
+  let made = null;
+  globalThis.ResizeObserver = /** @type {any} */ (
+    class {
+      constructor(cb) {
+        this.cb = cb;
+        this.watching = null;
+        made = this;
+      }
+      observe(b) {
+        this.watching = b;
+      }
+      disconnect() {
+        this.watching = null;
+      }
+    }
+  );
+  try {
+    const box = { clientWidth: 0 };
+    let draws = 0;
+    const w = watchWidth(/** @type {any} */ (box), () => draws++);
+    assert.equal(made.watching, box);
+    const resize = (px) => {
+      box.clientWidth = px;
+      made.cb();
+    };
+    resize(0); // not laid out yet
+    assert.equal(draws, 0);
+    resize(300);
+    assert.equal(draws, 1);
+    resize(304); // within 4 px of the last drawn width
+    assert.equal(draws, 1);
+    resize(305);
+    assert.equal(draws, 2);
+    w.disconnect();
+    assert.equal(made.watching, null);
+  } finally {
+    globalThis.ResizeObserver = had;
+  }
+  // without ResizeObserver (node): nothing to watch, disconnect is harmless
+  const w = watchWidth(/** @type {any} */ ({ clientWidth: 10 }), () => assert.fail('no redraw'));
+  w.disconnect();
 });

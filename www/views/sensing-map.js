@@ -1,8 +1,8 @@
 // @ts-check
 // The sensing panel's planform map (views/sensing.js): its box (canvas, legend, words, the
 // 3-D button, the sensor list) and the drawing on it: the numbered sensor markers (sensors closer
-// than a marker share one label), the ring at the picked point, and the colour legend. The
-// planform's fill is www/planform.js.
+// than a marker share one label) and the colour legend. The planform's fill and the ring at the
+// picked point are www/planform.js.
 import { el } from '../dom.js';
 import { viridis } from '../plot.js';
 import { context2d } from '../export.js';
@@ -49,25 +49,6 @@ export function drawSensorMarkers(c2, marks) {
     c2.fillText(label, lx, ly + 0.5);
   }
   return groups;
-}
-
-/**
- * The picked point: a ring with a dark and a light edge.
- * @param {CanvasRenderingContext2D} c2
- * @param {number} x canvas px
- * @param {number} y canvas px
- */
-export function drawPickRing(c2, x, y) {
-  c2.lineWidth = 3;
-  c2.strokeStyle = '#111';
-  c2.beginPath();
-  c2.arc(x, y, 11, 0, 2 * Math.PI);
-  c2.stroke();
-  c2.lineWidth = 1.5;
-  c2.strokeStyle = '#ff3d7f';
-  c2.beginPath();
-  c2.arc(x, y, 11, 0, 2 * Math.PI);
-  c2.stroke();
 }
 
 /**

@@ -15,11 +15,11 @@ import { fmt } from '../format.js';
 import { viridis } from '../plot.js';
 import { toQuery } from '../state.js';
 import { mapScale, deltaAt, senseFe, legendWords, senseMapOf, senseCsvColumns, COMP_LABEL } from '../sensemap.js';
-import { fitPlanform, fillPlanform, pickOnMap, onPlanform } from '../planform.js';
+import { fitPlanform, fillPlanform, pickOnMap, onPlanform, drawRing, watchWidth } from '../planform.js';
 import { experimentQuery } from '../experiments.js';
 import { sensingControls } from './sensing-controls.js';
 import { sensingPlots } from './sensing-plots.js';
-import { sensingMapBox, drawSensorMarkers, drawPickRing, drawViridisLegend } from './sensing-map.js';
+import { sensingMapBox, drawSensorMarkers, drawViridisLegend } from './sensing-map.js';
 import { senseJob } from './sensing-job.js';
 
 export const title = 'Sensing body rotation';
@@ -141,7 +141,7 @@ export function mount(ctx) {
     canvas.dataset.markers = JSON.stringify(groups.map((g) => g.ranks));
     const p = point || (have ? result.point_mm : null);
     if (p) {
-      drawPickRing(c2, px(p[0]), py(p[1]));
+      drawRing(c2, px(p[0]), py(p[1]), 11, '#ff3d7f');
       canvas.dataset.point = `${p[0]},${p[1]}`;
     }
     drawViridisLegend(legend);
@@ -320,23 +320,11 @@ function watchVisibleAndSize(section, box, onVisible, onResize) {
     io = new IntersectionObserver((entries) => onVisible(entries.some((e) => e.isIntersecting)));
     io.observe(section);
   }
-  /** @type {ResizeObserver | null} */
-  let ro = null;
-  if (typeof ResizeObserver === 'function') {
-    let lastW = 0;
-    ro = new ResizeObserver(() => {
-      const w = box.clientWidth;
-      if (w && Math.abs(w - lastW) > 4) {
-        lastW = w;
-        onResize();
-      }
-    });
-    ro.observe(box);
-  }
+  const width = watchWidth(box, onResize);
   return {
     disconnect() {
       if (io) io.disconnect();
-      if (ro) ro.disconnect();
+      width.disconnect();
     },
   };
 }

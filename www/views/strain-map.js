@@ -20,7 +20,8 @@ import {
   colourAt,
 } from '../strainmap.js';
 import { context2d } from '../export.js';
-import { fitPlanform, fillPlanform, pickOnMap, onPlanform } from '../planform.js';
+import { senseFe } from '../sensemap.js';
+import { fitPlanform, fillPlanform, pickOnMap, onPlanform, drawRing, watchWidth } from '../planform.js';
 
 /**
  * A peak map visits every sample of every node (~0.5 s for 1650 nodes × 20 000 samples × 6
@@ -44,14 +45,6 @@ export function strainFieldOf(engine) {
     /** @type {{ component: string, stat: string }} */ opts,
   ) => engine.strainField(qs, opts);
 }
-
-/**
- * The FE wing the map is drawn for: the store's, when the FE mode set is in use and the run in
- * the store has as many modes as the wing; else null.
- * @param {any} s the store's state
- */
-export const mapFeOf = (s) =>
-  s.modes === 'fe' && s.fe && s.result && s.result.analysis.sim.modes.length === s.fe.n_modes ? s.fe : null;
 
 /**
  * The strain point in use, mm: the store's, else the FE wing's default (the one feModes used),
@@ -112,25 +105,6 @@ function strainMapBox(ctx, touch) {
     mapNote,
   );
   return { box, comp, stat, controls, canvas, legend, legendText, pointText, mapNote };
-}
-
-/**
- * The strain point as a ring with a dark and a light edge (visible on every colour).
- * @param {CanvasRenderingContext2D} c2
- * @param {number} cx
- * @param {number} cy
- */
-function drawPointRing(c2, cx, cy) {
-  c2.lineWidth = 3;
-  c2.strokeStyle = '#111';
-  c2.beginPath();
-  c2.arc(cx, cy, 6, 0, 2 * Math.PI);
-  c2.stroke();
-  c2.lineWidth = 1.5;
-  c2.strokeStyle = '#fff';
-  c2.beginPath();
-  c2.arc(cx, cy, 6, 0, 2 * Math.PI);
-  c2.stroke();
 }
 
 /**
@@ -200,7 +174,7 @@ export function strainMapView(ctx, touch) {
   /** Draws the planform map; `force`: compute a peak map now (else it waits PEAK_DELAY_MS). */
   function draw(force = false) {
     const s = store.get();
-    const fe = mapFeOf(s);
+    const fe = senseFe(s);
     const c2 = context2d(canvas);
     box.dataset.state = fe ? 'ready' : 'none';
     const map = mapOf(s);
@@ -241,7 +215,7 @@ export function strainMapView(ctx, touch) {
       return st ? colourAt(st, tOf(v)) : [200, 200, 200];
     });
     const [sx, sy] = strainPointOf(s);
-    drawPointRing(c2, (sx - fr.x0) * fr.k, (fr.y1 - sy) * fr.k);
+    drawRing(c2, (sx - fr.x0) * fr.k, (fr.y1 - sy) * fr.k, 6, '#fff');
     canvas.dataset.point = `${sx},${sy}`;
     drawLegendBar(legend, st, signed);
     const what = `${MAP_LABELS[map.stat]} of ${MAP_LABELS[map.component]}`;
@@ -261,7 +235,7 @@ export function strainMapView(ctx, touch) {
 
   /** Sets the strain point if (x, y) mm lies on the wing; says so otherwise. */
   function choose(x, y) {
-    const fe = mapFeOf(store.get());
+    const fe = senseFe(store.get());
     if (!fe) return false;
     if (!onPlanform(fe.nodes, fe.triangles, x, y)) {
       pointText.textContent = `(${fmt(x, 3)}, ${fmt(y, 3)}) mm is outside the wing: choose a point on the wing.`;
@@ -282,7 +256,7 @@ export function strainMapView(ctx, touch) {
   ctx.registerExport('strainmap', {
     csv: () => {
       const s = store.get();
-      const fe = mapFeOf(s);
+      const fe = senseFe(s);
       if (!fe || !field || field.length !== fe.nodes.length / 3) return null;
       const n = field.length;
       const map = mapOf(s);
@@ -298,21 +272,9 @@ export function strainMapView(ctx, touch) {
         ],
       );
     },
-    canvas: () => (mapFeOf(store.get()) && field ? canvas : null),
+    canvas: () => (senseFe(store.get()) && field ? canvas : null),
   });
-  /** @type {ResizeObserver | null} */
-  let ro = null;
-  if (typeof ResizeObserver === 'function') {
-    let lastW = 0;
-    ro = new ResizeObserver(() => {
-      const w = box.clientWidth;
-      if (w && Math.abs(w - lastW) > 4) {
-        lastW = w;
-        draw();
-      }
-    });
-    ro.observe(box);
-  }
+  const width = watchWidth(box, draw);
   return {
     box,
     draw,
@@ -322,7 +284,7 @@ export function strainMapView(ctx, touch) {
     },
     destroy: () => {
       clearTimeout(peakTimer);
-      if (ro) ro.disconnect();
+      width.disconnect();
     },
   };
 }
