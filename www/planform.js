@@ -5,6 +5,7 @@
 // drawn as a ring, and whether a point lies on the wing.
 import { context2d } from './export.js';
 import { pick } from './scene3d.js';
+import { fmt } from './format.js';
 
 /** Arrow-key step of the picked point on a map, mm (Shift: ×4). */
 export const KEY_STEP_MM = 0.5;
@@ -144,6 +145,24 @@ export function pickOnMap(canvas, frameOf, pointOf, choose) {
     const step = KEY_STEP_MM * (e.shiftKey ? 4 : 1);
     choose(p[0] + d[0] * step, p[1] + d[1] * step);
   });
+}
+
+/**
+ * A point chosen on a map (mm), rounded to 0.001 mm, when it lies on the wing; else null, and
+ * `note` says that it is outside the wing.
+ * @param {{ nodes: ArrayLike<number>, triangles: ArrayLike<number> }} fe
+ * @param {number} x mm
+ * @param {number} y mm
+ * @param {{ textContent: string | null }} note
+ * @returns {number[] | null}
+ */
+export function pointOnWing(fe, x, y, note) {
+  if (!onPlanform(fe.nodes, fe.triangles, x, y)) {
+    note.textContent = `(${fmt(x, 3)}, ${fmt(y, 3)}) mm is outside the wing: choose a point on the wing.`;
+    return null;
+  }
+  const r = (/** @type {number} */ v) => Math.round(v * 1000) / 1000;
+  return [r(x), r(y)];
 }
 
 /**

@@ -2,7 +2,7 @@
 // picked point's ring and the redraw on a change of the box's width.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { planformFrame, KEY_STEP_MM, onPlanform, drawRing, watchWidth } from '../../www/planform.js';
+import { planformFrame, KEY_STEP_MM, onPlanform, pointOnWing, drawRing, watchWidth } from '../../www/planform.js';
 
 test('a planform fills the width, keeps its aspect and maps mm to pixels inside the margins', () => {
   // A 40 mm × 10 mm rectangle (nodes in m), drawn 400 px wide with 10 px margins.
@@ -43,6 +43,15 @@ test('onPlanform: a point (mm) is on the wing inside its triangles or on their e
   assert.equal(onPlanform(nodes, tris, 41, -5), false, 'beyond the tip');
   assert.equal(onPlanform(nodes, [0, 1, 2], 1, -9), false, 'only the triangles count, not the nodes’ hull');
   assert.equal(onPlanform([], [], 0, 0), false);
+});
+
+test('pointOnWing: a point on the wing rounded to 0.001 mm; off the wing null, and the note says why', () => {
+  const fe = { nodes: [0, 0, 0, 0.04, 0, 0, 0.04, -0.01, 0, 0, -0.01, 0], triangles: [0, 1, 2, 0, 2, 3] };
+  const note = { textContent: 'before' };
+  assert.deepEqual(pointOnWing(fe, 20.12345, -5.00049, note), [20.123, -5]);
+  assert.equal(note.textContent, 'before', 'a point on the wing leaves the note alone');
+  assert.equal(pointOnWing(fe, 41, -5, note), null);
+  assert.match(note.textContent, /^\(41, -5\) mm is outside the wing/);
 });
 
 test('drawRing strokes a dark 3 px circle, then the light 1.5 px one, both at the radius', () => {

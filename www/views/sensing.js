@@ -15,7 +15,7 @@ import { fmt } from '../format.js';
 import { viridis } from '../plot.js';
 import { toQuery } from '../state.js';
 import { mapScale, deltaAt, senseFe, legendWords, senseMapOf, senseCsvColumns, COMP_LABEL } from '../sensemap.js';
-import { fitPlanform, fillPlanform, pickOnMap, onPlanform, drawRing, watchWidth } from '../planform.js';
+import { fitPlanform, fillPlanform, pickOnMap, pointOnWing, drawRing, watchWidth } from '../planform.js';
 import { experimentQuery } from '../experiments.js';
 import { sensingControls } from './sensing-controls.js';
 import { sensingPlots } from './sensing-plots.js';
@@ -221,12 +221,9 @@ export function mount(ctx) {
   function choose(x, y) {
     const fe = senseFe(store.get());
     if (!fe) return false;
-    if (!onPlanform(fe.nodes, fe.triangles, x, y)) {
-      pointText.textContent = `(${fmt(x, 3)}, ${fmt(y, 3)}) mm is outside the wing: choose a point on the wing.`;
-      return false;
-    }
-    const r = (v) => Math.round(v * 1000) / 1000;
-    point = [r(x), r(y)];
+    const p = pointOnWing(fe, x, y, pointText);
+    if (!p) return false;
+    point = p;
     drawMap();
     drawSeries();
     schedule();

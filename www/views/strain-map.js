@@ -21,7 +21,7 @@ import {
 } from '../strainmap.js';
 import { context2d } from '../export.js';
 import { senseFe } from '../sensemap.js';
-import { fitPlanform, fillPlanform, pickOnMap, onPlanform, drawRing, watchWidth } from '../planform.js';
+import { fitPlanform, fillPlanform, pickOnMap, pointOnWing, drawRing, watchWidth } from '../planform.js';
 
 /**
  * A peak map visits every sample of every node (~0.5 s for 1650 nodes × 20 000 samples × 6
@@ -237,12 +237,9 @@ export function strainMapView(ctx, touch) {
   function choose(x, y) {
     const fe = senseFe(store.get());
     if (!fe) return false;
-    if (!onPlanform(fe.nodes, fe.triangles, x, y)) {
-      pointText.textContent = `(${fmt(x, 3)}, ${fmt(y, 3)}) mm is outside the wing: choose a point on the wing.`;
-      return false;
-    }
-    const r = (v) => Math.round(v * 1000) / 1000;
-    store.set({ strain_point: [r(x), r(y)] });
+    const p = pointOnWing(fe, x, y, pointText);
+    if (!p) return false;
+    store.set({ strain_point: p });
     return true;
   }
 
