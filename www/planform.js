@@ -154,7 +154,7 @@ export function pickOnMap(canvas, frameOf, pointOf, choose) {
  * @param {number} x mm
  * @param {number} y mm
  * @param {{ textContent: string | null }} note
- * @returns {number[] | null}
+ * @returns {[number, number] | null}
  */
 export function pointOnWing(fe, x, y, note) {
   if (!onPlanform(fe.nodes, fe.triangles, x, y)) {
