@@ -93,7 +93,13 @@ export async function openPage(browser, _url, viewport = { width: 1280, height: 
     problems.push(`dialog: ${d.message()}`);
     d.dismiss();
   });
-  page.on('requestfailed', (r) => problems.push(`requestfailed: ${r.url()}`));
+  // A request the browser cancels because its page or worker went away (a navigation, a closed
+  // context) is not a fault; any other failure is. (A missing file is a 404 response, not a
+  // failed request.)
+  page.on('requestfailed', (r) => {
+    const why = r.failure()?.errorText ?? '';
+    if (why !== 'net::ERR_ABORTED') problems.push(`requestfailed: ${r.url()} (${why})`);
+  });
   page.on('request', (r) => {
     if (!r.url().startsWith('http://127.0.0.1') && !r.url().startsWith('blob:') && !r.url().startsWith('data:'))
       problems.push(`external request: ${r.url()}`);

@@ -102,6 +102,8 @@ test('6 modes: table, picker, spectra and 3-D view use every mode', async () => 
   await page.waitForFunction(() => document.querySelector('wing-lab').store.get().result.k === 5, null, {
     timeout: 20000,
   });
+  // The panels redraw one per task after a new result (www/lab/draws.js): wait for the spectrum's.
+  await page.locator('wing-lab section.wl-spectrum', { hasText: /Mode 6/ }).waitFor({ timeout: 20000 });
   assert.match(await page.textContent('wing-lab section.wl-spectrum'), /Mode 6/);
   assert.equal(await page.getAttribute('wing-lab table.wl-numtable', 'data-selected'), '6');
   // 3-D view: the deflection uses all six q_k.
