@@ -4,12 +4,15 @@
 
 pub mod angles;
 pub mod beat;
+pub mod classify;
 pub mod contribution;
 pub mod ic_map;
+pub mod neural;
 pub mod psd;
 pub mod resonance;
 pub mod sensing;
 pub mod spectra;
+pub mod sspoc;
 pub mod strain;
 pub mod sweep;
 
