@@ -1,0 +1,63 @@
+//! Classification of sensor readings at the published problem's size (Mohren et al. 2018: 1326
+//! sensors, two classes × 2700 training samples, 300 test samples each), on synthetic data of
+//! the same shape (six smooth "modes" over a 26 × 51 grid driven by sines, plus noise; class 1
+//! adds a small seventh pattern). Timed: the discriminant on all sensors, SSPOC (randomised SVD
+//! r = 30, discriminant in mode space, the conic program), and the accuracy on the test set.
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use nalgebra::DMatrix;
+use std::hint::black_box;
+use wingbeat::analysis::classify::{Discriminant, ThresholdRule};
+use wingbeat::analysis::sspoc::{sspoc, SensorCount, SspocConfig};
+
+fn data(n: usize, class: usize, t0: f64) -> DMatrix<f64> {
+    let (nc, ns) = (26, 51);
+    DMatrix::from_fn(n, nc * ns, |i, s| {
+        let t = t0 + i as f64 * 1e-3;
+        let (c, y) = ((s % nc) as f64 / 25.0, (s / nc) as f64 / 50.0);
+        let mut v = 0.0;
+        for k in 1..=6 {
+            let kf = k as f64;
+            v += (kf * y * 1.7).sin()
+                * (1.0 + (kf * c).cos())
+                * (std::f64::consts::TAU * 25.0 * kf * t + kf).sin()
+                / kf;
+        }
+        if class == 1 {
+            v += 0.05 * (c - 0.5) * y * (std::f64::consts::TAU * 50.0 * t).cos();
+        }
+        // a deterministic hash as noise
+        let h = ((i * 7919 + s * 104_729 + class * 13) % 10_007) as f64 / 10_007.0 - 0.5;
+        v + 0.01 * h
+    })
+}
+
+fn bench_classify(c: &mut Criterion) {
+    let (train0, train1) = (data(2700, 0, 1.0), data(2700, 1, 1.0));
+    let (test0, test1) = (data(300, 0, 3.7), data(300, 1, 3.7));
+    let mut g = c.benchmark_group("classify_published_size");
+    g.sample_size(10);
+    g.bench_function("discriminant_all_1326_sensors", |b| {
+        b.iter(|| {
+            black_box(Discriminant::fit(&train0, &train1, ThresholdRule::GaussianCrossing).unwrap())
+        });
+    });
+    let cfg = SspocConfig {
+        rank: 30,
+        kept_modes: 10,
+        l1_weight: 0.9,
+        sensors: SensorCount::Cutoff,
+        seed: 1,
+    };
+    g.bench_function("sspoc_r30", |b| {
+        b.iter(|| black_box(sspoc(&train0, &train1, &cfg).unwrap()))
+    });
+    let lda = Discriminant::fit(&train0, &train1, ThresholdRule::GaussianCrossing).unwrap();
+    g.bench_function("accuracy_600_test_samples", |b| {
+        b.iter(|| black_box(lda.accuracy(&test0, &test1)))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_classify);
+criterion_main!(benches);
