@@ -50,11 +50,11 @@ fn bench_classify(c: &mut Criterion) {
         seed: 1,
     };
     g.bench_function("sspoc_r30", |b| {
-        b.iter(|| black_box(sspoc(&train0, &train1, &cfg).unwrap()))
+        b.iter(|| black_box(sspoc(&train0, &train1, &cfg).unwrap()));
     });
     let lda = Discriminant::fit(&train0, &train1, ThresholdRule::GaussianCrossing).unwrap();
     g.bench_function("accuracy_600_test_samples", |b| {
-        b.iter(|| black_box(lda.accuracy(&test0, &test1)))
+        b.iter(|| black_box(lda.accuracy(&test0, &test1)));
     });
     g.finish();
 }
