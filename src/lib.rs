@@ -5,6 +5,7 @@
 //!
 //! * [`kinematics`] — roll α, pitch β, yaw γ and the frame's angular velocity Ω (Eq. 1);
 //!   [`kinematics_table`] turns a measured CSV table of them into periodic kinematics;
+//!   [`disturbance`] draws a seeded, non-periodic angular-velocity disturbance;
 //! * [`model`] — the modal equation of motion, Eq. 13, and its three force terms;
 //! * [`aero`] — the wing in air: quadrature over the FE wing, aerodynamic force, damping and
 //!   added mass, the coupled solve and its Floquet analysis;
@@ -48,6 +49,7 @@
 pub mod aero;
 pub mod analysis;
 pub mod config;
+pub mod disturbance;
 pub mod error;
 pub mod fem;
 pub mod floquet;
