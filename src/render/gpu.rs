@@ -214,15 +214,8 @@ pub struct Renderer {
     plane_pipeline: wgpu::RenderPipeline,
     uniform_buf: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
-    wing_vb: wgpu::Buffer,
-    field_vb: wgpu::Buffer,
-    field: Vec<f32>,
-    wing_ib: wgpu::Buffer,
-    n_indices: u32,
-    line_vb: wgpu::Buffer,
-    n_line_vertices: u32,
-    plane_vb: wgpu::Buffer,
-    n_plane_vertices: u32,
+    /// The wing's and the scene's buffers, uploaded once.
+    scene: SceneBuffers,
     depth: Option<(wgpu::Texture, wgpu::TextureView)>,
     size: (u32, u32),
     mesh: WingMesh,
@@ -634,18 +627,10 @@ impl Renderer {
             plane_pipeline: pipelines.plane,
             uniform_buf: uniforms.buf,
             bind_group: uniforms.bind_group,
-            wing_vb: b.wing_vb,
-            field_vb: b.field_vb,
-            field: b.field,
-            wing_ib: b.wing_ib,
-            n_indices: b.n_indices,
-            line_vb: b.line_vb,
-            n_line_vertices: b.n_line_vertices,
-            plane_vb: b.plane_vb,
-            n_plane_vertices: b.n_plane_vertices,
+            camera: OrbitCamera::for_span(b.span),
+            scene: b,
             depth: None,
             size: (0, 0),
-            camera: OrbitCamera::for_span(b.span),
             mesh,
             frame,
             inv_range: 0.0,
@@ -672,7 +657,7 @@ impl Renderer {
             )));
         }
         let mut bad = 0usize;
-        self.field = values
+        self.scene.field = values
             .iter()
             .map(|&v| {
                 let x = v as f32;
@@ -684,14 +669,17 @@ impl Renderer {
                 }
             })
             .collect();
-        self.queue
-            .write_buffer(&self.field_vb, 0, bytemuck::cast_slice(&self.field));
+        self.queue.write_buffer(
+            &self.scene.field_vb,
+            0,
+            bytemuck::cast_slice(&self.scene.field),
+        );
         Ok((bad > 0).then(|| format!("{bad} non-finite field value(s) drawn as 0")))
     }
 
     /// The node field as uploaded (zeros until [`Renderer::set_node_field`]).
     pub fn node_field(&self) -> &[f32] {
-        &self.field
+        &self.scene.field
     }
 
     /// Notices from construction (e.g. modes dropped beyond [`MAX_MODES`]).
@@ -774,7 +762,7 @@ impl Renderer {
             self.mesh.strain_field(q)
         };
         let legend = if f.colour == ColourMode::Field {
-            Some(legend_for_field(&self.field, f.strain_range))
+            Some(legend_for_field(&self.scene.field, f.strain_range))
         } else {
             legend_for(f.colour, &field, f.strain_range)
         };
@@ -894,15 +882,15 @@ impl Renderer {
             });
             pass.set_bind_group(0, &self.bind_group, &[]);
             pass.set_pipeline(&self.wing_pipeline);
-            pass.set_vertex_buffer(0, self.wing_vb.slice(..));
-            pass.set_vertex_buffer(1, self.field_vb.slice(..));
-            pass.set_index_buffer(self.wing_ib.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..self.n_indices, 0, 0..1);
+            pass.set_vertex_buffer(0, self.scene.wing_vb.slice(..));
+            pass.set_vertex_buffer(1, self.scene.field_vb.slice(..));
+            pass.set_index_buffer(self.scene.wing_ib.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..self.scene.n_indices, 0, 0..1);
             let f = &self.frame;
             if f.show_axes || f.show_body_axis || f.show_stroke_plane {
-                debug_assert_eq!(self.n_line_vertices, PLANE_EDGE_VERTICES.end);
+                debug_assert_eq!(self.scene.n_line_vertices, PLANE_EDGE_VERTICES.end);
                 pass.set_pipeline(&self.line_pipeline);
-                pass.set_vertex_buffer(0, self.line_vb.slice(..));
+                pass.set_vertex_buffer(0, self.scene.line_vb.slice(..));
                 for (show, range) in [
                     (f.show_axes, AXES_VERTICES),
                     (f.show_body_axis, BODY_AXIS_VERTICES),
@@ -915,8 +903,8 @@ impl Renderer {
             }
             if self.frame.show_stroke_plane {
                 pass.set_pipeline(&self.plane_pipeline);
-                pass.set_vertex_buffer(0, self.plane_vb.slice(..));
-                pass.draw(0..self.n_plane_vertices, 0..1);
+                pass.set_vertex_buffer(0, self.scene.plane_vb.slice(..));
+                pass.draw(0..self.scene.n_plane_vertices, 0..1);
             }
         }
         self.queue.submit(Some(enc.finish()));
