@@ -6,22 +6,8 @@
 use nalgebra::{DMatrix, DVector};
 use wingbeat::analysis::classify::{Discriminant, ThresholdRule};
 
-/// splitmix64 → uniform (0, 1) → standard normals by Box–Muller; deterministic.
-struct Normals(u64);
-impl Normals {
-    fn uniform(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^= z >> 31;
-        ((z >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-    }
-    fn normal(&mut self) -> f64 {
-        let (u, v) = (self.uniform(), self.uniform());
-        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
-    }
-}
+mod normals_common;
+use normals_common::Normals;
 
 /// Φ(x) from erfc by its continued-fraction-free series (Abramowitz & Stegun 7.1.26, |error| ≤ 1.5e-7).
 fn phi(x: f64) -> f64 {
