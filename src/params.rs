@@ -19,10 +19,10 @@ use crate::kinematics::{Angle, Harmonic};
 use serde::Serialize;
 
 pub use crate::ranges::{
-    body_rate_range, find, material_range, parameters, BodyRateRange, MaterialRange, Param, ALPHA0,
-    ALPHA_PHASE, BETA0, BETA_PHASE, BODY_RATE_RANGES, CAMBER, CLAMP_MM, DURATION, E_PA, FLAP_HZ,
-    GAMMA0, GAMMA_PHASE, LAB_MAX_MODES, MATERIAL_RANGES, MAX_BODY_RATE_RAD_S, MESH_MM, NU, N_MODES,
-    PARAMS, PHASE_LIMIT, RHO, THICKNESS_UM, ZETA,
+    body_rate_range, find, material_range, parameters, BodyRateRange, MaterialRange, Param,
+    AIR_DENSITY, ALPHA0, ALPHA_PHASE, BETA0, BETA_PHASE, BODY_RATE_RANGES, CAMBER, CLAMP_MM,
+    DURATION, E_PA, FLAP_HZ, GAMMA0, GAMMA_PHASE, LAB_MAX_MODES, MATERIAL_RANGES,
+    MAX_BODY_RATE_RAD_S, MESH_MM, NU, N_MODES, PARAMS, PHASE_LIMIT, RHO, THICKNESS_UM, ZETA,
 };
 
 fn unknown_key(key: &str, field: impl Fn(&str) -> String) -> WingbeatError {
@@ -92,7 +92,8 @@ fn set_first_phase(angle: &mut Angle, field: &str, v: f64) -> Result<()> {
 /// `alpha0`, `beta0`, `gamma0`: the amplitude of the angle's first harmonic, rad (added with
 /// zero phase when missing); `alpha_phase`, `beta_phase`, `gamma_phase`: its phase, rad;
 /// `flap_hz`: the flap frequency, Hz; `zeta`: every mode's damping ratio; `duration`: the
-/// simulated time, s. No range check (sweeps may go past the sliders; [`SimConfig::validate`]
+/// simulated time, s; `air_density`: the medium's density, kg/m³ (`aero.air_density_kg_m3`;
+/// above 0 the run needs the FE wing's shapes, `SimConfig::wing`). No range check (sweeps may go past the sliders; [`SimConfig::validate`]
 /// judges the result). Errors: an unknown key (named `overrides.KEY`, the known ones listed),
 /// an amplitude or phase of a sampled angle (named `kinematics.ANGLE`); `c` is unchanged then.
 pub fn set_param(c: &mut SimConfig, key: &str, v: f64) -> Result<()> {
@@ -114,6 +115,10 @@ pub fn set_param(c: &mut SimConfig, key: &str, v: f64) -> Result<()> {
         GAMMA_PHASE => set_first_phase(&mut k.gamma, "kinematics.gamma", v),
         DURATION => {
             c.duration_s = v;
+            Ok(())
+        }
+        AIR_DENSITY => {
+            c.aero.air_density_kg_m3 = v;
             Ok(())
         }
         other => Err(unknown_key(other, |k| format!("overrides.{k}"))),
@@ -169,7 +174,8 @@ pub fn apply_values<K: AsRef<str>>(
 
 /// `base` with the named parameters set: `alpha0`, `beta0`, `gamma0` (first-harmonic
 /// amplitudes, rad), `flap_hz` (Hz), `zeta` (every mode's damping ratio), `alpha_phase`,
-/// `beta_phase`, `gamma_phase` (first-harmonic phases, rad), `duration` (s). What the lab
+/// `beta_phase`, `gamma_phase` (first-harmonic phases, rad), `duration` (s), `air_density`
+/// (kg/m³). What the lab
 /// calls (wasm `applyOverrides`): [`apply_values`] with the slider ranges, then
 /// [`SimConfig::validate`].
 ///

@@ -51,6 +51,8 @@ pub const BETA_PHASE: &str = "beta_phase";
 pub const GAMMA_PHASE: &str = "gamma_phase";
 /// Simulated duration key.
 pub const DURATION: &str = "duration";
+/// Fluid density key (the medium: 0 vacuum, 0.18 helium, 1.2 air).
+pub const AIR_DENSITY: &str = "air_density";
 
 /// Largest phase on the sliders, rad: the last point of the 0.01 rad step grid below π
 /// (deliberately not π itself, so that the range ends on its step grid).
@@ -58,8 +60,10 @@ pub const DURATION: &str = "duration";
 pub const PHASE_LIMIT: f64 = 3.14;
 
 /// Every numeric parameter of the lab, in slider order. The duration reaches 10 s so that the
-/// damping experiment (ζ = 0.01, paper §4.3) can run long enough to see the beat die out.
-pub const PARAMS: [Param; 9] = [
+/// damping experiment (ζ = 0.01, paper §4.3) can run long enough to see the beat die out. The
+/// fluid density's slider stops at 2 kg/m³ (gases an insect flies in; the core accepts up to
+/// [`crate::aero::MAX_DENSITY`] through the config and the CLI).
+pub const PARAMS: [Param; 10] = [
     Param {
         key: ALPHA0,
         symbol: "α0",
@@ -149,6 +153,16 @@ pub const PARAMS: [Param; 9] = [
         max: 10.0,
         step: 0.1,
         default: 2.0,
+    },
+    Param {
+        key: AIR_DENSITY,
+        symbol: "ρ_air",
+        label: "ρ_air, fluid density (0 = vacuum)",
+        unit: "kg/m³",
+        min: 0.0,
+        max: 2.0,
+        step: 0.01,
+        default: 0.0,
     },
 ];
 

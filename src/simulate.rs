@@ -246,6 +246,12 @@ pub struct ForceSeries {
     /// stiffness; the same for every mode). Times q_k it is the stiffness force, see
     /// [`crate::model::stiffness_force`].
     pub stiffness_coefficient: Vec<f64>,
+    /// The aerodynamic force F_A,k(t) of the rigid motion in the config's medium (kg^½·m/s²,
+    /// like the other terms; docs/model.md, "The wing in air"): the quasi-steady normal
+    /// force and the added-mass reaction projected on the mode. Empty (and left out of the
+    /// JSON) in a vacuum.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub aerodynamic: Vec<f64>,
 }
 
 /// Which modes [`sample_forces`] samples.
@@ -276,15 +282,18 @@ impl ModeSelection {
 
 /// Samples the forcing terms and the stiffness coefficient of the selected modes at
 /// t_i = i / rate, i = 0..n (the simulation's output grid): the kinematic state once per
-/// sample, then [`crate::model::coefficients`] per mode. Unselected modes are `None`. The one
-/// force-sampling loop of the project; `cfg` must already be valid.
-pub fn sample_forces(cfg: &SimConfig, which: ModeSelection) -> Vec<Option<ForceSeries>> {
+/// sample, then [`crate::model::coefficients`] per mode; in a medium also the aerodynamic
+/// force (which needs `cfg.wing`: an error names the density otherwise). Unselected modes are
+/// `None`. The one force-sampling loop of the project; `cfg` must already be valid.
+pub fn sample_forces(cfg: &SimConfig, which: ModeSelection) -> Result<Vec<Option<ForceSeries>>> {
     let kin = cfg.kinematics.compile();
     let n = cfg.n_samples();
     let dt = 1.0 / cfg.sample_rate_hz;
     let states: Vec<_> = (0..n).map(|i| kin.state(i as f64 * dt)).collect();
     let coefficient: Vec<f64> = states.iter().map(stiffness_coefficient).collect();
-    cfg.modes
+    let mut aero = aerodynamic_forces(cfg, &states)?;
+    Ok(cfg
+        .modes
         .iter()
         .enumerate()
         .map(|(k, m)| {
@@ -296,6 +305,7 @@ pub fn sample_forces(cfg: &SimConfig, which: ModeSelection) -> Vec<Option<ForceS
                 centrifugal: Vec::with_capacity(n),
                 coriolis: Vec::with_capacity(n),
                 stiffness_coefficient: coefficient.clone(),
+                aerodynamic: aero.get_mut(k).map(std::mem::take).unwrap_or_default(),
             };
             for s in &states {
                 let c = crate::model::coefficients(m, s);
@@ -305,14 +315,49 @@ pub fn sample_forces(cfg: &SimConfig, which: ModeSelection) -> Vec<Option<ForceS
             }
             Some(fs)
         })
-        .collect()
+        .collect())
+}
+
+/// The aerodynamic force of the rigid motion on every mode at the kinematic `states` (one
+/// vector per mode), or none in a vacuum: the same quadrature and normal-force law the air
+/// run integrates ([`crate::aero::AeroWing::loads_nonlinear`] at zero elastic velocity).
+fn aerodynamic_forces(
+    cfg: &SimConfig,
+    states: &[crate::kinematics::RateState],
+) -> Result<Vec<Vec<f64>>> {
+    if cfg.aero.is_vacuum() {
+        return Ok(Vec::new());
+    }
+    let geom = cfg.wing.as_deref().ok_or_else(crate::aero::no_wing_error)?;
+    let n = cfg.modes.len();
+    geom.validate(n)?;
+    cfg.aero.validate()?;
+    let wing = crate::aero::AeroWing::build(geom, &cfg.aero)?;
+    let k = 0.5 * cfg.aero.air_density_kg_m3 * cfg.aero.normal_force_coefficient;
+    let rho_am = if cfg.aero.added_mass {
+        cfg.aero.air_density_kg_m3
+    } else {
+        0.0
+    };
+    let zero = vec![0.0; n];
+    let mut f = vec![0.0; n];
+    let mut out = vec![Vec::with_capacity(states.len()); n];
+    for s in states {
+        f.fill(0.0);
+        let fs = crate::aero::FrameState::from_state(s);
+        wing.loads_nonlinear(&fs, k, rho_am, &zero, &mut f);
+        for (o, v) in out.iter_mut().zip(&f) {
+            o.push(*v);
+        }
+    }
+    Ok(out)
 }
 
 /// Samples the forcing terms and the stiffness coefficient of every mode at t_i = i / rate,
 /// i = 0..n (validates the config, then [`sample_forces`] with [`ModeSelection::All`]).
 pub fn force_series(cfg: &SimConfig) -> Result<Vec<ForceSeries>> {
     cfg.validate()?;
-    Ok(sample_forces(cfg, ModeSelection::All)
+    Ok(sample_forces(cfg, ModeSelection::All)?
         .into_iter()
         .flatten()
         .collect())

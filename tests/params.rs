@@ -39,6 +39,11 @@ fn lab_config(v: &[(&str, f64)], base: &SimConfig) -> SimConfig {
         duration_s: get("duration"),
         sample_rate_hz: 10_000.0,
         initial_conditions: vec![],
+        aero: wingbeat::aero::AeroConfig::with_density(
+            v.iter()
+                .find(|(key, _)| *key == "air_density")
+                .map_or(0.0, |kv| kv.1),
+        ),
         ..SimConfig::paper()
     }
 }
@@ -57,7 +62,8 @@ fn table_has_the_contract_keys_in_order() {
             "alpha_phase",
             "beta_phase",
             "gamma_phase",
-            "duration"
+            "duration",
+            "air_density"
         ]
     );
     for p in &PARAMS {
@@ -134,6 +140,16 @@ fn defaults_are_the_paper_case() {
 #[test]
 fn overrides_equal_the_config_the_lab_built_by_hand() {
     let base = SimConfig::paper();
+    // The medium: only the density changes (the wing that air needs is attached by the caller).
+    let air = apply_overrides(&base, [("air_density", 1.2)]).unwrap();
+    assert_eq!(air.aero, wingbeat::aero::AeroConfig::with_density(1.2));
+    assert_eq!(
+        SimConfig {
+            aero: Default::default(),
+            ..air
+        },
+        base
+    );
     let sets: [[(&str, f64); 9]; 3] = [
         [
             ("alpha0", 1.2),

@@ -106,6 +106,47 @@ fn result_types_match_serde() {
     ts_common::check(&i, "Peak", &keys(&s.coriolis.peaks[0]));
 }
 
+/// The air's declarations against an air run of the FE wing: the medium's config, the per-mode
+/// `air` block, the run's `air` summary, and the aerodynamic keys of the responses, shares,
+/// forces and spectra (present in air, absent in a vacuum: the keys are optional).
+#[test]
+fn air_types_match_serde() {
+    let i = ts_common::interfaces(ts_common::declarations());
+    let base = SimConfig::fe_wing().unwrap();
+    let cfg = SimConfig {
+        duration_s: 0.1,
+        sample_rate_hz: 2000.0,
+        aero: wingbeat::aero::AeroConfig::with_density(1.2),
+        ..base
+    };
+    let mut cfg_keys = keys(&cfg);
+    assert!(cfg_keys.contains(&"aero".to_string()));
+    cfg_keys.sort();
+    ts_common::check(&i, "SimConfig", &cfg_keys);
+    ts_common::check(&i, "AeroConfig", &keys(&cfg.aero));
+    let r = simulate(&cfg).unwrap();
+    let m = &r.modes[0];
+    ts_common::check(&i, "ModeResult", &keys(m));
+    ts_common::check(&i, "ModeAir", &keys(m.air.as_ref().unwrap()));
+    ts_common::check(&i, "AirSummary", &keys(r.air.as_ref().unwrap()));
+    let q = keys(&m.q);
+    assert!(q.contains(&"aerodynamic".to_string()), "{q:?}");
+    ts_common::check(&i, "Responses", &q);
+    let c = keys(&m.contribution_percent);
+    assert!(c.contains(&"aerodynamic".to_string()), "{c:?}");
+    ts_common::check(&i, "Contributions", &c);
+    let f = force_series(&cfg).unwrap();
+    assert!(!f[0].aerodynamic.is_empty());
+    ts_common::check(&i, "ForceSeries", &keys(&f[0]));
+    let opts = WelchOptions {
+        segment_len: 64,
+        ..WelchOptions::default()
+    };
+    let s = mode_spectra(&f[0], &m.q.total, cfg.sample_rate_hz, &opts, Some(25.0)).unwrap();
+    assert!(s.aerodynamic.is_some());
+    ts_common::check(&i, "ModeSpectra", &keys(&s));
+}
+
 /// The own-wing and own-kinematics declarations against the core's serde types.
 #[test]
 fn lab_wing_types_match_serde() {

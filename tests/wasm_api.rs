@@ -924,3 +924,8 @@ fn unknown_nested_keys_are_refused() {
     )));
     assert!(m.contains("damping"), "{m}");
 }
+
+#[wasm_bindgen_test]
+fn air_run_matches_core() {
+    wasm_common::air_run_matches_core();
+}

@@ -9,7 +9,7 @@
 import { SCREEN_IDS } from './screens.js';
 
 /**
- * @typedef {{ key: 'alpha0' | 'beta0' | 'gamma0' | 'flap_hz' | 'zeta' | 'alpha_phase' | 'beta_phase' | 'gamma_phase' | 'duration',
+ * @typedef {{ key: 'alpha0' | 'beta0' | 'gamma0' | 'flap_hz' | 'zeta' | 'alpha_phase' | 'beta_phase' | 'gamma_phase' | 'duration' | 'air_density',
  *   label: string, sym: string, unit: string, min: number, max: number, step: number, def: number }} NumericParam
  * @typedef {{ key: 'modes' | 'mode' | 'detrend', label: string, choices: string[], def: string, disabled?: string[] }} EnumParam
  * @typedef {{ key: 'camber' | 'clamp' | 'e_pa' | 'rho' | 'nu' | 'thickness_um' | 'mesh_mm' | 'n_modes', core: string,
@@ -30,6 +30,16 @@ export const NUMERIC = [
   { key: 'beta_phase', label: 'Phase of β', sym: 'φ_β', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
   { key: 'gamma_phase', label: 'Phase of γ', sym: 'φ_γ', unit: 'rad', min: -3.14, max: 3.14, step: 0.01, def: 0 },
   { key: 'duration', label: 'Duration', sym: 'T_{sim}', unit: 's', min: 0.2, max: 10, step: 0.1, def: 2 },
+  {
+    key: 'air_density',
+    label: 'ρ_{air}, fluid density (0 = vacuum)',
+    sym: 'ρ_{air}',
+    unit: 'kg/m³',
+    min: 0,
+    max: 2,
+    step: 0.01,
+    def: 0,
+  },
 ];
 
 /**

@@ -23,6 +23,9 @@ pub struct ModeSpectra {
     pub stiffness_force: Spectrum,
     /// Total response q_k(t).
     pub total: Spectrum,
+    /// Aerodynamic force F_A,k(t) (in a medium; left out in a vacuum).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub aerodynamic: Option<Spectrum>,
 }
 
 /// The spectra of one mode: `forces` sampled by [`crate::simulate::sample_forces`] and
@@ -42,5 +45,10 @@ pub fn mode_spectra(
         coriolis: psd(&forces.coriolis)?,
         stiffness_force: psd(&stiffness_force(&forces.stiffness_coefficient, q_total))?,
         total: psd(q_total)?,
+        aerodynamic: if forces.aerodynamic.is_empty() {
+            None
+        } else {
+            Some(psd(&forces.aerodynamic)?)
+        },
     })
 }

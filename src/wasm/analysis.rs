@@ -69,7 +69,7 @@ struct Computed {
 
 fn compute(cfg: &SimConfig, which: Option<usize>) -> Result<Computed, JsError> {
     let sim = core_simulate(cfg).map_err(err)?;
-    let forces = sample_forces(cfg, ModeSelection::from_option(which));
+    let forces = sample_forces(cfg, ModeSelection::from_option(which)).map_err(err)?;
     Ok(Computed { sim, forces })
 }
 
@@ -115,6 +115,9 @@ fn spectra_js(c: &Computed, fs: f64, opts: &WelchOptions) -> Result<Array, JsErr
             ("total", &s.total),
         ] {
             set(&o, k, &spectrum_js(x)?)?;
+        }
+        if let Some(a) = &s.aerodynamic {
+            set(&o, "aerodynamic", &spectrum_js(a)?)?;
         }
         out.push(&o);
     }
@@ -172,8 +175,8 @@ pub fn analyze(
     let forces = Array::new();
     for (f, m) in c.forces.iter().zip(&c.sim.modes) {
         match f {
-            Some(f) => forces.push(
-                &obj_with(&[
+            Some(f) => {
+                let fo = obj_with(&[
                     ("euler", &f.euler),
                     ("centrifugal", &f.centrifugal),
                     ("coriolis", &f.coriolis),
@@ -181,9 +184,12 @@ pub fn analyze(
                         "stiffness_force",
                         &stiffness_force(&f.stiffness_coefficient, &m.q.total),
                     ),
-                ])?
-                .into(),
-            ),
+                ])?;
+                if !f.aerodynamic.is_empty() {
+                    set(&fo, "aerodynamic", &f64a(&f.aerodynamic))?;
+                }
+                forces.push(&fo.into())
+            }
             None => forces.push(&JsValue::NULL),
         };
     }

@@ -30,6 +30,20 @@ pub fn check_web_caps(cfg: &SimConfig) -> Result<()> {
         });
     }
     crate::simulate::check_run_cost(cfg, WEB_MAX_RUN_WORK, "run in the browser")?;
+    if !cfg.aero.is_vacuum() && !cfg.modes.is_empty() {
+        // The air run's price with the quadrature's nominal size (strips × 2 Gauss stations ×
+        // chord points; a notched planform adds chord intervals, the core re-checks exactly).
+        let points = 2 * cfg.aero.strips * cfg.aero.chord_points;
+        let cost = crate::aero::simulate::air_run_cost(cfg, points);
+        if cost.is_nan() || cost > WEB_MAX_RUN_WORK {
+            return Err(WingbeatError::ResourceCap {
+                field: "run in air in the browser (modes² × quadrature points × steps per flap period)".into(),
+                requested: format!("{} step equivalents", crate::error::num(cost.round())),
+                cap: format!("{} step equivalents", crate::error::num(WEB_MAX_RUN_WORK)),
+                why: "computing time in the browser; fewer modes, a shorter run, fewer `aero.strips` / `aero.chord_points`, or a higher flap frequency".into(),
+            });
+        }
+    }
     Ok(())
 }
 

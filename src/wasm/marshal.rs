@@ -455,11 +455,119 @@ pub(crate) fn progress_fn(progress: Option<js_sys::Function>) -> impl FnMut(usiz
     }
 }
 
+/// A config from JS: the JSON fields through [`from_js`], and the optional `wing` (the mesh
+/// and mode shapes that air needs, in `feModes`' layout) through [`wing_from_js`].
 pub(crate) fn config_from(v: JsValue) -> Result<SimConfig, JsError> {
-    let cfg: SimConfig = from_js(v, "config")?;
+    let (v, wing) = split_wing(v)?;
+    let mut cfg: SimConfig = from_js(v, "config")?;
+    if let Some(w) = wing {
+        cfg.wing = Some(std::sync::Arc::new(wing_from_js(&w, cfg.modes.len())?));
+    }
     cfg.validate().map_err(err)?;
     check_web_caps(&cfg).map_err(err)?;
     Ok(cfg)
+}
+
+/// Separates a config object's `wing` (typed arrays, which the JSON path refuses) from its
+/// JSON fields: the config without it (a shallow copy; the caller's object is not changed)
+/// and the wing when present (not `undefined` or `null`).
+fn split_wing(v: JsValue) -> Result<(JsValue, Option<JsValue>), JsError> {
+    if !v.is_object() || is_array(&v) || js_is_view(&v) {
+        return Ok((v, None));
+    }
+    let unreadable = || {
+        bad(
+            "config",
+            "unreadable (a getter or proxy threw)",
+            "plain data",
+        )
+    };
+    let wing = Reflect::get(&v, &JsValue::from_str("wing")).map_err(|_| unreadable())?;
+    if wing.is_undefined() {
+        return Ok((v, None));
+    }
+    let keys = js_object_keys(&v).map_err(|_| unreadable())?;
+    if keys.length() as usize > MAX_JS_VALUES {
+        return Err(bad(
+            "config",
+            format!("{} keys", keys.length()),
+            format!("at most {MAX_JS_VALUES} keys"),
+        ));
+    }
+    let rest = Object::new();
+    for k in keys.iter() {
+        if k.as_string().as_deref() == Some("wing") {
+            continue;
+        }
+        let e = Reflect::get(&v, &k).map_err(|_| unreadable())?;
+        Reflect::set(&rest, &k, &e).map_err(|_| unreadable())?;
+    }
+    Ok((rest.into(), (!wing.is_null()).then_some(wing)))
+}
+
+/// Reads `config.wing`: `nodes` (x, y, z per node, m; z, the camber, is not used by the air),
+/// `triangles` (node indices, three per triangle) and `shapes` (mode-major, one value per node
+/// and mode of the config, kg^-½): the arrays `feModes` returns, so `cfg.wing = fe` works.
+/// Lengths are checked before anything is copied; the values by [`crate::aero::WingGeometry::validate`].
+pub(crate) fn wing_from_js(
+    w: &JsValue,
+    n_modes: usize,
+) -> Result<crate::aero::WingGeometry, JsError> {
+    if !w.is_object() || is_array(w) || js_is_view(w) {
+        return Err(bad(
+            "config.wing",
+            kind(w),
+            "an object { nodes, triangles, shapes } (an feModes result)",
+        ));
+    }
+    let get = |key: &str| {
+        Reflect::get(w, &JsValue::from_str(key)).map_err(|_| {
+            bad(
+                &format!("config.wing.{key}"),
+                "unreadable (a getter or proxy threw)",
+                "a typed array",
+            )
+        })
+    };
+    let max_nodes = crate::fem::mesh::MAX_NODES;
+    let nodes = f64_array_arg(&get("nodes")?, "config.wing.nodes", 9, 3 * max_nodes)?;
+    if nodes.len() % 3 != 0 {
+        return Err(bad(
+            "config.wing.nodes",
+            format!("{} values", nodes.len()),
+            "x, y, z per node (a multiple of 3 values), m",
+        ));
+    }
+    let n = nodes.len() / 3;
+    let tris = u32_array_arg(
+        &get("triangles")?,
+        "config.wing.triangles",
+        3,
+        6 * max_nodes,
+    )?;
+    if tris.len() % 3 != 0 {
+        return Err(bad(
+            "config.wing.triangles",
+            format!("{} values", tris.len()),
+            "three node indices per triangle (a multiple of 3 values)",
+        ));
+    }
+    let want = n * n_modes;
+    let shapes = f64_array_arg(&get("shapes")?, "config.wing.shapes", want, want)?;
+    let geom = crate::aero::WingGeometry {
+        nodes: nodes.chunks_exact(3).map(|p| [p[0], p[1]]).collect(),
+        triangles: tris
+            .chunks_exact(3)
+            .map(|t| [t[0] as usize, t[1] as usize, t[2] as usize])
+            .collect(),
+        shapes: if n == 0 {
+            Vec::new()
+        } else {
+            shapes.chunks_exact(n).map(<[f64]>::to_vec).collect()
+        },
+    };
+    geom.validate(n_modes).map_err(err)?;
+    Ok(geom)
 }
 
 pub(crate) fn to_js<T: Serialize + ?Sized>(v: &T) -> Result<JsValue, JsError> {
@@ -503,6 +611,8 @@ struct ModeMeta<'a> {
     contribution_percent: &'a crate::analysis::contribution::Contributions,
     floquet: &'a crate::floquet::FloquetResult,
     accuracy: &'a crate::simulate::Accuracy,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    air: Option<&'a crate::run::ModeAir>,
 }
 
 pub(crate) fn sim_js(r: &SimResult, sample_rate_hz: f64) -> Result<JsValue, JsError> {
@@ -520,6 +630,7 @@ pub(crate) fn sim_js(r: &SimResult, sample_rate_hz: f64) -> Result<JsValue, JsEr
             contribution_percent: &m.contribution_percent,
             floquet: &m.floquet,
             accuracy: &m.accuracy,
+            air: m.air.as_ref(),
         })?;
         let mo: Object = meta.unchecked_into();
         let q = obj_with(&[
@@ -529,6 +640,9 @@ pub(crate) fn sim_js(r: &SimResult, sample_rate_hz: f64) -> Result<JsValue, JsEr
             ("free", &m.q.free),
             ("total", &m.q.total),
         ])?;
+        if !m.q.aerodynamic.is_empty() {
+            set(&q, "aerodynamic", &f64a(&m.q.aerodynamic))?;
+        }
         set(&mo, "q", &q)?;
         set(&mo, "qdot_total", &f64a(&m.qdot_total))?;
         modes.push(&mo);
@@ -545,6 +659,9 @@ pub(crate) fn sim_js(r: &SimResult, sample_rate_hz: f64) -> Result<JsValue, JsEr
     }
     set(&o, "strain_points", &points)?;
     set(&o, "warnings", &to_js(&r.warnings)?)?;
+    if let Some(a) = &r.air {
+        set(&o, "air", &to_js(a)?)?;
+    }
     Ok(o.into())
 }
 

@@ -84,13 +84,16 @@ pub fn simulate(
 }
 
 fn forces_js(f: &ForceSeries) -> Result<JsValue, JsError> {
-    Ok(obj_with(&[
+    let o = obj_with(&[
         ("euler", &f.euler),
         ("centrifugal", &f.centrifugal),
         ("coriolis", &f.coriolis),
         ("stiffness_coefficient", &f.stiffness_coefficient),
-    ])?
-    .into())
+    ])?;
+    if !f.aerodynamic.is_empty() {
+        super::marshal::set(&o, "aerodynamic", &super::marshal::f64a(&f.aerodynamic))?;
+    }
+    Ok(o.into())
 }
 
 /// The Eq. 13 force terms of every mode and the stiffness coefficient S(t) = α̇²cos²β + β̇²

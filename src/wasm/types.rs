@@ -29,7 +29,15 @@ export interface SimConfig {
   duration_s?: number;
   sample_rate_hz?: number;
   initial_conditions?: [number, number][];
+  /** The fluid around the wing (default: vacuum, the paper). A density above 0 needs `wing`. */
+  aero?: AeroConfig;
+  /** The mesh and mode shapes air needs, in `feModes`' layout (`cfg.wing = fe` works). Not JSON: it is read as typed arrays and never returned. */
+  wing?: WingInput;
 }
+/** The medium and the quasi-steady aerodynamic model (docs/model.md, "The wing in air"). */
+export interface AeroConfig { air_density_kg_m3?: number; normal_force_coefficient?: number; added_mass?: boolean; strips?: number; chord_points?: number }
+/** An FE wing for the air: nodes (x, y, z per node, m), triangles (3 node indices each), shapes (mode-major, one per node and mode of the config, kg^-½). */
+export interface WingInput { nodes: Float64Array | number[]; triangles: Uint32Array | number[]; shapes: Float64Array | number[] }
 /** Welch PSD options (Hann window). detrend "none" keeps the DC part visible. */
 export interface WelchOptions { segment_len?: number; overlap?: number; detrend?: "none" | "mean" | "linear"; max_peaks?: number }
 export type SweepParam = "gamma0" | "alpha0" | "beta0" | "flap_hz" | "zeta";
@@ -39,7 +47,8 @@ export interface IcMapOptions {
   q_range?: [number, number] | null; qdot_range?: [number, number] | null;
   attribution?: "forced" | "carried";
 }
-export interface Contributions { euler: number; centrifugal: number; coriolis: number }
+/** Shares of the total response's RMS, %. `aerodynamic` only in a medium. */
+export interface Contributions { euler: number; centrifugal: number; coriolis: number; aerodynamic?: number }
 export interface FloquetResult {
   multipliers: [number, number][]; monodromy: [[number, number], [number, number]];
   stable: boolean; max_modulus: number; growth_rate_per_s: number; homogeneous_period_s: number;
@@ -50,24 +59,34 @@ export interface FloquetResult {
   beat_period_vs_2fd_s: number | null;
 }
 export interface Accuracy { method: string; period_error_estimate: number; periods: number; run_error_bound: number }
-export interface Responses { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; free: Float64Array; total: Float64Array }
+export interface Responses { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; free: Float64Array; total: Float64Array; aerodynamic?: Float64Array }
+/** What air does to one mode (only in a medium). */
+export interface ModeAir {
+  still_air_freq_hz: number; added_mass_shift_hz: number; aero_damping_ratio: number;
+  decay_rate_per_s: number; decay_time_s: number | null; beat: string; participation: number;
+}
+/** The run's air summary (only in a medium). */
+export interface AirSummary {
+  aero: AeroConfig; area_m2: number; points: number; added_mass: number[][];
+  multipliers: [number, number][]; stable: boolean; steps_per_period: number;
+}
 export interface ModeResult {
   name: string; freq_hz: number; zeta: number; q: Responses; qdot_total: Float64Array;
-  contribution_percent: Contributions; floquet: FloquetResult; accuracy: Accuracy;
+  contribution_percent: Contributions; floquet: FloquetResult; accuracy: Accuracy; air?: ModeAir;
 }
 export interface StrainSeries { point: string; eps_x: Float64Array; eps_y: Float64Array; gamma_xy: Float64Array }
 export interface SimResult {
   n: number; sample_rate_hz: number; flap_freq_hz: number; t: Float64Array; modes: ModeResult[];
-  strain: StrainSeries | null; strain_points: StrainSeries[]; warnings: string[];
+  strain: StrainSeries | null; strain_points: StrainSeries[]; warnings: string[]; air?: AirSummary;
 }
 /** Force terms of one mode and the stiffness coefficient S(t) = α̇²cos²β + β̇² (1/s²). */
-export interface ForceSeries { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; stiffness_coefficient: Float64Array }
+export interface ForceSeries { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; stiffness_coefficient: Float64Array; aerodynamic?: Float64Array }
 export interface Peak { freq_hz: number; psd: number; flap_multiple: number | null }
 export interface Spectrum { freq_hz: Float64Array; psd: Float64Array; peaks: Peak[] }
 /** Spectra of one mode: force terms, the stiffness force S(t)·q_k (S = α̇²cos²β+β̇²), and the total response. */
-export interface ModeSpectra { euler: Spectrum; centrifugal: Spectrum; coriolis: Spectrum; stiffness_force: Spectrum; total: Spectrum }
+export interface ModeSpectra { euler: Spectrum; centrifugal: Spectrum; coriolis: Spectrum; stiffness_force: Spectrum; total: Spectrum; aerodynamic?: Spectrum }
 /** Force terms of one mode and the stiffness force S(t)·q_k, same units. */
-export interface ModeForces { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; stiffness_force: Float64Array }
+export interface ModeForces { euler: Float64Array; centrifugal: Float64Array; coriolis: Float64Array; stiffness_force: Float64Array; aerodynamic?: Float64Array }
 export interface Analysis {
   sim: SimResult;
   /** Per mode; null for modes not asked for. */
@@ -151,7 +170,7 @@ export interface Limits {
 /** Key of one of the lab's numeric parameters (core `params`). */
 export type ParamKey =
   | "alpha0" | "beta0" | "gamma0" | "flap_hz" | "zeta"
-  | "alpha_phase" | "beta_phase" | "gamma_phase" | "duration";
+  | "alpha_phase" | "beta_phase" | "gamma_phase" | "duration" | "air_density";
 /** One numeric parameter of the lab: its slider (range, step, unit) and default (the paper case). */
 export interface Param {
   key: ParamKey; symbol: string; label: string; unit: string;

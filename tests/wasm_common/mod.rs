@@ -768,3 +768,159 @@ pub fn ts_declarations_match_results() {
     check("ResonanceMapResult", &rm);
     check("ResonanceModeColumns", &get(&rm, "modes.0"));
 }
+
+/// The FE wing in air through the wasm API: `cfg.wing` (typed arrays in `feModes`' layout)
+/// carries the mesh and shapes, and `simulate` and `analyze` return what the core computes
+/// for the same config and wing — the aerodynamic response, share, force and spectrum, and the
+/// `air` blocks. Air without a wing, and a malformed wing, are refused by name; a wing given
+/// in a vacuum changes nothing.
+pub fn air_run_matches_core() {
+    let base = SimConfig::fe_wing().unwrap();
+    let cfg = SimConfig {
+        duration_s: 0.12,
+        sample_rate_hz: 4000.0,
+        aero: wingbeat::aero::AeroConfig::with_density(1.2),
+        ..base
+    };
+    let geom = cfg.wing.clone().unwrap();
+    let n = geom.nodes.len();
+    let nodes: Vec<f64> = geom.nodes.iter().flat_map(|p| [p[0], p[1], 0.0]).collect();
+    let tris: Vec<u32> = geom.triangles.iter().flatten().map(|&i| i as u32).collect();
+    let shapes: Vec<f64> = geom.shapes.iter().flatten().copied().collect();
+    let wing = js_sys::Object::new();
+    let put = |o: &js_sys::Object, k: &str, v: &JsValue| {
+        Reflect::set(o, &JsValue::from_str(k), v).unwrap();
+    };
+    put(&wing, "nodes", &fa(&nodes));
+    put(
+        &wing,
+        "triangles",
+        &js_sys::Uint32Array::from(&tris[..]).into(),
+    );
+    put(&wing, "shapes", &fa(&shapes));
+    let with_wing = |c: &SimConfig, w: &JsValue| {
+        let o = to_js(c);
+        Reflect::set(&o, &JsValue::from_str("wing"), w).unwrap();
+        o
+    };
+    let js = wasm::simulate(with_wing(&cfg, &wing.clone().into())).unwrap();
+    let core = simulate(&cfg).unwrap();
+    for (k, m) in core.modes.iter().enumerate() {
+        let p = |s: &str| format!("modes.{k}.{s}");
+        close_all(&p("q.total"), &f64s(&js, &p("q.total")), &m.q.total, TOL);
+        close_all(
+            &p("q.aerodynamic"),
+            &f64s(&js, &p("q.aerodynamic")),
+            &m.q.aerodynamic,
+            TOL,
+        );
+        let air = m.air.as_ref().unwrap();
+        close(
+            &p("air.decay_rate_per_s"),
+            num(&js, &p("air.decay_rate_per_s")),
+            air.decay_rate_per_s,
+            TOL,
+        );
+        close(
+            &p("air.still_air_freq_hz"),
+            num(&js, &p("air.still_air_freq_hz")),
+            air.still_air_freq_hz,
+            TOL,
+        );
+        close(
+            &p("contribution_percent.aerodynamic"),
+            num(&js, &p("contribution_percent.aerodynamic")),
+            m.contribution_percent.aerodynamic.unwrap(),
+            TOL,
+        );
+    }
+    assert_eq!(
+        num(&js, "air.points") as usize,
+        core.air.as_ref().unwrap().points
+    );
+    // The live analysis: the aerodynamic force and its spectrum of the selected mode.
+    let opts = WelchOptions {
+        segment_len: 256,
+        ..WelchOptions::default()
+    };
+    let a = wasm::analyze(
+        with_wing(&cfg, &wing.clone().into()),
+        to_js(&opts),
+        JsValue::from(0.0),
+    )
+    .unwrap();
+    let f = force_series(&cfg).unwrap();
+    assert!(f[0].aerodynamic.iter().any(|v| *v != 0.0));
+    close_all(
+        "forces.0.aerodynamic",
+        &f64s(&a, "forces.0.aerodynamic"),
+        &f[0].aerodynamic,
+        TOL,
+    );
+    let want = welch(&f[0].aerodynamic, cfg.sample_rate_hz, &opts, Some(25.0)).unwrap();
+    close_all(
+        "spectra.0.aerodynamic.psd",
+        &f64s(&a, "spectra.0.aerodynamic.psd"),
+        &want.psd,
+        TOL,
+    );
+    // A vacuum ignores the wing: the same numbers as without it, no aerodynamic keys.
+    let vac = SimConfig {
+        aero: Default::default(),
+        ..cfg.clone()
+    };
+    let v1 = wasm::simulate(with_wing(&vac, &wing.clone().into())).unwrap();
+    let v0 = wasm::simulate(to_js(&vac)).unwrap();
+    assert_eq!(f64s(&v1, "modes.0.q.total"), f64s(&v0, "modes.0.q.total"));
+    assert!(get(&v1, "modes.0.q.aerodynamic").is_undefined());
+    assert!(get(&v1, "air").is_undefined());
+    // Refusals, by name.
+    let m = message(wasm::simulate(to_js(&cfg)));
+    assert!(m.contains("aero.air_density_kg_m3"), "{m}");
+    let m = message(wasm::simulate(with_wing(&cfg, &JsValue::from(5.0))));
+    assert!(m.contains("config.wing"), "{m}");
+    let short = js_sys::Object::new();
+    put(&short, "nodes", &fa(&nodes));
+    put(
+        &short,
+        "triangles",
+        &js_sys::Uint32Array::from(&tris[..]).into(),
+    );
+    put(&short, "shapes", &fa(&shapes[..shapes.len() - n]));
+    let m = message(wasm::simulate(with_wing(&cfg, &short.into())));
+    assert!(m.contains("config.wing.shapes"), "{m}");
+    let odd = js_sys::Object::new();
+    put(&odd, "nodes", &fa(&nodes[..nodes.len() - 1]));
+    put(
+        &odd,
+        "triangles",
+        &js_sys::Uint32Array::from(&tris[..]).into(),
+    );
+    put(&odd, "shapes", &fa(&shapes));
+    let m = message(wasm::simulate(with_wing(&cfg, &odd.into())));
+    assert!(m.contains("config.wing.nodes"), "{m}");
+    let bad_index = js_sys::Object::new();
+    let mut t2 = tris.clone();
+    t2[0] = n as u32 + 7;
+    put(&bad_index, "nodes", &fa(&nodes));
+    put(
+        &bad_index,
+        "triangles",
+        &js_sys::Uint32Array::from(&t2[..]).into(),
+    );
+    put(&bad_index, "shapes", &fa(&shapes));
+    let m = message(wasm::simulate(with_wing(&cfg, &bad_index.into())));
+    assert!(m.contains("wing.triangles[0]"), "{m}");
+    let mut nan_nodes = nodes.clone();
+    nan_nodes[4] = f64::NAN;
+    let bad_node = js_sys::Object::new();
+    put(&bad_node, "nodes", &fa(&nan_nodes));
+    put(
+        &bad_node,
+        "triangles",
+        &js_sys::Uint32Array::from(&tris[..]).into(),
+    );
+    put(&bad_node, "shapes", &fa(&shapes));
+    let m = message(wasm::simulate(with_wing(&cfg, &bad_node.into())));
+    assert!(m.contains("wing.nodes[1]"), "{m}");
+}
