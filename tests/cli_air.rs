@@ -1,5 +1,6 @@
-//! `wingbeat simulate --air-density`: the wing in air from the command line, its refusals, and
-//! the air claims of `wingbeat reproduce`.
+//! `wingbeat simulate --air-density`: the wing in air from the command line, its refusals,
+//! `sense` in air and the air claims of `wingbeat reproduce` (`psd` and `sweep` in air:
+//! tests/cli_psd_sweep_air.rs).
 
 mod common_cli;
 use common_cli::run;
@@ -105,7 +106,7 @@ fn reproduce_carries_the_computed_air_claims() {
 }
 
 #[test]
-fn sense_runs_in_air_and_psd_and_sweep_refuse_it_by_name() {
+fn sense_runs_both_runs_in_the_medium_and_its_map_differs_from_vacuum() {
     let args = |rho: &'static str| {
         vec![
             "sense",
@@ -135,17 +136,4 @@ fn sense_runs_in_air_and_psd_and_sweep_refuse_it_by_name() {
     assert_eq!(a["air_density_kg_m3"], 1.2);
     assert_eq!(v["air_density_kg_m3"], 0.0);
     assert_ne!(a["map"], v["map"]);
-    for sub in ["psd", "sweep"] {
-        let mut cmd = vec![sub];
-        if sub == "sweep" {
-            cmd.push("gamma0");
-        }
-        cmd.extend(["--preset", "fe-wing", "--air-density", "1.2"]);
-        let (code, _, err) = run(&cmd);
-        assert_eq!(code, 2, "{sub}");
-        assert!(
-            err.contains("--air-density") && err.contains(sub),
-            "{sub}: {err}"
-        );
-    }
 }

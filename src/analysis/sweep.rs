@@ -116,11 +116,52 @@ pub fn check_points(field: &str, n: usize) -> Result<()> {
 /// Most sweep points.
 pub const MAX_POINTS: usize = 2001;
 
-/// Most work one sweep may take: the sum over its points of each run's
-/// [`crate::simulate::run_cost`] (step equivalents, about 1 µs each natively), checked before
-/// the first point runs: about 20 s natively. The paper's Fig. 6 sweep (31 points of 2 s)
-/// costs 3e5.
+/// Most work one sweep may take: the sum over its points of each run's cost
+/// ([`crate::simulate::run_cost`] in a vacuum, [`crate::aero::simulate::air_run_cost`] in
+/// air; step equivalents, about 1 µs each natively), checked before the first point runs:
+/// about 20 s natively. The paper's Fig. 6 sweep (31 points of 2 s) costs 3e5.
 pub const MAX_SWEEP_WORK: f64 = 2.0e7;
+
+/// How a sweep prices its points: in a vacuum [`crate::simulate::run_cost`]; in air
+/// [`crate::aero::simulate::air_run_cost`] with the number of quadrature points of the
+/// config's wing, counted once (a swept parameter changes neither the wing nor the air).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RunPricing {
+    /// Every point runs in a vacuum.
+    Vacuum,
+    /// Every point runs in air on a quadrature of this many points.
+    Air {
+        /// Quadrature points of the wing.
+        points: usize,
+    },
+}
+
+impl RunPricing {
+    /// The pricing of runs of `cfg` and of configs that differ from it only in a swept
+    /// parameter. In air the wing's geometry and `cfg.aero` are checked and the quadrature
+    /// is built once to count its points (the errors of [`crate::simulate::simulate`] for a
+    /// density above 0 without a wing, bad shapes or bad air settings).
+    pub fn of(cfg: &SimConfig) -> Result<RunPricing> {
+        if cfg.aero.is_vacuum() {
+            return Ok(RunPricing::Vacuum);
+        }
+        let geom = cfg.wing.as_deref().ok_or_else(crate::aero::no_wing_error)?;
+        geom.validate(cfg.modes.len())?;
+        cfg.aero.validate()?;
+        let wing = crate::aero::AeroWing::build(geom, &cfg.aero)?;
+        Ok(RunPricing::Air {
+            points: wing.points.len(),
+        })
+    }
+
+    /// The cost of one run of `cfg`, step equivalents.
+    pub fn cost(self, cfg: &SimConfig) -> f64 {
+        match self {
+            RunPricing::Vacuum => crate::simulate::run_cost(cfg).0,
+            RunPricing::Air { points } => crate::aero::simulate::air_run_cost(cfg, points),
+        }
+    }
+}
 
 /// Result at one sweep value for one mode.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -175,15 +216,35 @@ pub fn sweep(
     // The whole sweep's cost, before any work: every point's config is built (and checked)
     // first, and the sum of their run costs must fit.
     let values = grid(opts.from, opts.to, opts.points);
+    let pricing = RunPricing::of(cfg)?;
+    let air = matches!(pricing, RunPricing::Air { .. });
     let mut work = 0.0;
     for (i, &v) in values.iter().enumerate() {
         let c = apply(cfg, opts.param, v)?;
         c.validate().map_err(|e| at_value(e, v))?;
-        work += crate::simulate::run_cost(&c).0;
+        let cost = pricing.cost(&c);
+        if air && (cost.is_nan() || cost > crate::run::MAX_RUN_WORK) {
+            // In air a point over the run's own cap would be refused only when its turn
+            // came, after the points before it had run: refuse it here, naming its value.
+            return Err(WingbeatError::ResourceCap {
+                field: format!(
+                    "sweep in air, one run (modes² × quadrature points × steps per flap period) at sweep value {}",
+                    crate::error::num(v)
+                ),
+                requested: format!("{} step equivalents", crate::error::num(cost.round())),
+                cap: format!("{} step equivalents", crate::error::num(crate::run::MAX_RUN_WORK)),
+                why: "computing time; fewer modes, fewer `aero.strips` / `aero.chord_points`, or a higher flap frequency".into(),
+            });
+        }
+        work += cost;
         if work.is_nan() || work > MAX_SWEEP_WORK {
             return Err(WingbeatError::ResourceCap {
-                field: "sweep (points × each run's modes × steps per flap period, and samples)"
-                    .into(),
+                field: if air {
+                    "sweep in air (points × each run's modes² × quadrature points × steps per flap period, and samples)"
+                } else {
+                    "sweep (points × each run's modes × steps per flap period, and samples)"
+                }
+                .into(),
                 requested: format!(
                     "more than {} step equivalents by point {} of {} ({} = {})",
                     crate::error::num(MAX_SWEEP_WORK),

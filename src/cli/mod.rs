@@ -360,7 +360,7 @@ fn cmd_simulate(a: SimulateArgs) -> Result<String> {
 
 fn cmd_psd(a: PsdArgs) -> Result<String> {
     let cfg = build_config(&a.input)?;
-    vacuum_only(&cfg, "psd")?;
+    let air = !cfg.aero.is_vacuum();
     let opts = WelchOptions {
         segment_len: a.segment_len,
         overlap: a.overlap,
@@ -375,6 +375,7 @@ fn cmd_psd(a: PsdArgs) -> Result<String> {
     // the output's size, before anything is computed
     check_run_spectra(
         cfg.modes.len(),
+        if air { 7 } else { 6 },
         cfg.n_samples(),
         a.segment_len,
         "--segment-len",
@@ -389,17 +390,30 @@ fn cmd_psd(a: PsdArgs) -> Result<String> {
         eprintln!("warning: {w}");
     }
     let warnings = sim.warnings;
-    let runs: Vec<(String, f64, f64, Vec<f64>)> = sim
+    // Per mode: name, natural and effective frequency, total response and, in air, the
+    // response to the aerodynamic force alone (empty in a vacuum).
+    type Run = (String, f64, f64, Vec<f64>, Vec<f64>);
+    let runs: Vec<Run> = sim
         .modes
         .into_iter()
-        .map(|m| (m.name, m.freq_hz, m.floquet.effective_freq_hz, m.q.total))
+        .map(|m| {
+            let f = m.floquet.effective_freq_hz;
+            (m.name, m.freq_hz, f, m.q.total, m.q.aerodynamic)
+        })
         .collect();
     let forces = force_series(&cfg)?;
     let mut modes = Vec::with_capacity(runs.len());
-    for ((name, freq_hz_natural, effective_freq_hz, total), f) in runs.into_iter().zip(forces) {
+    for ((name, freq_hz_natural, effective_freq_hz, total, aerodynamic), f) in
+        runs.into_iter().zip(forces)
+    {
         let s = mode_spectra(&f, &total, fs, &opts, fd)?;
         let stiffness_coefficient = welch(&f.stiffness_coefficient, fs, &opts, fd)?;
-        drop((f, total));
+        let response_aerodynamic = if air {
+            Some(welch(&aerodynamic, fs, &opts, fd)?)
+        } else {
+            None
+        };
+        drop((f, total, aerodynamic));
         modes.push(PsdMode {
             centrifugal: s.centrifugal,
             coriolis: s.coriolis,
@@ -407,15 +421,19 @@ fn cmd_psd(a: PsdArgs) -> Result<String> {
             euler: s.euler,
             freq_hz_natural,
             name,
+            response_aerodynamic,
             response_total: s.total,
             stiffness_coefficient,
             stiffness_force: s.stiffness_force,
         });
     }
     // Written straight from the spectra (a `serde_json::Value` of them took several times
-    // the memory of the text). Keys in alphabetical order, as before.
+    // the memory of the text). Keys in alphabetical order, as before; the medium and the
+    // aerodynamic response's unit only in air, so a vacuum's output is as it always was.
     #[derive(serde::Serialize)]
     struct Out<'a> {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        air_density_kg_m3: Option<f64>,
         flap_freq_hz: f64,
         modes: Vec<PsdMode>,
         options: &'a WelchOptions,
@@ -423,12 +441,18 @@ fn cmd_psd(a: PsdArgs) -> Result<String> {
         units: serde_json::Value,
         warnings: Vec<String>,
     }
+    let mut units = json!({"freq_hz": "Hz", "psd": "(unit of the series)^2 / Hz, one-sided, Hann window, Welch average"});
+    if air {
+        units["air_density_kg_m3"] = json!("kg/m^3");
+        units["response_aerodynamic"] = json!("(unit of q)^2 / Hz: the response to the aerodynamic force alone, from rest, in the coupled system (simulate's q.aerodynamic)");
+    }
     to_json(&Out {
+        air_density_kg_m3: air.then_some(cfg.aero.air_density_kg_m3),
         flap_freq_hz: cfg.kinematics.flap_freq_hz,
         modes,
         options: &opts,
         sample_rate_hz: fs,
-        units: json!({"freq_hz": "Hz", "psd": "(unit of the series)^2 / Hz, one-sided, Hann window, Welch average"}),
+        units,
         warnings,
     })
 }
@@ -442,24 +466,34 @@ struct PsdMode {
     euler: wingbeat::analysis::psd::Spectrum,
     freq_hz_natural: f64,
     name: String,
+    /// In air: the response to the aerodynamic force alone (absent in a vacuum).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    response_aerodynamic: Option<wingbeat::analysis::psd::Spectrum>,
     response_total: wingbeat::analysis::psd::Spectrum,
     stiffness_coefficient: wingbeat::analysis::psd::Spectrum,
     stiffness_force: wingbeat::analysis::psd::Spectrum,
 }
 
 /// Refuses a `wingbeat psd` whose output would exceed
-/// [`wingbeat::analysis::psd::MAX_RUN_SPECTRUM_BINS`] (six spectra per mode, each
-/// min(segment, samples)/2 + 1 bins), naming the segment flag.
-fn check_run_spectra(modes: usize, samples: usize, segment_len: usize, flag: &str) -> Result<()> {
+/// [`wingbeat::analysis::psd::MAX_RUN_SPECTRUM_BINS`] (`spectra` per mode: six in a vacuum,
+/// seven in air; each min(segment, samples)/2 + 1 bins), naming the segment flag.
+fn check_run_spectra(
+    modes: usize,
+    spectra: usize,
+    samples: usize,
+    segment_len: usize,
+    flag: &str,
+) -> Result<()> {
     use wingbeat::analysis::psd::MAX_RUN_SPECTRUM_BINS;
     let seg = segment_len.min(samples);
-    let bins = modes as f64 * 6.0 * (seg / 2 + 1) as f64;
+    let per_mode = spectra as f64;
+    let bins = modes as f64 * per_mode * (seg / 2 + 1) as f64;
     if bins > MAX_RUN_SPECTRUM_BINS {
-        let fit = 2.0 * (MAX_RUN_SPECTRUM_BINS / (6.0 * modes.max(1) as f64) - 1.0);
+        let fit = 2.0 * (MAX_RUN_SPECTRUM_BINS / (per_mode * modes.max(1) as f64) - 1.0);
         return Err(WingbeatError::ResourceCap {
             field: flag.into(),
             requested: format!(
-                "{seg} samples per segment: {bins:.0} spectrum bins ({modes} modes × 6 spectra × {} bins)",
+                "{seg} samples per segment: {bins:.0} spectrum bins ({modes} modes × {spectra} spectra × {} bins)",
                 seg / 2 + 1
             ),
             cap: format!("{MAX_RUN_SPECTRUM_BINS:.0} bins"),
@@ -472,7 +506,7 @@ fn check_run_spectra(modes: usize, samples: usize, segment_len: usize, flag: &st
     Ok(())
 }
 
-/// Refuses air for a subcommand that does not handle it yet (rather than ignore it).
+/// Refuses air for a subcommand that does not handle it (rather than ignore it).
 fn vacuum_only(cfg: &SimConfig, what: &str) -> Result<()> {
     if cfg.aero.is_vacuum() {
         return Ok(());
@@ -480,13 +514,15 @@ fn vacuum_only(cfg: &SimConfig, what: &str) -> Result<()> {
     Err(WingbeatError::invalid(
         "--air-density",
         cfg.aero.air_density_kg_m3,
-        format!("0 for `{what}` (not yet in air: {what} prices and spectra its runs for a vacuum); `simulate` and `sense` run in air"),
+        format!("0 for `{what}` (not in air: the initial-condition map superposes one mode's vacuum responses); `simulate`, `psd`, `sweep` over a parameter and `sense` run in air"),
     ))
 }
 
 fn cmd_sweep(a: SweepArgs) -> Result<String> {
     let cfg = build_config(&a.input)?;
-    vacuum_only(&cfg, "sweep")?;
+    if a.what == "ic" {
+        vacuum_only(&cfg, "sweep ic")?;
+    }
     for w in cfg.warnings() {
         eprintln!("warning: {w}");
     }
@@ -550,13 +586,24 @@ fn cmd_sweep(a: SweepArgs) -> Result<String> {
             eprintln!("sweep: {done}/{total}");
         }
     })?;
+    let air = !cfg.aero.is_vacuum();
     if a.format == Format::Csv {
-        let mut out = String::from("value,mode,euler_percent,centrifugal_percent,coriolis_percent,effective_freq_hz,beat_period_s,stable\n");
+        // In air the aerodynamic share gets its column after the Coriolis share.
+        let mut out = String::from(if air {
+            "value,mode,euler_percent,centrifugal_percent,coriolis_percent,aerodynamic_percent,effective_freq_hz,beat_period_s,stable\n"
+        } else {
+            "value,mode,euler_percent,centrifugal_percent,coriolis_percent,effective_freq_hz,beat_period_s,stable\n"
+        });
         for p in &s.points {
             for (k, m) in p.modes.iter().enumerate() {
                 let c = m.contribution_percent;
+                let aero = match (air, c.aerodynamic) {
+                    (true, Some(v)) => format!("{v:.6},"),
+                    (true, None) => ",".to_string(),
+                    (false, _) => String::new(),
+                };
                 out.push_str(&format!(
-                    "{},{},{:.6},{:.6},{:.6},{:.9},{},{}\n",
+                    "{},{},{:.6},{:.6},{:.6},{aero}{:.9},{},{}\n",
                     p.value,
                     k,
                     c.euler,
@@ -570,7 +617,17 @@ fn cmd_sweep(a: SweepArgs) -> Result<String> {
         }
         return Ok(out);
     }
-    to_json(&WithWarnings {
+    // The medium is named only in air, so a vacuum sweep's output is as it always was.
+    #[derive(serde::Serialize)]
+    struct Out<'a> {
+        #[serde(skip_serializing_if = "Option::is_none")]
+        air_density_kg_m3: Option<f64>,
+        #[serde(flatten)]
+        body: &'a wingbeat::analysis::sweep::Sweep,
+        warnings: Vec<String>,
+    }
+    to_json(&Out {
+        air_density_kg_m3: air.then_some(cfg.aero.air_density_kg_m3),
         body: &s,
         warnings: cfg.warnings(),
     })
