@@ -302,8 +302,9 @@ fn sweep_in_air_points_are_single_air_runs_and_differ_from_vacuum() {
 
 #[test]
 fn sweep_in_air_is_priced_by_the_air_run_before_it_starts() {
-    // The default FE wing over 2 s: enough points that their air runs exceed the sweep's
-    // budget while the same points in a vacuum fit it.
+    // The default FE wing over 2 s: just enough points that their air runs exceed the
+    // sweep's budget at the last point; priced as vacuum runs the sweep would be refused at
+    // another point or not at all.
     let cfg = fe_wing_in(1.2, 2.0);
     let points = AeroWing::build(cfg.wing.as_deref().unwrap(), &cfg.aero)
         .unwrap()
@@ -312,8 +313,9 @@ fn sweep_in_air_is_priced_by_the_air_run_before_it_starts() {
     let air = air_run_cost(&cfg, points);
     let vacuum = run_cost(&fe_wing_in(0.0, 2.0)).0;
     let n = (MAX_SWEEP_WORK / air).floor() as usize + 1;
+    let n_vacuum = (MAX_SWEEP_WORK / vacuum).floor() as usize + 1;
     assert!(
-        n >= 2 && n as f64 * vacuum < MAX_SWEEP_WORK,
+        (2..=2001).contains(&n) && n_vacuum != n,
         "air {air}, vacuum {vacuum}, n {n}"
     );
     let n = n.to_string();
@@ -341,15 +343,24 @@ fn sweep_in_air_is_priced_by_the_air_run_before_it_starts() {
 
 #[test]
 fn sweep_in_air_refuses_a_point_over_the_run_cap_before_the_first_runs() {
-    // At 0.5 Hz one flap period needs far more Gauss steps than one air run may take; the
-    // sweep's second point (25 + (0.5 − 25) = 0.5 exactly) is refused before the first runs.
-    let mut slow = fe_wing_in(1.2, 2.0);
-    wingbeat::params::set_param(&mut slow, "flap_hz", 0.5).unwrap();
-    let points = AeroWing::build(slow.wing.as_deref().unwrap(), &slow.aero)
-        .unwrap()
-        .points
-        .len();
-    assert!(air_run_cost(&slow, points) > MAX_RUN_WORK);
+    // A slow enough flap needs more Gauss steps per period than one air run may take; the
+    // first such power-of-two frequency f is the sweep's second point (25 + (f − 25) = f
+    // exactly), refused before the first point runs.
+    let cost_at = |f: f64| {
+        let mut c = fe_wing_in(1.2, 2.0);
+        wingbeat::params::set_param(&mut c, "flap_hz", f).unwrap();
+        let points = AeroWing::build(c.wing.as_deref().unwrap(), &c.aero)
+            .unwrap()
+            .points
+            .len();
+        air_run_cost(&c, points)
+    };
+    assert!(cost_at(25.0) <= MAX_RUN_WORK);
+    let f = (1..=10)
+        .map(|i| 0.5f64.powi(i))
+        .find(|&f| cost_at(f) > MAX_RUN_WORK)
+        .expect("a frequency above 1 mHz over the run cap");
+    let to = f.to_string();
     let (code, _, err, took) = run_timed(&[
         "sweep",
         "flap_hz",
@@ -358,7 +369,7 @@ fn sweep_in_air_refuses_a_point_over_the_run_cap_before_the_first_runs() {
         "--from",
         "25",
         "--to",
-        "0.5",
+        &to,
         "--points",
         "2",
         "--air-density",
@@ -366,7 +377,9 @@ fn sweep_in_air_refuses_a_point_over_the_run_cap_before_the_first_runs() {
     ]);
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.contains("one run") && err.contains("sweep value 0.5") && err.contains("5000000"),
+        err.contains("one run")
+            && err.contains(&format!("sweep value {to}"))
+            && err.contains("5000000"),
         "{err}"
     );
     assert!(took < Duration::from_secs(30), "{took:?}");
