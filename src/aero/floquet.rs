@@ -11,7 +11,7 @@
 use super::ode::AirOde;
 use crate::error::{Result, WingbeatError};
 use crate::floquet::{FloquetResult, STABILITY_TOL, STABILITY_TOL_REAL};
-use crate::solve::coupled::{coupled_map, max_step, CoupledOde};
+use crate::solve::coupled::CoupledOde;
 use nalgebra::{Complex, DMatrix, DVector};
 use std::f64::consts::PI;
 
@@ -137,8 +137,50 @@ fn dominant_harmonic(y: &[C64], tw: &[C64]) -> i64 {
     best.0
 }
 
-/// Analyses the coupled system `ode` whose full-period monodromy is `mono` (2N × 2N row-major).
-pub fn analyse_coupled(ode: &AirOde<'_>, mono: &[f64], flap_hz: f64) -> Result<CoupledFloquet> {
+/// The phases the Floquet analysis reads Φ at: nh equally spaced phases j·T_p/nh over the
+/// homogeneous period T_p (T/2 when the coefficients repeat twice per flap, else T), enough for
+/// the harmonics up to 4× the system's highest frequency, a power of two in [32, 16384].
+#[derive(Debug, Clone)]
+pub struct FloquetGrid {
+    /// T_p, s.
+    pub tp: f64,
+    /// j·T_p/nh, j = 0..nh.
+    pub phases: Vec<f64>,
+}
+
+impl FloquetGrid {
+    /// The grid for `ode`.
+    pub fn new(ode: &AirOde<'_>) -> FloquetGrid {
+        let t = ode.period();
+        let tp = if half_period(ode) { 0.5 * t } else { t };
+        let ratio = ode.homogeneous().freq_scale() * tp / (2.0 * PI);
+        let nh = ((4.0 * ratio + 16.0) as usize)
+            .next_power_of_two()
+            .clamp(32, 1 << 14);
+        FloquetGrid {
+            tp,
+            phases: (0..nh).map(|j| j as f64 * tp / nh as f64).collect(),
+        }
+    }
+
+    /// The phases to ask the propagator for: the grid and T_p itself (its last entry).
+    pub fn checkpoints(&self) -> Vec<f64> {
+        let mut v = self.phases.clone();
+        v.push(self.tp);
+        v
+    }
+}
+
+/// Analyses the coupled system `ode` whose full-period monodromy is `mono` (2N × 2N
+/// row-major), from Φ at the `grid`'s [`FloquetGrid::checkpoints`] (`phi`, concatenated, as
+/// [`crate::solve::coupled::propagate_coupled`] returns them for those extra phases).
+pub fn analyse_coupled(
+    ode: &AirOde<'_>,
+    mono: &[f64],
+    flap_hz: f64,
+    grid: &FloquetGrid,
+    phi: &[f64],
+) -> Result<CoupledFloquet> {
     let n = ode.n_modes();
     let d = 2 * n;
     let t = ode.period();
@@ -152,16 +194,17 @@ pub fn analyse_coupled(ode: &AirOde<'_>, mono: &[f64], flap_hz: f64) -> Result<C
             modulus(z) <= 1.0 + STABILITY_TOL_REAL
         }
     });
-    let tp = if half_period(ode) { 0.5 * t } else { t };
+    let tp = grid.tp;
     let fp = 1.0 / tp;
-    let hom = ode.homogeneous();
-    let ratio = hom.freq_scale() / (2.0 * PI * fp);
-    let nh = ((4.0 * ratio + 16.0) as usize)
-        .next_power_of_two()
-        .clamp(32, 1 << 14);
-    let phases: Vec<f64> = (0..nh).map(|j| j as f64 * tp / nh as f64).collect();
-    let pm = coupled_map(&hom, tp, &phases, max_step(&hom, tp))?;
-    let mp = DMatrix::from_row_slice(d, d, &pm.monodromy);
+    let phases = &grid.phases;
+    let nh = phases.len();
+    if phi.len() != (nh + 1) * d * d {
+        return Err(WingbeatError::NonFinite {
+            what: "coupled Floquet analysis".into(),
+            detail: format!("{} values of Φ for {} phases", phi.len(), nh + 1),
+        });
+    }
+    let mp = DMatrix::from_row_slice(d, d, &phi[nh * d * d..]);
     let lp = mp.complex_eigenvalues();
     let mpc = mp.map(|x| C64::new(x, 0.0));
     // Candidates: one of each conjugate pair (Im ≥ 0) and the real ones.
@@ -187,7 +230,7 @@ pub fn analyse_coupled(ode: &AirOde<'_>, mono: &[f64], flap_hz: f64) -> Result<C
         let mut y = vec![Vec::with_capacity(nh); n];
         let mut energy = vec![0.0; n];
         for (c, &tau) in phases.iter().enumerate() {
-            let ph = &pm.phi[c * d * d..(c + 1) * d * d];
+            let ph = &phi[c * d * d..(c + 1) * d * d];
             let damp = (-nu * tau).exp();
             for k in 0..n {
                 let mut qk = C64::new(0.0, 0.0);

@@ -50,6 +50,9 @@ pub struct AirOde<'a> {
     /// Instants of one period where the whole wing is at rest (Ω and γ̇ all vanish, e.g. the
     /// stroke reversals of in-phase kinematics): |v₀| has a kink there, and so do the loads.
     pub kinks: Vec<f64>,
+    /// The loads tabulated over one period ([`AirOde::tabulate`]); `None`: every evaluation
+    /// computes them over the quadrature.
+    pub table: Option<std::sync::Arc<LoadTable>>,
 }
 
 /// The instants in [0, T) where the frame's rates (Ω, γ̇) all vanish: local minima of
@@ -157,6 +160,7 @@ impl<'a> AirOde<'a> {
             max_harmonic,
             damping_scale: 0.0,
             kinks: rest_instants(kin),
+            table: None,
         };
         let t = ode.period();
         let (mut b, mut c, mut f) = (vec![0.0; n * n], vec![0.0; n * n], vec![0.0; 5 * n]);
@@ -186,7 +190,14 @@ impl<'a> AirOde<'a> {
             max_harmonic: self.max_harmonic,
             damping_scale: self.damping_scale,
             kinks: self.kinks.clone(),
+            table: self.table.clone(),
         }
+    }
+
+    /// Tabulates the loads over one period ([`LoadTable`]); [`CoupledOde::eval`] reads them
+    /// there from then on.
+    pub fn tabulate(&mut self) {
+        self.table = Some(std::sync::Arc::new(LoadTable::build(self)));
     }
 
     /// The aerodynamic damping matrix C_a(t) (N × N, 1/s) and force F_A(t), unscaled by M⁻¹.
@@ -219,7 +230,11 @@ impl CoupledOde for AirOde<'_> {
         let fa = &mut fa[..n];
         // C_a into b as scratch, then C = M⁻¹ (D + C_a).
         b.fill(0.0);
-        self.wing.loads(&fs, self.k, self.rho_am, fa, b);
+        if !self.table.as_ref().is_some_and(|tb| tb.eval(t, fa, b)) {
+            fa.fill(0.0);
+            b.fill(0.0);
+            self.wing.loads(&fs, self.k, self.rho_am, fa, b);
+        }
         for k in 0..n {
             let m = &self.modes[k];
             b[k * n + k] += 2.0 * m.zeta * m.omega();
@@ -259,12 +274,307 @@ impl CoupledOde for AirOde<'_> {
     fn period(&self) -> f64 {
         2.0 * PI / self.kin.wd
     }
+    /// The kinks, and with a [`LoadTable`] its panel edges too: a panel that had to be short
+    /// marks loads that change fast there, and steps that end at its edges stay inside it.
     fn breakpoints(&self) -> Vec<f64> {
-        self.kinks.clone()
+        let mut b = self.kinks.clone();
+        if let Some(tb) = &self.table {
+            let t = self.period();
+            b.extend(tb.edges.iter().map(|e| e.rem_euclid(t)));
+            b.sort_by(f64::total_cmp);
+            b.dedup_by(|x, y| (*x - *y).abs() <= 1e-12 * t);
+        }
+        b
     }
     fn freq_scale(&self) -> f64 {
         let w = self.modes.iter().map(Mode::omega).fold(0.0, f64::max);
         w.max(4.0 * self.max_harmonic * self.kin.wd)
             .max(self.damping_scale)
+    }
+}
+
+/// Chebyshev points per panel of a [`LoadTable`] (degree 23 interpolants).
+pub const TABLE_NODES: usize = 24;
+/// Panels per period a [`LoadTable`] starts from (between the kinks).
+pub const TABLE_FIRST_PANELS: usize = 8;
+/// The tolerance of a [`LoadTable`] panel: its last two Chebyshev coefficients of every load
+/// stay below this fraction of that load group's largest size over the period (F_A, C_a).
+pub const TABLE_TOLERANCE: f64 = 1e-14;
+/// Shortest panel of a [`LoadTable`], as a fraction of the period; a panel that would need to
+/// be shorter keeps the exact loads.
+const TABLE_MIN_PANEL: f64 = 1.0 / 8192.0;
+/// Most panels of a [`LoadTable`]; past it the remaining panels keep the exact loads.
+pub const TABLE_MAX_PANELS: usize = 2048;
+
+/// The aerodynamic loads of one period (F_A, and C_a's upper triangle) as piecewise Chebyshev
+/// interpolants in time: [`TABLE_NODES`] points per panel, panels between the kinks
+/// ([`rest_instants`]) halved until their last two coefficients are below
+/// [`TABLE_TOLERANCE`] of each load group's size. One load evaluation over the quadrature
+/// costs as much as a whole panel's interpolant evaluated about 40 times, and the propagator
+/// asks for the loads at several thousand instants per period, so it reads them here.
+/// A panel that does not converge before [`TABLE_MIN_PANEL`] (or past [`TABLE_MAX_PANELS`])
+/// is marked exact: the loads are computed directly there.
+#[derive(Debug, Clone)]
+pub struct LoadTable {
+    n: usize,
+    width: usize,
+    /// Chebyshev points per panel.
+    m: usize,
+    /// (row, column) of C_a for each packed slot after the N forces.
+    pairs: Vec<(usize, usize)>,
+    period: f64,
+    /// Start of the table's period (the first kink, or 0).
+    start: f64,
+    /// Panel edges, ascending, from `start` to `start + period`.
+    edges: Vec<f64>,
+    /// Per panel: the coefficients, coefficient-major (`coef[(p·m + j)·width + w]`).
+    coef: Vec<f64>,
+    /// Per panel: whether it keeps the exact loads.
+    exact: Vec<bool>,
+    /// Largest tail over the interpolated panels, relative to its load group's size.
+    pub tail: f64,
+    /// Load evaluations the table cost.
+    pub evaluations: usize,
+}
+
+impl LoadTable {
+    /// Width of one instant's packed loads for `n` modes: F_A (n) and C_a's upper triangle.
+    fn width_for(n: usize) -> usize {
+        n + n * (n + 1) / 2
+    }
+
+    /// The packed loads at `t`.
+    fn sample(ode: &AirOde<'_>, t: f64, force: &mut [f64], damping: &mut [f64], out: &mut [f64]) {
+        let n = ode.modes.len();
+        ode.loads(t, force, damping);
+        out[..n].copy_from_slice(force);
+        let mut w = n;
+        for a in 0..n {
+            for b in a..n {
+                out[w] = damping[a * n + b];
+                w += 1;
+            }
+        }
+    }
+
+    /// Builds the table of `ode`'s loads over one period: [`TABLE_FIRST_PANELS`] panels per
+    /// period between the kinks, sampled first (each load group's size is the largest value
+    /// seen there), then every panel whose tail is above [`TABLE_TOLERANCE`] of that size
+    /// halved until it is not.
+    pub fn build(ode: &AirOde<'_>) -> LoadTable {
+        let n = ode.modes.len();
+        let width = Self::width_for(n);
+        let period = ode.period();
+        let m = TABLE_NODES;
+        let nodes: Vec<f64> = (0..m)
+            .map(|j| (PI * (j as f64 + 0.5) / m as f64).cos())
+            .collect();
+        let start = ode.kinks.first().copied().unwrap_or(0.0);
+        let mut cuts: Vec<f64> = ode.kinks.iter().skip(1).copied().collect();
+        cuts.push(start + period);
+        let mut first: Vec<(f64, f64)> = Vec::new();
+        let mut from = start;
+        for &to in &cuts {
+            let pieces = ((to - from) / period * TABLE_FIRST_PANELS as f64)
+                .ceil()
+                .max(1.0) as usize;
+            let len = (to - from) / pieces as f64;
+            for i in 0..pieces {
+                let b = if i + 1 == pieces {
+                    to
+                } else {
+                    from + (i + 1) as f64 * len
+                };
+                first.push((from + i as f64 * len, b));
+            }
+            from = to;
+        }
+        let mut sampler = PanelSampler {
+            ode,
+            nodes,
+            width,
+            force: vec![0.0; n],
+            damping: vec![0.0; n * n],
+            vals: vec![0.0; m * width],
+            buf: vec![0.0; width],
+            evaluations: 0,
+        };
+        let first_coef: Vec<Vec<f64>> = first.iter().map(|&(a, b)| sampler.panel(a, b)).collect();
+        // Each group's size: the largest |value| of the first panels (c₀ ± Σ|c_k| bounds it
+        // within the tail; the sampled values are what the loads reach).
+        let (mut fsize, mut csize) = (0.0f64, 0.0f64);
+        for c in &first_coef {
+            for w in 0..width {
+                let v = (0..m).map(|k| c[k * width + w].abs()).sum::<f64>();
+                if w < n {
+                    fsize = fsize.max(v);
+                } else {
+                    csize = csize.max(v);
+                }
+            }
+        }
+        let limit: Vec<f64> = (0..width)
+            .map(|w| (TABLE_TOLERANCE * if w < n { fsize } else { csize }).max(1e-300))
+            .collect();
+        let tail_of = |c: &[f64]| {
+            (0..width).fold(0.0f64, |worst, w| {
+                let t = c[(m - 1) * width + w]
+                    .abs()
+                    .max(c[(m - 2) * width + w].abs());
+                worst.max(t / limit[w])
+            })
+        };
+        let mut table = LoadTable {
+            n,
+            width,
+            m,
+            pairs: (0..n).flat_map(|a| (a..n).map(move |b| (a, b))).collect(),
+            period,
+            start,
+            edges: vec![start],
+            coef: Vec::new(),
+            exact: Vec::new(),
+            tail: 0.0,
+            evaluations: 0,
+        };
+        for ((a, b), c) in first.into_iter().zip(first_coef) {
+            // Depth-first halving, left half first, so the panels stay in time order.
+            let mut stack = vec![(a, b, Some(c))];
+            while let Some((a, b, c)) = stack.pop() {
+                let c = c.unwrap_or_else(|| sampler.panel(a, b));
+                let tail = tail_of(&c);
+                if tail <= 1.0 {
+                    table.tail = table.tail.max(tail * TABLE_TOLERANCE);
+                    table.push(b, &c, false);
+                } else if table.exact.len() + stack.len() >= TABLE_MAX_PANELS
+                    || b - a < 2.0 * TABLE_MIN_PANEL * period
+                {
+                    table.push(b, &c, true);
+                } else {
+                    let mid = 0.5 * (a + b);
+                    stack.push((mid, b, None));
+                    stack.push((a, mid, None));
+                }
+            }
+        }
+        table.evaluations = sampler.evaluations;
+        table
+    }
+
+    fn push(&mut self, b: f64, c: &[f64], exact: bool) {
+        self.edges.push(b);
+        self.coef.extend_from_slice(c);
+        self.exact.push(exact);
+    }
+
+    /// Panels, and how many of them keep the exact loads.
+    pub fn panels(&self) -> (usize, usize) {
+        (self.exact.len(), self.exact.iter().filter(|&&e| e).count())
+    }
+
+    /// F_A (N) and C_a (N × N) at `t` from the table, or `None` where the panel is exact.
+    fn eval(&self, t: f64, force: &mut [f64], damping: &mut [f64]) -> bool {
+        let mut tau = t.rem_euclid(self.period);
+        if tau < self.start {
+            tau += self.period;
+        }
+        let p = self
+            .edges
+            .partition_point(|&e| e <= tau)
+            .clamp(1, self.exact.len())
+            - 1;
+        if self.exact[p] {
+            return false;
+        }
+        let (a, b) = (self.edges[p], self.edges[p + 1]);
+        let x = ((2.0 * tau - a - b) / (b - a)).clamp(-1.0, 1.0);
+        let m = self.m;
+        let w = self.width;
+        let n = self.n;
+        let c = &self.coef[p * m * w..(p + 1) * m * w];
+        // Clenshaw, eight loads at a time.
+        const LANES: usize = 8;
+        let mut blk = 0;
+        while blk < w {
+            let bw = LANES.min(w - blk);
+            let (mut b1, mut b2) = ([0.0; LANES], [0.0; LANES]);
+            for j in (1..m).rev() {
+                let cj = &c[j * w + blk..j * w + blk + bw];
+                for i in 0..bw {
+                    let v = cj[i] + 2.0 * x * b1[i] - b2[i];
+                    b2[i] = b1[i];
+                    b1[i] = v;
+                }
+            }
+            for i in 0..bw {
+                let v = c[blk + i] + x * b1[i] - b2[i];
+                let k = blk + i;
+                if k < n {
+                    force[k] = v;
+                } else {
+                    let (r, col) = self.pairs[k - n];
+                    damping[r * n + col] = v;
+                    damping[col * n + r] = v;
+                }
+            }
+            blk += bw;
+        }
+        true
+    }
+}
+
+/// Samples the loads at one panel's Chebyshev points.
+struct PanelSampler<'o, 'a> {
+    ode: &'o AirOde<'a>,
+    nodes: Vec<f64>,
+    width: usize,
+    force: Vec<f64>,
+    damping: Vec<f64>,
+    vals: Vec<f64>,
+    buf: Vec<f64>,
+    evaluations: usize,
+}
+
+impl PanelSampler<'_, '_> {
+    /// The Chebyshev coefficients of the packed loads on [a, b] (coefficient-major).
+    fn panel(&mut self, a: f64, b: f64) -> Vec<f64> {
+        let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
+        let period = self.ode.period();
+        let w = self.width;
+        for (j, x) in self.nodes.iter().enumerate() {
+            let t = (mid + half * x).rem_euclid(period);
+            LoadTable::sample(
+                self.ode,
+                t,
+                &mut self.force,
+                &mut self.damping,
+                &mut self.buf,
+            );
+            self.vals[j * w..(j + 1) * w].copy_from_slice(&self.buf);
+        }
+        self.evaluations += self.nodes.len();
+        let mut coef = vec![0.0; self.nodes.len() * w];
+        chebyshev_coefficients(&self.vals, &self.nodes, w, &mut coef);
+        coef
+    }
+}
+
+/// Chebyshev coefficients of `width` functions sampled at the first-kind points `nodes`
+/// (`vals[j·width + w]`), coefficient-major into `coef` (the first one halved, so f = Σ c_k T_k).
+fn chebyshev_coefficients(vals: &[f64], nodes: &[f64], width: usize, coef: &mut [f64]) {
+    let m = nodes.len();
+    coef.fill(0.0);
+    for k in 0..m {
+        let scale = if k == 0 { 1.0 } else { 2.0 } / m as f64;
+        for j in 0..m {
+            let ck = scale * (PI * k as f64 * (j as f64 + 0.5) / m as f64).cos();
+            let (row, v) = (
+                &mut coef[k * width..(k + 1) * width],
+                &vals[j * width..(j + 1) * width],
+            );
+            for w in 0..width {
+                row[w] += ck * v[w];
+            }
+        }
     }
 }

@@ -4,6 +4,7 @@
 //! run's result in [`crate::run`]). [`crate::simulate::simulate`] calls [`simulate_in_air`]
 //! when the density is above 0; this module never calls back into it.
 
+use super::floquet::{analyse_coupled, FloquetGrid};
 pub use super::ode::{AirOde, AERODYNAMIC, CENTRIFUGAL, CORIOLIS, EULER, TOTAL};
 use super::{AeroWing, WingGeometry};
 use crate::analysis::contribution::contributions_with_aero;
@@ -98,7 +99,8 @@ pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult
         });
     }
     let kin = cfg.kinematics.compile();
-    let ode = AirOde::new(&kin, &cfg.modes, &wing, &cfg.aero)?;
+    let mut ode = AirOde::new(&kin, &cfg.modes, &wing, &cfg.aero)?;
+    ode.tabulate();
     let ns = cfg.n_samples();
     let dt = 1.0 / cfg.sample_rate_hz;
     let mut x0 = vec![0.0; 2 * n];
@@ -107,8 +109,15 @@ pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult
         x0[k] = ic[0];
         x0[n + k] = ic[1];
     }
-    let mut pr = propagate_coupled(&ode, dt, ns, TOTAL, &x0)?;
-    let fl = super::floquet::analyse_coupled(&ode, &pr.monodromy, cfg.kinematics.flap_freq_hz)?;
+    let grid = FloquetGrid::new(&ode);
+    let mut pr = propagate_coupled(&ode, dt, ns, TOTAL, &x0, &grid.checkpoints())?;
+    let fl = analyse_coupled(
+        &ode,
+        &pr.monodromy,
+        cfg.kinematics.flap_freq_hz,
+        &grid,
+        &pr.extra_phi,
+    )?;
     let still = still_air_frequencies(&cfg.modes, &ode.mass);
     // Cycle-averaged aerodynamic damping per mode.
     let t = ode.period();

@@ -21,7 +21,7 @@
 //! columns and the forcings.
 
 use super::gauss::{Tableau, STAGES};
-use super::propagator::{omega_h_for, schedule, MIN_STEPS_PER_PERIOD};
+use super::propagator::{schedule, MAX_OMEGA_H, MIN_STEPS_PER_PERIOD, TARGET_PERIOD_ERROR};
 use crate::error::{Result, WingbeatError};
 
 /// A coupled linear periodic system of N modes (see the module docs).
@@ -67,17 +67,57 @@ pub fn lu_factor(a: &mut [f64], n: usize, piv: &mut [usize]) -> bool {
             }
         }
         let d = 1.0 / a[k * n + k];
-        for r in k + 1..n {
-            let l = a[r * n + k] * d;
-            a[r * n + k] = l;
+        let (top, below) = a.split_at_mut((k + 1) * n);
+        let pivot_row = &top[k * n + k + 1..(k + 1) * n];
+        for row in below.chunks_exact_mut(n) {
+            let l = row[k] * d;
+            row[k] = l;
             if l != 0.0 {
-                for c in k + 1..n {
-                    a[r * n + c] -= l * a[k * n + c];
+                for (x, u) in row[k + 1..].iter_mut().zip(pivot_row) {
+                    *x -= l * u;
                 }
             }
         }
     }
     true
+}
+
+/// Solves with the factors of [`lu_factor`] for `m` right-hand sides stored row-major in `x`
+/// (`x[i·m + j]`: row i of all of them at once), in place.
+pub fn lu_solve_rows(a: &[f64], n: usize, piv: &[usize], x: &mut [f64], m: usize) {
+    for k in 0..n {
+        if piv[k] != k {
+            for c in 0..m {
+                x.swap(k * m + c, piv[k] * m + c);
+            }
+        }
+    }
+    for i in 1..n {
+        let (done, rest) = x.split_at_mut(i * m);
+        let xi = &mut rest[..m];
+        for (k, xk) in done.chunks_exact(m).enumerate() {
+            let l = a[i * n + k];
+            if l != 0.0 {
+                for (v, w) in xi.iter_mut().zip(xk) {
+                    *v -= l * w;
+                }
+            }
+        }
+    }
+    for i in (0..n).rev() {
+        let (head, tail) = x.split_at_mut((i + 1) * m);
+        let xi = &mut head[i * m..];
+        for (k, xk) in tail.chunks_exact(m).enumerate() {
+            let u = a[i * n + i + 1 + k];
+            for (v, w) in xi.iter_mut().zip(xk) {
+                *v -= u * w;
+            }
+        }
+        let inv = 1.0 / a[i * n + i];
+        for v in xi.iter_mut() {
+            *v *= inv;
+        }
+    }
 }
 
 /// Solves with the factors of [`lu_factor`] for `m` right-hand sides stored column-major in
@@ -115,9 +155,9 @@ struct Work {
     g: Vec<f64>,
     piv: Vec<usize>,
     rhs: Vec<f64>,
-    /// Step map R (2N × 2N row-major) and increments r_j (2N each, column j at j·2N).
-    r: Vec<f64>,
-    p: Vec<f64>,
+    /// The step's affine map [R | P]: 2N rows of 2N + n_forces columns (R the transition,
+    /// column 2N + j the increment of forcing j from rest).
+    rp: Vec<f64>,
     a2: [[f64; STAGES]; STAGES],
     ba: [f64; STAGES],
     tab: Tableau,
@@ -146,8 +186,7 @@ impl Work {
             g: vec![0.0; s * s],
             piv: vec![0; s],
             rhs: vec![0.0; s * (2 * n + nf)],
-            r: vec![0.0; 4 * n * n],
-            p: vec![0.0; 2 * n * nf],
+            rp: vec![0.0; 2 * n * (2 * n + nf)],
             a2,
             ba,
             tab,
@@ -186,21 +225,21 @@ impl Work {
                 }
             }
         }
-        // Right-hand sides: q = e_m, q̇ = e_m (zero forcing), then each forcing from rest.
+        // Right-hand sides, row-major (row i·N + r of stage i): q = e_m, q̇ = e_m (zero
+        // forcing), then each forcing from rest.
         let ncol = 2 * n + nf;
         for i in 0..STAGES {
             let bi = &self.b[i * nn..(i + 1) * nn];
             let ci = &self.c[i * nn..(i + 1) * nn];
             let hc = h * self.tab.c[i];
-            for m in 0..n {
-                for r in 0..n {
-                    self.rhs[m * s + i * n + r] = -bi[r * n + m];
-                    self.rhs[(n + m) * s + i * n + r] = -hc * bi[r * n + m] - ci[r * n + m];
+            for r in 0..n {
+                let row = &mut self.rhs[(i * n + r) * ncol..(i * n + r + 1) * ncol];
+                for m in 0..n {
+                    row[m] = -bi[r * n + m];
+                    row[n + m] = -hc * bi[r * n + m] - ci[r * n + m];
                 }
-            }
-            for j in 0..nf {
-                for r in 0..n {
-                    self.rhs[(2 * n + j) * s + i * n + r] = self.f[i * n * nf + j * n + r];
+                for j in 0..nf {
+                    row[2 * n + j] = self.f[i * n * nf + j * n + r];
                 }
             }
         }
@@ -210,53 +249,45 @@ impl Work {
                 detail: "the stage system is singular (step too long for the damping)".into(),
             });
         }
-        lu_solve(&self.g, s, &self.piv, &mut self.rhs, ncol);
+        lu_solve_rows(&self.g, s, &self.piv, &mut self.rhs, ncol);
         // New states: q' = q + h q̇ + h² Σ (bᵀA)_l K_l, q̇' = q̇ + h Σ b_i K_i.
-        let d = 2 * n;
-        for col in 0..ncol {
-            let k = &self.rhs[col * s..(col + 1) * s];
-            for r in 0..n {
-                let mut dq = 0.0;
-                let mut dv = 0.0;
-                for i in 0..STAGES {
-                    dq += self.ba[i] * k[i * n + r];
-                    dv += self.tab.b[i] * k[i * n + r];
-                }
-                let (q0, v0) = if col < n {
-                    (if r == col { 1.0 } else { 0.0 }, 0.0)
-                } else if col < 2 * n {
-                    (0.0, if r == col - n { 1.0 } else { 0.0 })
-                } else {
-                    (0.0, 0.0)
-                };
-                let qn = q0 + h * v0 + h * h * dq;
-                let vn = v0 + h * dv;
-                if col < d {
-                    self.r[r * d + col] = qn;
-                    self.r[(n + r) * d + col] = vn;
-                } else {
-                    let j = col - d;
-                    self.p[j * d + r] = qn;
-                    self.p[j * d + n + r] = vn;
+        let (q_rows, v_rows) = self.rp.split_at_mut(n * ncol);
+        for r in 0..n {
+            let qr = &mut q_rows[r * ncol..(r + 1) * ncol];
+            let vr = &mut v_rows[r * ncol..(r + 1) * ncol];
+            qr.fill(0.0);
+            vr.fill(0.0);
+            for i in 0..STAGES {
+                let k = &self.rhs[(i * n + r) * ncol..(i * n + r + 1) * ncol];
+                let (wq, wv) = (h * h * self.ba[i], h * self.tab.b[i]);
+                for ((q, v), kk) in qr.iter_mut().zip(vr.iter_mut()).zip(k) {
+                    *q += wq * kk;
+                    *v += wv * kk;
                 }
             }
+            qr[r] += 1.0;
+            qr[n + r] += h;
+            vr[n + r] += 1.0;
         }
         Ok(())
     }
 }
 
-/// Φ ← R Φ for d × d row-major matrices (`tmp` scratch of d²).
-fn left_mul(r: &[f64], phi: &mut [f64], d: usize, tmp: &mut [f64]) {
+/// S ← [R | P] applied to the affine state S = [Φ | p] (d rows, `ncol` = d + n_forces columns,
+/// row-major): Φ ← R Φ, p_j ← R p_j + P_j. `tmp` is scratch of the same size.
+fn compose(rp: &[f64], st: &mut [f64], d: usize, ncol: usize, tmp: &mut [f64]) {
     for i in 0..d {
-        for j in 0..d {
-            let mut s = 0.0;
-            for k in 0..d {
-                s += r[i * d + k] * phi[k * d + j];
+        let out = &mut tmp[i * ncol..(i + 1) * ncol];
+        out[..d].fill(0.0);
+        out[d..].copy_from_slice(&rp[i * ncol + d..(i + 1) * ncol]);
+        for k in 0..d {
+            let r = rp[i * ncol + k];
+            for (o, v) in out.iter_mut().zip(&st[k * ncol..(k + 1) * ncol]) {
+                *o += r * v;
             }
-            tmp[i * d + j] = s;
         }
     }
-    phi.copy_from_slice(tmp);
+    st.copy_from_slice(tmp);
 }
 
 /// x ← R x + r for a d-vector.
@@ -292,11 +323,37 @@ pub struct CoupledMap {
     pub steps: usize,
 }
 
-/// The step length for `ode` over `span`: the one-period error rule of the single-mode
-/// propagator ([`omega_h_for`]) with ω the system's [`CoupledOde::freq_scale`].
+/// Leading error constant of the 4-stage Gauss–Legendre method on an oscillation e^{iωt}: its
+/// stability function is the Padé (4,4) approximant of e^z, whose error is
+/// (4!)² / (8!·9!) z⁹ ≈ 3.9e-8 z⁹ per step. (The single-mode rule,
+/// [`super::propagator::GAUSS_ERROR_CONSTANT`], uses a constant about 580× larger and so
+/// takes about 2.2× more steps than its target needs; the vacuum path keeps it.)
+pub const COUPLED_ERROR_CONSTANT: f64 = 576.0 / (40320.0 * 362880.0);
+
+/// ω·h for the coupled propagator: the accumulated error over `span`, (ω·span / ωh) steps ×
+/// C (ωh)⁹, at [`TARGET_PERIOD_ERROR`] with C = [`COUPLED_ERROR_CONSTANT`]; never above
+/// [`MAX_OMEGA_H`]. For the FE wing in air this gives a measured one-period error of 3e-13
+/// (`tests/aero_air.rs`, `coupled_step_rule_meets_the_one_period_target`).
+pub fn coupled_omega_h(w: f64, span: f64) -> f64 {
+    let wt = (w * span).max(1.0);
+    (TARGET_PERIOD_ERROR / (COUPLED_ERROR_CONSTANT * wt))
+        .powf(0.125)
+        .min(MAX_OMEGA_H)
+}
+
+/// Steps over `span` at the highest angular frequency `freq_scale` (rad/s) by the coupled
+/// rule ([`coupled_omega_h`]), at least [`MIN_STEPS_PER_PERIOD`]; kinks and checkpoints add
+/// more. The air run's cost estimate (`aero::simulate::air_run_cost`) calls this.
+pub fn coupled_steps_per_span(freq_scale: f64, span: f64) -> f64 {
+    let w = freq_scale.max(1e-300);
+    let hmax = (coupled_omega_h(w, span) / w).min(span / MIN_STEPS_PER_PERIOD as f64);
+    (span / hmax).ceil()
+}
+
+/// The step length for `ode` over `span`: [`coupled_omega_h`] with ω the system's
+/// [`CoupledOde::freq_scale`], and at least [`MIN_STEPS_PER_PERIOD`] steps.
 pub fn max_step<O: CoupledOde + ?Sized>(ode: &O, span: f64) -> f64 {
-    let w = ode.freq_scale().max(1e-300);
-    (omega_h_for(w, span) / w).min(span / MIN_STEPS_PER_PERIOD as f64)
+    span / coupled_steps_per_span(ode.freq_scale(), span)
 }
 
 /// Integrates `ode` over [0, span] with steps no longer than `hmax`, recording Φ and p_j at
@@ -311,12 +368,13 @@ pub fn coupled_map<O: CoupledOde + ?Sized>(
     let nf = ode.n_forces();
     let d = 2 * n;
     let mut w = Work::new(n, nf);
-    let mut phi = vec![0.0; d * d];
+    let ncol = d + nf;
+    // The affine state S = [Φ | p_0 … p_{nf−1}], d rows, row-major.
+    let mut st = vec![0.0; d * ncol];
     for i in 0..d {
-        phi[i * d + i] = 1.0;
+        st[i * ncol + i] = 1.0;
     }
-    let mut part = vec![0.0; d * nf];
-    let mut tmp = vec![0.0; d * d];
+    let mut tmp = vec![0.0; d * ncol];
     let mut out = CoupledMap {
         n,
         nf,
@@ -327,52 +385,49 @@ pub fn coupled_map<O: CoupledOde + ?Sized>(
         part_end: vec![],
         steps: 0,
     };
-    let mut t = 0.0;
-    let kinks: Vec<f64> = ode
+    let mut kinks: Vec<f64> = ode
         .breakpoints()
         .into_iter()
         .filter(|&b| b > 0.0 && b < span)
         .collect();
-    let mut advance = |from: f64, to: f64, phi: &mut [f64], part: &mut [f64]| -> Result<usize> {
-        let len = to - from;
-        if len <= 0.0 {
+    kinks.sort_by(f64::total_cmp);
+    let mut advance = |from: f64, to: f64, st: &mut [f64]| -> Result<usize> {
+        if to - from <= 0.0 {
             return Ok(0);
         }
         // Pieces between the kinks inside (from, to), each in equal steps.
-        let mut edges = vec![from];
-        edges.extend(kinks.iter().copied().filter(|&b| b > from && b < to));
-        edges.push(to);
+        let lo = kinks.partition_point(|&b| b <= from);
+        let hi = kinks.partition_point(|&b| b < to);
         let mut steps = 0;
-        for piece in edges.windows(2) {
-            let (a, b) = (piece[0], piece[1]);
+        let mut a = from;
+        for &b in kinks[lo..hi.max(lo)].iter().chain(std::iter::once(&to)) {
             let m = ((b - a) / hmax).ceil().max(1.0) as usize;
             let h = (b - a) / m as f64;
             for s in 0..m {
                 w.step(ode, a + s as f64 * h, h)?;
-                left_mul(&w.r, phi, d, &mut tmp);
-                for j in 0..nf {
-                    affine(
-                        &w.r,
-                        &mut part[j * d..(j + 1) * d],
-                        &w.p[j * d..(j + 1) * d],
-                        d,
-                        &mut tmp,
-                    );
-                }
+                compose(&w.rp, st, d, ncol, &mut tmp);
             }
             steps += m;
+            a = b;
         }
         Ok(steps)
     };
+    let record = |st: &[f64], phi: &mut Vec<f64>, part: &mut Vec<f64>| {
+        for i in 0..d {
+            phi.extend_from_slice(&st[i * ncol..i * ncol + d]);
+        }
+        for j in 0..nf {
+            part.extend((0..d).map(|i| st[i * ncol + d + j]));
+        }
+    };
+    let mut t = 0.0;
     for &tau in phases {
-        out.steps += advance(t, tau, &mut phi, &mut part)?;
+        out.steps += advance(t, tau, &mut st)?;
         t = t.max(tau);
-        out.phi.extend_from_slice(&phi);
-        out.part.extend_from_slice(&part);
+        record(&st, &mut out.phi, &mut out.part);
     }
-    out.steps += advance(t, span, &mut phi, &mut part)?;
-    out.monodromy = phi;
-    out.part_end = part;
+    out.steps += advance(t, span, &mut st)?;
+    record(&st, &mut out.monodromy, &mut out.part_end);
     Ok(out)
 }
 
@@ -396,6 +451,37 @@ pub struct CoupledResponses {
     pub periods: u64,
     /// Steps per period.
     pub steps: usize,
+    /// Φ at each of the extra phases asked for (2N × 2N row-major each, concatenated).
+    pub extra_phi: Vec<f64>,
+}
+
+/// The union of the ascending phase lists `a` and `b` (each in [0, span]), phases closer than
+/// `tol` taken as one, without `span` itself; and for each phase of `a` and of `b` its index in
+/// the union (`usize::MAX` for a phase of `b` at `span`; `a` lies in [0, span)).
+fn merge_phases(a: &[f64], b: &[f64], span: f64, tol: f64) -> (Vec<f64>, Vec<usize>, Vec<usize>) {
+    let mut all: Vec<f64> = Vec::with_capacity(a.len() + b.len());
+    let (mut ia, mut ib) = (vec![usize::MAX; a.len()], vec![usize::MAX; b.len()]);
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() || j < b.len() {
+        let take_a = j >= b.len() || (i < a.len() && a[i] <= b[j]);
+        let v = if take_a { a[i] } else { b[j] };
+        let idx = if !take_a && v >= span - tol {
+            usize::MAX
+        } else if all.last().is_some_and(|&l| v - l <= tol) {
+            all.len() - 1
+        } else {
+            all.push(v);
+            all.len() - 1
+        };
+        if take_a {
+            ia[i] = idx;
+            i += 1;
+        } else {
+            ib[j] = idx;
+            j += 1;
+        }
+    }
+    (all, ia, ib)
 }
 
 /// The Richardson estimate of one period's relative error from the maps at the step
@@ -440,13 +526,16 @@ fn richardson_error(map: &CoupledMap, coarse: &CoupledMap, w: f64) -> f64 {
 }
 
 /// Propagates `ode` to t_i = i·dt, i = 0..n: every forcing column's response from rest, and
-/// for the column `total` also with the initial state `x0` = (q(0), q̇(0)) (2N values).
+/// for the column `total` also with the initial state `x0` = (q(0), q̇(0)) (2N values). The
+/// same pass records Φ at the `extra` phases (ascending, in (0, period]; the Floquet analysis'
+/// grid), so they need no integration of their own.
 pub fn propagate_coupled<O: CoupledOde + ?Sized>(
     ode: &O,
     dt: f64,
     n_samples: usize,
     total: usize,
     x0: &[f64],
+    extra: &[f64],
 ) -> Result<CoupledResponses> {
     let n = ode.n_modes();
     let nf = ode.n_forces();
@@ -454,7 +543,16 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
     let period = ode.period();
     let sched = schedule(dt, n_samples, period);
     let hmax = max_step(ode, period);
-    let map = coupled_map(ode, period, &sched.phases, hmax)?;
+    let (all, out_idx, extra_idx) = merge_phases(&sched.phases, extra, period, 1e-12 * period);
+    let map = coupled_map(ode, period, &all, hmax)?;
+    let mut extra_phi = Vec::with_capacity(extra.len() * d * d);
+    for &e in &extra_idx {
+        extra_phi.extend_from_slice(if e == usize::MAX {
+            &map.monodromy
+        } else {
+            &map.phi[e * d * d..(e + 1) * d * d]
+        });
+    }
     // Error estimate: the same period with twice the step (end values only).
     let coarse = coupled_map(ode, period, &[], 2.0 * hmax)?;
     let period_error = richardson_error(&map, &coarse, ode.freq_scale().max(1e-300));
@@ -488,7 +586,7 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
             cur += 1;
         }
         periods = periods.max(k + 1);
-        let slot = slot as usize;
+        let slot = out_idx[slot as usize];
         let ph = &map.phi[slot * d * d..(slot + 1) * d * d];
         let pt = &map.part[slot * d * nf..(slot + 1) * d * nf];
         for i in 0..d {
@@ -531,5 +629,6 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
         period_error,
         periods,
         steps: map.steps,
+        extra_phi,
     })
 }
