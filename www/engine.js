@@ -37,7 +37,7 @@ import { loadWasm, compiledWasm, defaultWorker, startWorker, splitAngles } from 
 import { JOB } from './engine/protocol.js';
 import { liveAsk, liveOverrides, createLiveQueue } from './engine/requests.js';
 import { createJobs } from './engine/jobs.js';
-import { createWings, createPointStrains } from './engine/cache.js';
+import { createWings, createPointStrains, withWing, noWingInFluid } from './engine/cache.js';
 
 export { loadWasm, splitAngles };
 export { wingKey } from './engine/cache.js';
@@ -126,7 +126,7 @@ export function createEngine(deps = {}) {
   /** wasm analyze of one ask on this thread, timed. */
   const analyzeHere = (/** @type {ReturnType<typeof liveAsk>} */ ask) => {
     const t0 = now();
-    const a = need().analyze(ask.cfg, ask.opts, ask.k);
+    const a = need().analyze(ask.run, ask.opts, ask.k);
     return liveResult(ask, a, now() - t0);
   };
 
@@ -192,9 +192,14 @@ export function createEngine(deps = {}) {
       const w = need();
       const b = { ...base, sample_rate_hz: SAMPLE_RATE_HZ };
       if (params.modes === 'fe' && wings.fe) b.modes = modesAt(wings.fe, strainPoint);
+      else if (Number(params.air_density) > 0) throw new Error(noWingInFluid(params.air_density));
       // Custom kinematics: the table (or hand-edited series) is the whole stroke.
       if (kin) b.kinematics = kin;
       return w.applyOverrides(b, liveOverrides(params, !!kin));
+    },
+    /** `cfg` with the wing in use attached in a fluid (engine/cache.js withWing). */
+    withWing(/** @type {SimConfig} */ cfg) {
+      return withWing(cfg, wings.fe);
     },
     /** Custom kinematics (the core's Kinematics) or null for the sliders' Fourier kinematics. */
     setKinematics(/** @type {Kinematics | null} */ k) {
@@ -321,7 +326,8 @@ export function createEngine(deps = {}) {
      */
     analyze(params) {
       need();
-      return analyzeHere(liveAsk(params, engine.config(params)));
+      const cfg = engine.config(params);
+      return analyzeHere(liveAsk(params, cfg, engine.withWing(cfg)));
     },
     /**
      * The live analysis of `params` in the live worker: resolves to the same LiveResult as
@@ -334,7 +340,8 @@ export function createEngine(deps = {}) {
      */
     requestLive(params) {
       need();
-      return live.request(liveAsk(params, engine.config(params)));
+      const cfg = engine.config(params);
+      return live.request(liveAsk(params, cfg, engine.withWing(cfg)));
     },
     /** Starts the live worker now (its wasm loads while the first result is computed here). */
     warmLive() {
@@ -356,7 +363,9 @@ export function createEngine(deps = {}) {
      * @param {(done: number, total: number) => void} [onProgress]
      */
     run(kind, payload, onProgress) {
-      return jobs.run(kind, payload, onProgress);
+      // A study's config in a fluid carries the wing in use (its mesh and shapes), as a live one does.
+      const p = payload && payload.cfg ? { ...payload, cfg: engine.withWing(payload.cfg) } : payload;
+      return jobs.run(kind, p, onProgress);
     },
     /**
      * The resonance map (wasm `resonanceMap`, run in the worker): Floquet f_eff and largest
@@ -367,7 +376,7 @@ export function createEngine(deps = {}) {
      * @param {(done: number, total: number) => void} [onProgress]
      */
     resonanceMap(cfg, opts, onProgress) {
-      return jobs.run(JOB.resonance, { cfg, opts }, onProgress);
+      return jobs.run(JOB.resonance, { cfg: engine.withWing(cfg), opts }, onProgress);
     },
     /** Whether job `id` is still running. */
     running(/** @type {number} */ id) {

@@ -20,6 +20,7 @@ const COLORS = {
   centrifugal: '#ff7f0e',
   coriolis: '#2ca02c',
   stiffness_force: '#9467bd',
+  aerodynamic: '#0f7c8c',
   total: '#222222',
   free: '#8c564b',
   envelope: '#d62728',
@@ -285,6 +286,19 @@ export function linePlot(parent, spec) {
     },
     setYLabel(markup) {
       ytitle.replaceChildren(rich(markup));
+    },
+    /**
+     * Whether series `i` (0-based, as in spec.series) exists for the current data: an absent
+     * one (e.g. the aerodynamic force in a vacuum) is not drawn and has no legend button; when
+     * it comes back it is drawn unless its button was switched off.
+     * @param {number} i
+     * @param {boolean} on
+     */
+    setAvailable(i, on) {
+      const b = buttons[i];
+      if (b) b.hidden = !on;
+      const pressed = !b || b.getAttribute('aria-pressed') !== 'false';
+      if (u.series[i + 1].show !== (on && pressed)) u.setSeries(i + 1, { show: on && pressed });
     },
     setSummary(text) {
       summary.textContent = text;

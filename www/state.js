@@ -43,6 +43,17 @@ export const NUMERIC = [
 ];
 
 /**
+ * The named media of the Parameters panel's medium control (www/views/medium.js), densities in
+ * kg/m³: the core's table (src/aero/mod.rs MEDIA, wasm `media()`; tests/js/wasm.test.mjs holds
+ * them equal). Any other density of the `air_density` slider is a custom medium.
+ */
+export const MEDIA = Object.freeze([
+  Object.freeze({ name: 'vacuum', density_kg_m3: 0 }),
+  Object.freeze({ name: 'helium', density_kg_m3: 0.18 }),
+  Object.freeze({ name: 'air', density_kg_m3: 1.2 }),
+]);
+
+/**
  * Enumerated parameters. `disabled` choices are shown but not selectable (and rejected from URLs).
  * @type {EnumParam[]}
  */

@@ -119,6 +119,14 @@ fn grid(r: [f64; 2], n: usize) -> Vec<f64> {
 /// Computes the map for `cfg` (its own initial conditions are ignored).
 pub fn ic_map(cfg: &SimConfig, opts: &IcMapOptions) -> Result<IcMap> {
     cfg.validate()?;
+    if !cfg.aero.is_vacuum() {
+        // One mode's initial conditions, superposed per mode: air couples the modes.
+        return Err(WingbeatError::invalid(
+            "aero.air_density_kg_m3",
+            cfg.aero.air_density_kg_m3,
+            "0 for the initial-condition map (it superposes one mode's free responses, and a fluid couples the modes)",
+        ));
+    }
     if opts.mode >= cfg.modes.len() {
         return Err(WingbeatError::invalid(
             "ic_map.mode",

@@ -152,6 +152,13 @@ pub fn resonance_map(
     opts: &ResonanceOptions,
     mut progress: impl FnMut(usize, usize),
 ) -> Result<ResonanceMap> {
+    if !cfg.aero.is_vacuum() {
+        return Err(WingbeatError::invalid(
+            "aero.air_density_kg_m3",
+            cfg.aero.air_density_kg_m3,
+            "0 for the resonance map (its Floquet numbers are per mode, in a vacuum; a fluid couples the modes: run `simulate` in air for their coupled Floquet numbers)",
+        ));
+    }
     let (flap, alpha0) = plan(cfg, opts)?;
     let rows: Vec<Option<f64>> = match &alpha0 {
         Some(a) => a.iter().map(|&v| Some(v)).collect(),

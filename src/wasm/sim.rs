@@ -142,6 +142,25 @@ pub fn reproduce_text() -> Result<String, JsError> {
     Ok(crate::reproduce::reproduce().map_err(err)?.to_text())
 }
 
+/// The named media (`vacuum`, `helium`, `air`) and their densities, kg/m³: the lab's medium
+/// control offers these (any other density is a custom medium).
+#[wasm_bindgen(unchecked_return_type = "Medium[]")]
+pub fn media() -> Result<JsValue, JsError> {
+    #[derive(serde::Serialize)]
+    struct Medium {
+        name: &'static str,
+        density_kg_m3: f64,
+    }
+    let list: Vec<Medium> = crate::aero::MEDIA
+        .iter()
+        .map(|&(name, density_kg_m3)| Medium {
+            name,
+            density_kg_m3,
+        })
+        .collect();
+    to_js(&list)
+}
+
 /// The lab's numeric parameters, in slider order, from the core's table (`params::PARAMS`):
 /// `{ key, symbol, label, unit, min, max, step, default }` each, defaults = the paper case.
 /// The lab builds its sliders and URL checks from this, so the ranges have one owner.

@@ -36,6 +36,8 @@ export interface SimConfig {
 }
 /** The medium and the quasi-steady aerodynamic model (docs/model.md, "The wing in air"). */
 export interface AeroConfig { air_density_kg_m3?: number; normal_force_coefficient?: number; added_mass?: boolean; strips?: number; chord_points?: number }
+/** A named medium of `media()`: its density, kg/m³. */
+export interface Medium { name: string; density_kg_m3: number }
 /** An FE wing for the air: nodes (x, y, z per node, m), triangles (3 node indices each), shapes (mode-major, one per node and mode of the config, kg^-½). */
 export interface WingInput { nodes: Float64Array | number[]; triangles: Uint32Array | number[]; shapes: Float64Array | number[] }
 /** Welch PSD options (Hann window). detrend "none" keeps the DC part visible. */

@@ -75,6 +75,7 @@ test('analyze builds the config from the parameters; the angles come with the an
   assert.equal(wb.calls.last.cfg, r.cfg);
   assert.equal(r.cfg.applied.gamma0, 0.1);
   assert.deepEqual(Object.keys(r.cfg.applied).sort(), [
+    'air_density',
     'alpha0',
     'alpha_phase',
     'beta0',
@@ -350,8 +351,8 @@ test('custom kinematics replace the sliders’ stroke; a strain point replaces t
   assert.equal(cfg.kinematics, kin);
   assert.deepEqual(
     Object.keys(cfg.applied).sort(),
-    ['duration', 'zeta'],
-    'only ζ and the duration apply to custom kinematics',
+    ['air_density', 'duration', 'zeta'],
+    'only ζ, the duration and the medium apply to custom kinematics',
   );
   e.setStrainPoint([4, -2]);
   cfg = e.config(p);
@@ -365,7 +366,7 @@ test('custom kinematics replace the sliders’ stroke; a strain point replaces t
   e.setKinematics(null);
   cfg = e.config(p);
   assert.equal(cfg.modes[0].strains[0].eps_x, 9);
-  assert.equal(Object.keys(cfg.applied).length, 9);
+  assert.equal(Object.keys(cfg.applied).length, 10);
 });
 
 test('live requests: coalesced in the live worker; only the newest result reaches the store', async () => {

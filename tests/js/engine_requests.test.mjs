@@ -36,10 +36,18 @@ test('what a recompute asks for: the mode index, the spectra options, the overri
   assert.equal(a.k, 2);
   assert.deepEqual(a.opts, { detrend: 'linear', segment_len: LIVE_SEGMENT_LEN });
   assert.deepEqual(a.cfg, { c: 1 });
+  assert.equal(a.run, a.cfg, 'wasm gets the config itself unless a wing is attached');
+  const w = liveAsk(defaults(), { c: 1 }, { c: 1, wing: {} });
+  assert.deepEqual(w.cfg, { c: 1 }, 'the result keeps the plain config');
+  assert.deepEqual(w.run, { c: 1, wing: {} });
   const all = liveOverrides(defaults(), false);
   assert.ok(STROKE_KEYS.every((k) => k in all));
   const kin = liveOverrides({ ...defaults(), zeta: 0.03 }, true);
-  assert.deepEqual(Object.keys(kin).sort(), ['duration', 'zeta'], 'custom kinematics: only ζ and the duration apply');
+  assert.deepEqual(
+    Object.keys(kin).sort(),
+    ['air_density', 'duration', 'zeta'],
+    'custom kinematics: only ζ, the duration and the medium apply',
+  );
   assert.equal(kin.zeta, 0.03);
 });
 

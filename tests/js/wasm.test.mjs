@@ -11,7 +11,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { NUMERIC, SAMPLE_RATE_HZ, defaults } from '../../www/state.js';
+import { NUMERIC, MEDIA, SAMPLE_RATE_HZ, defaults } from '../../www/state.js';
 import { createEngine } from '../../www/engine.js';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
@@ -56,6 +56,14 @@ test('the slider table agrees with the core’s parameter table, field by field'
     assert.equal(plainSym(p.sym), c.symbol, `${p.key}.symbol`);
     assert.equal(plainSym(p.label), c.label, `${p.key}.label`);
   }
+});
+
+test('the medium control’s named media are the core’s, with the same densities', async () => {
+  const wb = await wbPromise;
+  assert.deepEqual(
+    wb.media(),
+    MEDIA.map((m) => ({ ...m })),
+  );
 });
 
 test('the URL defaults, applied by the core, are exactly the paper case at the lab’s sample rate', async () => {

@@ -297,6 +297,7 @@ function validArgs(wb) {
       defaultConfig: [],
       limits: [],
       parameters: [],
+      media: [],
       bodyRateRanges: [],
       reproduceText: [],
       reproduce: [],

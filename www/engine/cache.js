@@ -151,3 +151,23 @@ export function createPointStrains(strainsAt) {
     }));
   };
 }
+
+/**
+ * `cfg` with the wing `fe`'s mesh and mode shapes attached as `cfg.wing` when `cfg` is in a
+ * fluid (aero.air_density_kg_m3 > 0) and its modes are that wing's; else `cfg` itself. The
+ * wing travels beside the JSON config (typed arrays, copied to a worker with the message) and
+ * is never part of an export.
+ * @param {import('../pkg/wingbeat.js').SimConfig} cfg
+ * @param {FeModesResult | null} fe
+ * @returns {import('../pkg/wingbeat.js').SimConfig}
+ */
+export function withWing(cfg, fe) {
+  const rho = cfg && cfg.aero ? Number(cfg.aero.air_density_kg_m3) : 0;
+  if (!(rho > 0) || !fe || !cfg.modes || cfg.modes.length !== fe.modes.length) return cfg;
+  return { ...cfg, wing: { nodes: fe.nodes, triangles: fe.triangles, shapes: fe.shapes } };
+}
+
+/** Why a fluid cannot run on the paper's table modes (the message names `air_density`). */
+export function noWingInFluid(/** @type {number} */ rho) {
+  return `air_density = ${rho} kg/m³ needs the FE wing's mode shapes (a fluid loads the wing point by point; the paper's table has frequencies only): choose Mode set: FE wing, or the vacuum`;
+}

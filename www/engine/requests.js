@@ -39,14 +39,17 @@ export function liveOverrides(params, customKinematics) {
 
 /**
  * What one recompute asks of wasm `analyze`: the config, the selected mode's index and the
- * spectra's options.
+ * spectra's options. `run` is the config wasm is given: `cfg` itself, or in a fluid `cfg` with
+ * the wing's mesh and shapes attached (engine.withWing), which stays out of `cfg` (the plain
+ * JSON config a result and its exports carry).
  * @param {import('../state.js').Params} params
  * @param {import('../pkg/wingbeat.js').SimConfig} cfg
+ * @param {import('../pkg/wingbeat.js').SimConfig} [run]
  */
-export function liveAsk(params, cfg) {
+export function liveAsk(params, cfg, run = cfg) {
   /** @type {import('../pkg/wingbeat.js').WelchOptions} */
   const opts = { detrend: params.detrend, segment_len: LIVE_SEGMENT_LEN };
-  return { cfg, k: Number(params.mode) - 1, params, opts };
+  return { cfg, run, k: Number(params.mode) - 1, params, opts };
 }
 /** @typedef {ReturnType<typeof liveAsk>} LiveAsk */
 
@@ -85,7 +88,7 @@ export function createLiveQueue({ start, here, fromWorker }) {
     inflight = req;
     stats.posted++;
     /** @type {Worker} */ (live).postMessage(
-      jobMessage(req.seq, JOB.analyze, { cfg: req.cfg, opts: req.opts, k: req.k }),
+      jobMessage(req.seq, JOB.analyze, { cfg: req.run, opts: req.opts, k: req.k }),
     );
   }
 

@@ -77,6 +77,9 @@ export function initialState({ attrs, search }) {
   if (params.exp) Object.assign(params, experimentPatch(params.exp, [...given].filter(accepted)));
   // A wing parameter, outline or planform file given without a mode set means the FE wing.
   if (!given.has('modes') && WING_KEYS.some((k) => given.has(k) && accepted(k))) params.modes = 'fe';
+  // So does a fluid (air_density above 0): air acts on the FE wing's mode shapes.
+  if (!given.has('modes') && given.has('air_density') && accepted('air_density') && params.air_density > 0)
+    params.modes = 'fe';
   const nModes = params.modes === 'fe' ? params.n_modes : 2;
   if (Number(params.mode) > nModes) {
     rejected.push({

@@ -4,6 +4,7 @@
 // preset, warnings and the compute/draw timing. Reads and writes only the store.
 import { NUMERIC, ENUMS, MAIN_KEYS, FE_LAB_INPUT, defaults, snap } from '../state.js';
 import { el, activeIn } from '../dom.js';
+import { mediumControl } from './medium.js';
 import { fmt, plain, PAPER_UNITS_NOTE } from '../format.js';
 
 export const title = 'Parameters';
@@ -104,6 +105,14 @@ export function mount(ctx) {
     selBox.append(el('div', { class: 'wl-row wl-select' }, el('label', { for: id(e.key), text: e.label }), s));
     selects[e.key] = s;
   }
+  const medium = mediumControl({
+    store,
+    id,
+    openMore: () => {
+      setMore(true);
+      inputs.air_density.num.focus();
+    },
+  });
   const warnEl = el('p', { class: 'wl-warn', role: 'status', hidden: true });
   const timingEl = el('p', { class: 'wl-timing', 'aria-live': 'off', text: 'loading wasm…' });
   const moreId = id('more');
@@ -134,7 +143,7 @@ export function mount(ctx) {
     rich: 'Custom kinematics in use (Kinematics panel): α_0, β_0, γ_0, the phases and f_d do not apply; ζ and the duration do.',
   });
   section.append(kinNote);
-  section.append(main, moreBtn, moreBox, warnEl, timingEl);
+  section.append(main, medium.element, moreBtn, moreBox, warnEl, timingEl);
 
   let narrow = false;
   /** @type {boolean | null} on a focused screen (null: not told yet) */
@@ -154,6 +163,7 @@ export function mount(ctx) {
       range.setAttribute('aria-valuetext', valueText(p, v));
     }
     for (const [k, sel] of Object.entries(selects)) if (sel.value !== s[k]) sel.value = s[k];
+    medium.sync(s);
   };
   /** The selected-mode choices are 1..N, N = the modes of the config (2 for the paper table). */
   const labelModes = (s) => {

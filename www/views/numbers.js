@@ -1,6 +1,8 @@
 // @ts-check
 // Floquet & contributions panel: every mode's natural and effective frequencies, beat periods,
-// multipliers, stability and force-term shares, as a table (its own text alternative).
+// multipliers, stability and force-term shares, as a table (its own text alternative). In a
+// fluid, rows for what the air does (the aerodynamic share, the still-air frequency, the
+// aerodynamic damping, the free vibration's decay time and the beat's fate) appear.
 import { el, rich } from '../dom.js';
 import { fmt, UNITS } from '../format.js';
 import { toQuery } from '../state.js';
@@ -22,6 +24,19 @@ export function peakOf(a, k, key) {
   return peak;
 }
 
+/**
+ * The beat's fate in a fluid, short: whether the free vibration (time constant `tau`, s)
+ * outlives one beat period (s). The core's sentence (ModeAir.beat) says the same at length.
+ * @param {number | null} tau
+ * @param {number | null} beat
+ */
+export function beatFate(tau, beat) {
+  if (beat == null) return 'no beat';
+  if (tau == null) return 'does not fade';
+  if (tau < beat) return `gone within one beat (τ ${fmt(tau, 2)} s < ${fmt(beat, 2)} s)`;
+  return `fades over ${fmt(tau / beat, 2)} beats (τ ${fmt(tau, 2)} s)`;
+}
+
 export const ROWS = [
   ['freq', 'Natural frequency f_k (Hz)'],
   ['feff', 'Floquet effective frequency (Hz)'],
@@ -34,9 +49,17 @@ export const ROWS = [
   ['euler', 'Euler share (%)'],
   ['centrifugal', 'Centrifugal share (%)'],
   ['coriolis', 'Coriolis share (%)'],
+  ['aero', 'Aerodynamic share (%)'],
   ['sum', 'Sum of shares (%)'],
   ['peak', `Peak |q| total (${UNITS.q.label})`],
+  ['still', 'Still-air frequency (Hz, added mass)'],
+  ['zeta_a', 'Aerodynamic damping ratio ζ_a (cycle average)'],
+  ['decay', 'Free vibration decay time 1/σ (s)'],
+  ['fate', 'The beat in this fluid'],
 ];
+
+/** The rows shown only in a fluid (hidden in a vacuum). */
+const AIR_ROWS = new Set(['aero', 'still', 'zeta_a', 'decay', 'fate']);
 
 /** @param {import('../lab.js').ViewContext} ctx */
 export function mount(ctx) {
@@ -73,6 +96,8 @@ export function mount(ctx) {
   const cells = {};
   /** @type {HTMLTableCellElement[][]} cells by [row][mode], for the selection mark */
   let cols = [];
+  /** @type {HTMLTableRowElement[]} the rows of the air (hidden in a vacuum) */
+  let airRows = [];
   let nModes = 0;
 
   /** Rebuilds header and body for `n` modes (only when the count changes). */
@@ -81,6 +106,7 @@ export function mount(ctx) {
     nModes = n;
     for (const k of Object.keys(cells)) delete cells[k];
     cols = Array.from({ length: n }, () => []);
+    airRows = [];
     headRow.replaceChildren(
       el('th', { scope: 'col', text: 'Quantity' }),
       ...Array.from({ length: n }, (_, k) => {
@@ -91,7 +117,8 @@ export function mount(ctx) {
     );
     tbody.replaceChildren(
       ...ROWS.map(([key, label]) => {
-        const tr = el('tr', {}, el('th', { scope: 'row' }, rich(label)));
+        const tr = el('tr', { 'data-row': key }, el('th', { scope: 'row' }, rich(label)));
+        if (AIR_ROWS.has(key)) airRows.push(tr);
         for (let k = 0; k < n; k++) {
           const td = el('td', { 'data-field': `${key}-${k}`, text: '—' });
           cells[`${key}-${k}`] = td;
@@ -135,20 +162,30 @@ export function mount(ctx) {
       set('euler', k, fmt(c.euler, 4));
       set('centrifugal', k, fmt(c.centrifugal, 4));
       set('coriolis', k, fmt(c.coriolis, 4));
-      set('sum', k, fmt(c.euler + c.centrifugal + c.coriolis, 4));
+      set('aero', k, c.aerodynamic == null ? '— (vacuum)' : fmt(c.aerodynamic, 4));
+      set('sum', k, fmt(c.euler + c.centrifugal + c.coriolis + (c.aerodynamic || 0), 4));
+      const air = m.air;
+      set('still', k, air ? fmt(air.still_air_freq_hz, 5) : '— (vacuum)');
+      set('zeta_a', k, air ? fmt(air.aero_damping_ratio, 3) : '— (vacuum)');
+      set('decay', k, air ? (air.decay_time_s == null ? '— (no decay)' : fmt(air.decay_time_s, 3)) : '— (vacuum)');
+      set('fate', k, air ? beatFate(air.decay_time_s, f.beat_period_s) : '— (vacuum)');
+      const fc = cells[`fate-${k}`];
+      if (fc) fc.title = air ? air.beat : '';
       // The core's run-wide peak (Analysis.peaks): no scan of every sample on the page's thread.
       set('peak', k, fmt(peakOf(a, k, 'total'), 4));
     });
     cols.forEach((col, k) => {
       for (const c of col) c.classList.toggle('wl-selmode', k === s.result.k);
     });
+    const inAir = !!a.sim.air;
+    for (const tr of airRows) tr.hidden = !inAir;
     table.dataset.selected = String(s.result.k + 1);
     table.dataset.modes = String(nModes);
   };
   const unsub = store.subscribe(['result'], draw);
   const header = () => ['Quantity', ...Array.from({ length: nModes }, (_, k) => `Mode ${k + 1}`)];
   const rows = () =>
-    ROWS.map(([key, label]) => [
+    ROWS.filter(([key]) => !AIR_ROWS.has(key) || !airRows.some((r) => r.hidden)).map(([key, label]) => [
       label,
       ...Array.from({ length: nModes }, (_, k) => cells[`${key}-${k}`].textContent || ''),
     ]);

@@ -1,7 +1,8 @@
 // @ts-check
-// Spectra panel (paper Fig. 4): Welch PSDs of the Euler, centrifugal and Coriolis forces and of
-// the stiffness force S(t)·q_k (left axis), and of the total response (right axis), with
-// markers at the flap harmonics n·f_d, the natural frequency f_k and the Floquet f_{eff}.
+// Spectra panel (paper Fig. 4): Welch PSDs of the Euler, centrifugal and Coriolis forces, of
+// the stiffness force S(t)·q_k and, in air, of the aerodynamic force (left axis), and of the
+// total response (right axis), with markers at the flap harmonics n·f_d, the natural
+// frequency f_k and the Floquet f_{eff}.
 import { el, rich, isTouch } from '../dom.js';
 import { fmt, UNITS, PAPER_UNITS_NOTE } from '../format.js';
 import { linePlot, color, log10OrNull } from '../plot.js';
@@ -29,6 +30,7 @@ export function mount(ctx) {
       { label: 'Coriolis force', color: color('coriolis'), width: 1.6 },
       { label: 'Stiffness force S(t)·q', color: color('stiffness_force') },
       { label: 'Total response (right axis)', color: color('total'), scale: 'y2', dash: [4, 3] },
+      { label: 'Aerodynamic force', color: color('aerodynamic'), width: 1.6 },
     ],
     markers: () => markers,
     height: 250,
@@ -36,7 +38,7 @@ export function mount(ctx) {
   section.append(
     el('p', {
       class: 'wl-note',
-      rich: `Welch PSD, Hann window, 8192-sample segments, one-sided. Grey lines: multiples n·f_d of the flap frequency; blue dashed: natural frequency f_k; red: Floquet effective frequency f_{eff}. S(t) = α̇^2cos^2β + β̇^2 is the stiffness coefficient (1/s^2); the stiffness force S(t)·q is in force units. ${isTouch() ? 'Touch the plot for values.' : 'Hover for values (legend); drag to zoom, double-click to reset.'}`,
+      rich: `Welch PSD, Hann window, 8192-sample segments, one-sided. Grey lines: multiples n·f_d of the flap frequency; blue dashed: natural frequency f_k; red: Floquet effective frequency f_{eff}. S(t) = α̇^2cos^2β + β̇^2 is the stiffness coefficient (1/s^2); the stiffness force S(t)·q is in force units. In a fluid (Parameters: Medium) the aerodynamic force F_A of the rigid motion (quasi-steady drag and added mass) joins them. ${isTouch() ? 'Touch the plot for values.' : 'Hover for values (legend); drag to zoom, double-click to reset.'}`,
     }),
   );
   const unitNote = el('p', { class: 'wl-note wl-units-note' });
@@ -61,6 +63,7 @@ export function mount(ctx) {
       return out;
     };
     const stiff = sp.stiffness_force;
+    const aero = sp.aerodynamic;
     plot.setData([
       Array.from(freq.subarray(0, n)),
       pos(sp.euler.psd),
@@ -68,7 +71,9 @@ export function mount(ctx) {
       pos(sp.coriolis.psd),
       pos(stiff.psd),
       pos(sp.total.psd),
+      aero ? pos(aero.psd) : new Array(n).fill(null),
     ]);
+    plot.setAvailable(5, !!aero);
     const marks = [];
     for (let j = 1; j * fd <= fmax; j++) marks.push({ x: j * fd, label: `${j}f_d`, color: '#8a8a8a' });
     marks.push({ x: fk, label: 'f_k', color: '#1f5fbf', dash: [5, 4] });
@@ -82,7 +87,7 @@ export function mount(ctx) {
       return freq[b];
     };
     plot.setSummary(
-      `Mode ${k + 1}, 0 to ${fmt(fmax, 3)} Hz. Largest non-DC peaks: Euler force at ${fmt(peakOf(sp.euler.psd), 4)} Hz, centrifugal at ${fmt(peakOf(sp.centrifugal.psd), 4)} Hz, Coriolis at ${fmt(peakOf(sp.coriolis.psd), 4)} Hz, stiffness force at ${fmt(peakOf(stiff.psd), 4)} Hz, total response at ${fmt(peakOf(sp.total.psd), 4)} Hz. ` +
+      `Mode ${k + 1}, 0 to ${fmt(fmax, 3)} Hz. Largest non-DC peaks: Euler force at ${fmt(peakOf(sp.euler.psd), 4)} Hz, centrifugal at ${fmt(peakOf(sp.centrifugal.psd), 4)} Hz, Coriolis at ${fmt(peakOf(sp.coriolis.psd), 4)} Hz, stiffness force at ${fmt(peakOf(stiff.psd), 4)} Hz, ${aero ? `aerodynamic force at ${fmt(peakOf(aero.psd), 4)} Hz, ` : ''}total response at ${fmt(peakOf(sp.total.psd), 4)} Hz. ` +
         `Markers: flap harmonics every ${fmt(fd, 4)} Hz, natural frequency ${fmt(fk, 4)} Hz, Floquet effective frequency ${fmt(f.effective_freq_hz, 6)} Hz.`,
     );
     unitNote.replaceChildren(rich(s.modes === 'paper' ? PAPER_UNITS_NOTE : 'FE wing: SI units throughout.'));
@@ -103,6 +108,7 @@ export function mount(ctx) {
           { name: 'psd_coriolis_force', unit: pu, values: sp.coriolis.psd },
           { name: 'psd_stiffness_force', unit: pu, values: sp.stiffness_force.psd },
           { name: 'psd_total_response', unit: UNITS.qpsd.csv, values: sp.total.psd },
+          ...(sp.aerodynamic ? [{ name: 'psd_aerodynamic_force', unit: pu, values: sp.aerodynamic.psd }] : []),
         ],
         [
           `wingbeat lab; ${toQuery(s)}`,

@@ -26,10 +26,12 @@ export function writeBeat(box, a, k, s, b, f) {
   box.dataset.beatGoneAt = f.goneAt == null ? '' : String(f.goneAt);
   const p = (/** @type {string} */ markup) => el('p', {}, rich(markup));
   const sigma = m.floquet.growth_rate_per_s;
+  // In a fluid the air damps the free vibration too (the core's cycle-averaged ζ_a).
+  const cause = m.air
+    ? `the air’s damping (cycle-averaged ζ_a = ${fmt(m.air.aero_damping_ratio, 3)}) plus ζ = ${fmt(s.zeta, 3)}, in ${fmt(Number(s.air_density), 3)} kg/m³`
+    : `−ζω_{${k + 1}} with ζ = ${fmt(s.zeta, 3)}`;
   const tauText =
-    f.tau == null
-      ? ''
-      : `τ = −1/σ = ${fmt(f.tau, 3)} s (σ = ${fmt(sigma, 3)} 1/s, the Floquet growth rate; −ζω_{${k + 1}} with ζ = ${fmt(s.zeta, 3)})`;
+    f.tau == null ? '' : `τ = −1/σ = ${fmt(f.tau, 3)} s (σ = ${fmt(sigma, 3)} 1/s, the Floquet growth rate; ${cause})`;
   if (f.kind === 'gone' && f.goneAt != null) {
     box.append(
       el(
