@@ -17,24 +17,10 @@
 import { defaults, toQuery, NUMERIC, ENUMS } from './state.js';
 import { UNITS, errorText } from './format.js';
 import { peakAbs, measureBeat, growthRate } from './measure.js';
+import { fmt } from './experiments/fmt.js';
+import { AIR_EXPERIMENTS } from './experiments/air.js';
 
-/**
- * Compact number formatting in the lab's rich-label markup (www/format.js): exponents as
- * ×10^{k}, a real minus sign. The sentences below are markup too (f_{eff}, γ_0, ω_1), rendered
- * with sub/superscripts by the view and as plain text by `plain`.
- */
-export function fmt(v, digits = 4) {
-  if (v == null || Number.isNaN(v)) return '—';
-  if (!Number.isFinite(v)) return v > 0 ? '∞' : '−∞';
-  if (v === 0) return '0';
-  const a = Math.abs(v);
-  const minus = (t) => t.replace(/-/g, '−');
-  if (a >= 1e5 || a < 1e-3) {
-    const [m, e] = v.toExponential(digits - 1).split('e');
-    return minus(`${m}×10^{${Number(e)}}`);
-  }
-  return minus(Number(v.toPrecision(digits)).toString());
-}
+export { fmt };
 
 const sampleRate = (a) => a.sim.sample_rate_hz || 1 / (a.sim.t[1] - a.sim.t[0]);
 const relErr = (x, ref) => Math.abs(x - ref) / Math.abs(ref);
@@ -369,6 +355,7 @@ export const EXPERIMENTS = [
       return { lines, checks, values: { coriolis_percent: cor } };
     },
   },
+  ...AIR_EXPERIMENTS,
 ];
 
 export function experiment(id) {

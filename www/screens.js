@@ -75,6 +75,8 @@ export const EXPERIMENT_SCREEN = Object.freeze({
   resonance: 'beat',
   instability: 'beat',
   sensing: 'sensing',
+  'air-beat': 'beat',
+  'air-superharmonic': 'beat',
 });
 
 /**

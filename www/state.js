@@ -126,7 +126,18 @@ export function bodyRateVector(s) {
 }
 
 /** Guided experiments (www/experiments.js); `exp=<id>` opens one. */
-export const EXPERIMENT_IDS = ['beat', 'no-yaw', 'damping', 'yaw', 'ic', 'resonance', 'instability', 'sensing'];
+export const EXPERIMENT_IDS = [
+  'beat',
+  'no-yaw',
+  'damping',
+  'yaw',
+  'ic',
+  'resonance',
+  'instability',
+  'sensing',
+  'air-beat',
+  'air-superharmonic',
+];
 
 /**
  * The lab's FE wing (wasm `feModes` input): the default synthetic outline, camber, clamp,

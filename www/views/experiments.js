@@ -7,6 +7,7 @@
 // experiment's parameters (ctx.setParams).
 import { el } from '../dom.js';
 import { plain, errorText } from '../format.js';
+import { LIVE_SEGMENT_LEN } from '../engine/requests.js';
 import { SCREENS, EXPERIMENT_SCREEN } from '../screens.js';
 import { EXPERIMENTS, experiment, experimentPatch, experimentQuery, predict } from '../experiments.js';
 
@@ -63,15 +64,23 @@ export function mount(ctx) {
   function studyFor(e) {
     if (!e.study) return null;
     const s = store.get();
-    const cfg = engine.config(s);
-    const opts = { ...e.study.opts };
+    // `analyze`: the live analysis of the same state with the study's `params` (another
+    // medium), in the study worker; the other kinds take the live config and their `opts`.
+    const compare = e.study.kind === 'analyze';
+    let cfg;
+    try {
+      cfg = engine.config(compare ? { ...s, ...e.study.params } : s);
+    } catch (err) {
+      return { result: null, error: errorText(err) };
+    }
+    const opts = compare ? { detrend: s.detrend, segment_len: LIVE_SEGMENT_LEN } : { ...e.study.opts };
     if (e.study.kind === 'icmap') opts.mode = Number(s.mode) - 1;
     const key = `${e.study.kind}|${JSON.stringify(opts)}|${JSON.stringify(cfg)}`;
     let entry = studies.get(key);
     if (!entry) {
       entry = { result: null, error: null };
       studies.set(key, entry);
-      const job = engine.run(e.study.kind, { cfg, opts });
+      const job = engine.run(e.study.kind, compare ? { cfg, opts, k: Number(s.mode) - 1 } : { cfg, opts });
       job.promise.then(
         ({ result }) => {
           entry.result = result;
@@ -139,7 +148,7 @@ export function mount(ctx) {
         lastAnnounced = say;
       }
     }
-    if (e.study) {
+    if (e.study && e.study.kind !== 'analyze') {
       const target = e.study.kind === 'resonance' ? 'resonance' : 'studies';
       const label = {
         resonance: 'Go to the resonance map',
