@@ -291,7 +291,7 @@ pub fn sample_forces(cfg: &SimConfig, which: ModeSelection) -> Result<Vec<Option
     let dt = 1.0 / cfg.sample_rate_hz;
     let states: Vec<_> = (0..n).map(|i| kin.state(i as f64 * dt)).collect();
     let coefficient: Vec<f64> = states.iter().map(stiffness_coefficient).collect();
-    let mut aero = aerodynamic_forces(cfg, &states)?;
+    let mut aero = aerodynamic_forces(cfg, &kin, n, dt)?;
     Ok(cfg
         .modes
         .iter()
@@ -318,34 +318,25 @@ pub fn sample_forces(cfg: &SimConfig, which: ModeSelection) -> Result<Vec<Option
         .collect())
 }
 
-/// The aerodynamic force of the rigid motion on every mode at the kinematic `states` (one
-/// vector per mode), or none in a vacuum: the same quadrature and normal-force law the air
-/// run integrates ([`crate::aero::AeroWing::loads_nonlinear`] at zero elastic velocity).
-fn aerodynamic_forces(
-    cfg: &SimConfig,
-    states: &[crate::kinematics::RateState],
-) -> Result<Vec<Vec<f64>>> {
+/// The aerodynamic force of the rigid motion on every mode at t_i = i·`dt`, i < `n` (one vector
+/// per mode), or none in a vacuum: the loads the air run integrates, read from the same
+/// one-period table ([`crate::aero::ode::LoadTable`], within 1e-14 of each load group's size
+/// of the quadrature sum) instead of a quadrature sum per sample.
+fn aerodynamic_forces(cfg: &SimConfig, kin: &Compiled, n: usize, dt: f64) -> Result<Vec<Vec<f64>>> {
     if cfg.aero.is_vacuum() {
         return Ok(Vec::new());
     }
     let geom = cfg.wing.as_deref().ok_or_else(crate::aero::no_wing_error)?;
-    let n = cfg.modes.len();
-    geom.validate(n)?;
+    let m = cfg.modes.len();
+    geom.validate(m)?;
     cfg.aero.validate()?;
     let wing = crate::aero::AeroWing::build(geom, &cfg.aero)?;
-    let k = 0.5 * cfg.aero.air_density_kg_m3 * cfg.aero.normal_force_coefficient;
-    let rho_am = if cfg.aero.added_mass {
-        cfg.aero.air_density_kg_m3
-    } else {
-        0.0
-    };
-    let zero = vec![0.0; n];
-    let mut f = vec![0.0; n];
-    let mut out = vec![Vec::with_capacity(states.len()); n];
-    for s in states {
-        f.fill(0.0);
-        let fs = crate::aero::FrameState::from_state(s);
-        wing.loads_nonlinear(&fs, k, rho_am, &zero, &mut f);
+    let mut ode = crate::aero::ode::AirOde::new(kin, &cfg.modes, &wing, &cfg.aero)?;
+    ode.tabulate();
+    let (mut f, mut c) = (vec![0.0; m], vec![0.0; m * m]);
+    let mut out = vec![Vec::with_capacity(n); m];
+    for i in 0..n {
+        ode.loads(i as f64 * dt, &mut f, &mut c);
         for (o, v) in out.iter_mut().zip(&f) {
             o.push(*v);
         }

@@ -500,6 +500,6 @@ export function describe(s) {
   return (
     `α_0 = ${s.alpha0} rad, β_0 = ${s.beta0} rad, γ_0 = ${s.gamma0} rad, f_d = ${s.flap_hz} Hz, ζ = ${s.zeta}, ` +
     `phases φ_α = ${s.alpha_phase}, φ_β = ${s.beta_phase}, φ_γ = ${s.gamma_phase} rad, ${s.duration} s at ${SAMPLE_RATE_HZ / 1000} kHz; ` +
-    `mode ${s.mode}, ${modes} — wingbeat lab`
+    `mode ${s.mode}, ${modes}, ${Number(s.air_density) > 0 ? `in a fluid of ${s.air_density} kg/m³` : 'in a vacuum'} — wingbeat lab`
   );
 }
