@@ -5,13 +5,16 @@
 
 use std::sync::{Arc, OnceLock};
 use wingbeat::aero::nonlinear::{rk4_linear, simulate_nonlinear};
+use wingbeat::aero::ode::{LoadTable, TABLE_TOLERANCE};
 use wingbeat::aero::simulate::{AirOde, AERODYNAMIC, TOTAL};
 use wingbeat::aero::{AeroConfig, AeroWing, FrameState, WingGeometry};
 use wingbeat::config::SimConfig;
 use wingbeat::fem::{self, FemInput, ShellMaterial};
 use wingbeat::kinematics::Kinematics;
 use wingbeat::simulate::simulate;
-use wingbeat::solve::coupled::{coupled_map, max_step, propagate_coupled, CoupledOde};
+use wingbeat::solve::coupled::{
+    coupled_map, map_difference, max_step, propagate_coupled, CoupledOde,
+};
 
 fn fe_wing() -> &'static SimConfig {
     static C: OnceLock<SimConfig> = OnceLock::new();
@@ -300,9 +303,9 @@ fn coupled_propagator_matches_rk4_on_the_2n_system() {
                 d / max_abs(ours)
             );
             assert!(
-                d <= 1e-10 * largest,
-                "column {col} mode {k}: {:e} of the largest peak",
-                d / largest
+                d <= 1e-10 * max_abs(ours),
+                "column {col} mode {k}: {:e} of its peak",
+                d / max_abs(ours)
             );
         }
     }
@@ -313,6 +316,96 @@ fn coupled_propagator_matches_rk4_on_the_2n_system() {
         "period error estimate {}",
         pr.period_error
     );
+}
+
+/// The loads at `t` summed over the quadrature and read from `table`, and each group's largest
+/// size over the period (F_A, C_a), for the table check.
+fn table_error(ode: &AirOde<'_>, table: &LoadTable, m: usize) -> (f64, f64) {
+    let n = ode.n_modes();
+    let t = ode.period();
+    let (mut fe, mut ce) = (vec![0.0; n], vec![0.0; n * n]);
+    let (mut ft, mut ct) = (vec![0.0; n], vec![0.0; n * n]);
+    let (mut fsize, mut csize, mut fdiff, mut cdiff) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for j in 0..m {
+        // Off every grid: an irrational fraction of the period apart.
+        let tau = ((j as f64 + 0.5) * 0.618_033_988_749_894_9 * t / m as f64 * 7.0).rem_euclid(t);
+        ode.exact_loads(tau, &mut fe, &mut ce);
+        if !table.eval_at(tau, &mut ft, &mut ct) {
+            continue;
+        }
+        fsize = fsize.max(max_abs(&fe));
+        csize = csize.max(max_abs(&ce));
+        fdiff = fdiff.max(max_diff(&fe, &ft));
+        cdiff = cdiff.max(max_diff(&ce, &ct));
+    }
+    (fdiff / fsize, cdiff / csize)
+}
+
+#[test]
+fn the_load_table_reproduces_the_quadrature_loads_between_its_nodes() {
+    // The default FE wing in air (rest instants at the stroke reversals) and with a steady
+    // body roll rate (no rest instant; single points pass through rest, so the loads change
+    // fast there and the table halves its panels).
+    let mut rolling = air_cfg(1.2, 0.04);
+    rolling.kinematics.body_rate.x = wingbeat::kinematics::Angle::Fourier {
+        mean: 3.0,
+        harmonics: vec![],
+    };
+    for (name, cfg) in [
+        ("paper kinematics", air_cfg(1.2, 0.04)),
+        ("body roll 3 rad/s", rolling),
+    ] {
+        let wing = AeroWing::build(cfg.wing.as_deref().unwrap(), &cfg.aero).unwrap();
+        let kin = cfg.kinematics.compile();
+        let ode = AirOde::new(&kin, &cfg.modes, &wing, &cfg.aero).unwrap();
+        let table = LoadTable::build(&ode);
+        let (panels, exact) = table.panels();
+        let (fe, ce) = table_error(&ode, &table, 500);
+        println!(
+            "{name}: {panels} panels ({exact} exact), {} load evaluations, tail {:.1e}; max error F_A {fe:.1e}, C_a {ce:.1e} of their size",
+            table.evaluations, table.tail
+        );
+        assert!(table.tail <= TABLE_TOLERANCE, "{}", table.tail);
+        assert!(fe < 5e-14 && ce < 5e-14, "F_A {fe:e}, C_a {ce:e}");
+        // Far fewer evaluations than the propagator's four per step.
+        assert!(table.evaluations < 2000, "{}", table.evaluations);
+    }
+}
+
+#[test]
+fn coupled_step_rule_meets_the_one_period_target_and_the_estimate_bounds_the_error() {
+    // The default FE wing in air, loads tabulated as the run does: one period at the rule's
+    // step against the same period at a quarter of it; the propagator's Richardson estimate
+    // must not be below that measured error.
+    let cfg = air_cfg(1.2, 0.04);
+    let wing = AeroWing::build(cfg.wing.as_deref().unwrap(), &cfg.aero).unwrap();
+    let kin = cfg.kinematics.compile();
+    let mut ode = AirOde::new(&kin, &cfg.modes, &wing, &cfg.aero).unwrap();
+    ode.tabulate();
+    let t = ode.period();
+    let dt = 1.0 / cfg.sample_rate_hz;
+    let phases: Vec<f64> = (0..(t / dt).round() as usize)
+        .map(|j| j as f64 * dt)
+        .collect();
+    let h = max_step(&ode, t);
+    let map = coupled_map(&ode, t, &phases, h).unwrap();
+    let fine = coupled_map(&ode, t, &phases, h / 4.0).unwrap();
+    let measured = map_difference(&map, &fine, ode.freq_scale());
+    let n = ode.n_modes();
+    let pr = propagate_coupled(&ode, dt, phases.len() + 1, TOTAL, &vec![0.0; 2 * n], &[]).unwrap();
+    println!(
+        "{} steps per period (the vacuum rule would take {}): measured one-period error {measured:.2e}, estimate {:.2e}",
+        map.steps,
+        wingbeat::solve::propagator::steps_per_span(ode.freq_scale(), t),
+        pr.period_error
+    );
+    assert!(measured < 1e-12, "{measured:e}");
+    assert!(
+        pr.period_error >= measured,
+        "{} < {measured:e}",
+        pr.period_error
+    );
+    assert!(pr.period_error < 1e-11, "{}", pr.period_error);
 }
 
 #[test]

@@ -149,14 +149,22 @@ pub struct FloquetGrid {
 }
 
 impl FloquetGrid {
-    /// The grid for `ode`.
-    pub fn new(ode: &AirOde<'_>) -> FloquetGrid {
+    /// The grid for `ode`. When the output samples fall on `per_period` equally spaced phases
+    /// of the flap period (a commensurate grid), nh is the smallest whole fraction of them
+    /// that is still enough, so the Floquet phases are output phases and cost the propagator
+    /// no extra steps; otherwise nh is the next power of two.
+    pub fn new(ode: &AirOde<'_>, per_period: Option<usize>) -> FloquetGrid {
         let t = ode.period();
-        let tp = if half_period(ode) { 0.5 * t } else { t };
+        let half = half_period(ode);
+        let tp = if half { 0.5 * t } else { t };
         let ratio = ode.homogeneous().freq_scale() * tp / (2.0 * PI);
-        let nh = ((4.0 * ratio + 16.0) as usize)
-            .next_power_of_two()
-            .clamp(32, 1 << 14);
+        let need = ((4.0 * ratio + 16.0) as usize).max(32);
+        let on_output = per_period
+            .map(|l| if half { l / 2 } else { l })
+            .filter(|&l| l >= need && (!half || per_period.is_some_and(|p| p % 2 == 0)))
+            .and_then(|l| (1..=l / need).rev().find(|k| l % k == 0).map(|k| l / k))
+            .filter(|&nh| nh <= 1 << 14);
+        let nh = on_output.unwrap_or_else(|| need.next_power_of_two().clamp(32, 1 << 14));
         FloquetGrid {
             tp,
             phases: (0..nh).map(|j| j as f64 * tp / nh as f64).collect(),

@@ -200,8 +200,20 @@ impl<'a> AirOde<'a> {
         self.table = Some(std::sync::Arc::new(LoadTable::build(self)));
     }
 
-    /// The aerodynamic damping matrix C_a(t) (N × N, 1/s) and force F_A(t), unscaled by M⁻¹.
+    /// The aerodynamic damping matrix C_a(t) (N × N, 1/s) and force F_A(t), unscaled by M⁻¹:
+    /// from the [`LoadTable`] where there is one, else [`AirOde::exact_loads`].
     pub fn loads(&self, t: f64, force: &mut [f64], damping: &mut [f64]) {
+        if !self
+            .table
+            .as_ref()
+            .is_some_and(|tb| tb.eval(t, force, damping))
+        {
+            self.exact_loads(t, force, damping);
+        }
+    }
+
+    /// C_a(t) and F_A(t) as [`AirOde::loads`], always summed over the quadrature.
+    pub fn exact_loads(&self, t: f64, force: &mut [f64], damping: &mut [f64]) {
         let s = self.kin.state(t);
         let fs = FrameState::from_state(&s);
         force.fill(0.0);
@@ -225,7 +237,6 @@ impl CoupledOde for AirOde<'_> {
         let n = self.modes.len();
         let s = self.kin.state(t);
         let sc = stiffness_coefficient(&s);
-        let fs = FrameState::from_state(&s);
         let mut fa = [0.0; crate::model::MAX_MODES];
         let fa = &mut fa[..n];
         // C_a into b as scratch, then C = M⁻¹ (D + C_a).
@@ -233,6 +244,7 @@ impl CoupledOde for AirOde<'_> {
         if !self.table.as_ref().is_some_and(|tb| tb.eval(t, fa, b)) {
             fa.fill(0.0);
             b.fill(0.0);
+            let fs = FrameState::from_state(&s);
             self.wing.loads(&fs, self.k, self.rho_am, fa, b);
         }
         for k in 0..n {
@@ -346,7 +358,7 @@ impl LoadTable {
     /// The packed loads at `t`.
     fn sample(ode: &AirOde<'_>, t: f64, force: &mut [f64], damping: &mut [f64], out: &mut [f64]) {
         let n = ode.modes.len();
-        ode.loads(t, force, damping);
+        ode.exact_loads(t, force, damping);
         out[..n].copy_from_slice(force);
         let mut w = n;
         for a in 0..n {
@@ -472,7 +484,13 @@ impl LoadTable {
         (self.exact.len(), self.exact.iter().filter(|&&e| e).count())
     }
 
-    /// F_A (N) and C_a (N × N) at `t` from the table, or `None` where the panel is exact.
+    /// F_A (N) and C_a (N × N) at `t` from the table written into `force` and `damping`;
+    /// false (nothing written) where the panel keeps the exact loads.
+    pub fn eval_at(&self, t: f64, force: &mut [f64], damping: &mut [f64]) -> bool {
+        self.eval(t, force, damping)
+    }
+
+    #[inline]
     fn eval(&self, t: f64, force: &mut [f64], damping: &mut [f64]) -> bool {
         let mut tau = t.rem_euclid(self.period);
         if tau < self.start {

@@ -6,6 +6,7 @@
 
 use super::floquet::{analyse_coupled, FloquetGrid};
 pub use super::ode::{AirOde, AERODYNAMIC, CENTRIFUGAL, CORIOLIS, EULER, TOTAL};
+use super::ode::{TABLE_FIRST_PANELS, TABLE_NODES};
 use super::{AeroWing, WingGeometry};
 use crate::analysis::contribution::contributions_with_aero;
 use crate::config::SimConfig;
@@ -13,7 +14,7 @@ use crate::error::{Result, WingbeatError};
 use crate::model::Mode;
 use crate::run::{assemble, Accuracy, ModeResult, Responses, SimResult, MAX_RUN_WORK};
 pub use crate::run::{AirSummary, ModeAir};
-use crate::solve::coupled::{propagate_coupled, CoupledOde};
+use crate::solve::coupled::{coupled_steps_per_span, propagate_coupled, CoupledOde};
 use crate::solve::ModalOde;
 use std::f64::consts::PI;
 
@@ -63,25 +64,52 @@ pub fn still_air_frequencies(modes: &[Mode], mass: &[f64]) -> Vec<f64> {
     out
 }
 
-/// Estimated cost of an air run in step equivalents (as [`crate::simulate::run_cost`]): per
-/// Gauss step four load evaluations over the quadrature (N + N(N+1)/2 products per point) and
-/// a 4N LU with 2N + 5 right-hand sides, about 1 ns per product, 1 000 per unit; one period
-/// three times (responses, error estimate, Floquet) plus the output.
+/// Estimated cost of an air run in step equivalents (as [`crate::simulate::run_cost`]; one
+/// unit is about 1 µs natively), counted in multiply-adds at [`AIR_PRODUCTS_PER_UNIT`] per
+/// unit:
+/// - the load table ([`super::ode::LoadTable`]): four times its first panels (allowing for
+///   the halving where the loads change fast), [`TABLE_NODES`] load evaluations each, every
+///   one N + N(N+1)/2 + 20 products per quadrature point;
+/// - the Gauss steps: one period by the coupled rule ([`coupled_steps_per_span`]) plus one
+///   step per output phase and per Floquet phase (checkpoints split steps), and half as many
+///   again for the error estimate; per step four table reads, the 4N LU with its 2N + 5
+///   right-hand sides and the composition of the step's affine map;
+/// - the output: per sample and mode Φ(τ) applied to the six period-start states, and the
+///   rest of the result (contributions, strain), 0.2 unit per sample and mode as in a vacuum.
 pub fn air_run_cost(cfg: &SimConfig, wing_points: usize) -> f64 {
     let kin = cfg.kinematics.compile();
     let n = cfg.modes.len() as f64;
     let w = cfg.modes.iter().map(Mode::omega).fold(0.0, f64::max);
     let h = ModalOde::new(&kin, &cfg.modes[0]).max_harmonic;
     let t = 2.0 * PI / kin.wd;
-    let steps = crate::solve::propagator::steps_per_span(w.max(4.0 * h * kin.wd), t);
-    let s = 4.0 * n;
-    let per_step = 4.0 * wing_points as f64 * (n + n * (n + 1.0) / 2.0 + 12.0)
-        + (2.0 / 3.0) * s * s * s
-        + 2.0 * s * s * (2.0 * n + 5.0)
-        + 8.0 * n * n * n * 6.0;
+    let wmax = w.max(4.0 * h * kin.wd);
+    let steps = coupled_steps_per_span(wmax, t);
     let samples = cfg.duration_s * cfg.sample_rate_hz + 1.0;
-    3.0 * steps * per_step / 1000.0 + samples * n * (10.0 * n + 5.0) / 1000.0 + samples * n * 0.2
+    // Distinct output phases per period: T/dt on a commensurate grid, else every sample.
+    let per_period = t * cfg.sample_rate_hz;
+    let phases = if (per_period.round() - per_period).abs() <= 1e-9 * per_period {
+        per_period.round().min(samples)
+    } else {
+        samples
+    };
+    let floquet = (4.0 * wmax * t / (2.0 * PI) + 16.0).clamp(32.0, 16384.0);
+    let width = n + n * (n + 1.0) / 2.0;
+    let table =
+        4.0 * TABLE_FIRST_PANELS as f64 * TABLE_NODES as f64 * wing_points as f64 * (width + 20.0);
+    let s = 4.0 * n;
+    let ncol = 2.0 * n + 5.0;
+    let per_step = 4.0 * (3.0 * width * TABLE_NODES as f64 + 10.0 * n * n + 60.0)
+        + (2.0 / 3.0) * s * s * s
+        + 2.0 * s * s * ncol
+        + 4.0 * n * n * ncol;
+    let all_steps = 1.5 * steps + phases + floquet;
+    let output = samples * n * 18.0 * n;
+    (table + all_steps * per_step + output) / AIR_PRODUCTS_PER_UNIT + samples * n * 0.2
 }
+
+/// Multiply-adds per step equivalent in [`air_run_cost`] (about 1 µs natively; measured on the
+/// FE wing in air, see docs/benchmarks.md).
+pub const AIR_PRODUCTS_PER_UNIT: f64 = 2500.0;
 
 /// Runs `cfg` in its medium (`cfg.aero`, density > 0) on the wing `geom`.
 pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult> {
@@ -109,7 +137,12 @@ pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult
         x0[k] = ic[0];
         x0[n + k] = ic[1];
     }
-    let grid = FloquetGrid::new(&ode);
+    // Output samples per flap period when they repeat on the same phases.
+    let per_period = ode.period() / dt;
+    let commensurate = (per_period.round() - per_period).abs() <= 1e-12 * per_period
+        && per_period.round() >= 1.0
+        && ns as f64 >= per_period.round();
+    let grid = FloquetGrid::new(&ode, commensurate.then_some(per_period.round() as usize));
     let mut pr = propagate_coupled(&ode, dt, ns, TOTAL, &x0, &grid.checkpoints())?;
     let fl = analyse_coupled(
         &ode,

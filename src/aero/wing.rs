@@ -117,6 +117,9 @@ pub struct AeroWing {
     pub phi: Vec<f64>,
     /// The chord pieces for the added mass.
     pub pieces: Vec<StripPiece>,
+    /// Per point the products the loads sum, point-major: φ_k (N values), then φ_a φ_b for
+    /// a ≤ b (C_a's upper triangle, row by row).
+    packed: Vec<f64>,
 }
 
 /// Gauss–Legendre nodes and weights on [−1, 1] (Newton on the Legendre recurrence).
@@ -295,6 +298,7 @@ impl AeroWing {
             weights: Vec::new(),
             phi: Vec::new(),
             pieces: Vec::new(),
+            packed: Vec::new(),
         };
         let mut vals = vec![0.0; nm];
         for s in 0..cfg.strips {
@@ -350,6 +354,16 @@ impl AeroWing {
                 "no aerodynamic quadrature point fell on the wing mesh".into(),
             ));
         }
+        let width = nm + nm * (nm + 1) / 2;
+        wing.packed = Vec::with_capacity(wing.points.len() * width);
+        for phi in wing.phi.chunks_exact(nm.max(1)).take(wing.points.len()) {
+            wing.packed.extend_from_slice(phi);
+            for a in 0..nm {
+                for b in a..nm {
+                    wing.packed.push(phi[a] * phi[b]);
+                }
+            }
+        }
         Ok(wing)
     }
 
@@ -382,17 +396,35 @@ impl AeroWing {
     /// uses `rho` (0 to leave it out).
     pub fn loads(&self, fs: &FrameState, k: f64, rho: f64, force: &mut [f64], damping: &mut [f64]) {
         let n = self.n_modes;
-        for (p, (xy, w)) in self.points.iter().zip(&self.weights).enumerate() {
+        let width = n + n * (n + 1) / 2;
+        // Σ_p w_p f_p φ_k and Σ_p w_p c_p φ_a φ_b, from the packed products.
+        let mut acc = vec![0.0; width];
+        for ((xy, w), row) in self
+            .points
+            .iter()
+            .zip(&self.weights)
+            .zip(self.packed.chunks_exact(width))
+        {
             let fl = fs.flow(xy[0], xy[1]);
             let f = normal_pressure(k, fl.vn, fl.speed) * w;
             let c = damping_density(k, fl.vn, fl.speed) * w;
-            let phi = &self.phi[p * n..(p + 1) * n];
-            for a in 0..n {
-                force[a] += phi[a] * f;
-                let ca = c * phi[a];
-                for b in a..n {
-                    damping[a * n + b] += ca * phi[b];
-                }
+            let (rf, rc) = row.split_at(n);
+            let (af, ac) = acc.split_at_mut(n);
+            for (a, v) in af.iter_mut().zip(rf) {
+                *a += v * f;
+            }
+            for (a, v) in ac.iter_mut().zip(rc) {
+                *a += v * c;
+            }
+        }
+        for a in 0..n {
+            force[a] += acc[a];
+        }
+        let mut slot = n;
+        for a in 0..n {
+            for b in a..n {
+                damping[a * n + b] += acc[slot];
+                slot += 1;
             }
         }
         for a in 0..n {
