@@ -296,7 +296,10 @@ export function linePlot(parent, spec) {
      */
     setAvailable(i, on) {
       const b = buttons[i];
-      if (b) b.hidden = !on;
+      if (b) {
+        b.hidden = !on;
+        b.style.display = on ? '' : 'none'; // the legend's own display rule outranks `hidden`
+      }
       const pressed = !b || b.getAttribute('aria-pressed') !== 'false';
       if (u.series[i + 1].show !== (on && pressed)) u.setSeries(i + 1, { show: on && pressed });
     },
