@@ -142,3 +142,38 @@ test('helium: the beat fades over about a beat instead of vanishing (custom dens
   assert.deepEqual(problems, []);
   await context.close();
 });
+
+test('the sensing panel runs in the chosen medium and says so; air changes the detectability map', async () => {
+  const best = {};
+  for (const [name, q] of [
+    ['air', 'screen=sensing&air_density=1.2'],
+    ['vacuum', 'screen=sensing&modes=fe'],
+  ]) {
+    const { page, problems, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+    await page.goto(`${env.url}?${q}`);
+    await page.waitForFunction(
+      () => {
+        const l = document.querySelector('wing-lab');
+        const b = l && l.shadowRoot && __wl.q('[data-sensemap]');
+        return b && b.dataset.state === 'ready' && l.views.sensing.result;
+      },
+      null,
+      { timeout: 120000 },
+    );
+    const r = await page.evaluate(() => {
+      const res = document.querySelector('wing-lab').views.sensing.result;
+      return { d: Array.from(res.d_best), status: __wl.q('section.wl-sensing').textContent };
+    });
+    assert.match(r.status, name === 'air' ? /Done, in a fluid of 1\.2 kg\/m³, in/ : /Done, in a vacuum, in/);
+    assert.ok(
+      r.d.every((v) => Number.isFinite(v) && v >= 0),
+      name,
+    );
+    best[name] = r.d;
+    assert.deepEqual(problems, [], name);
+    await context.close();
+  }
+  const max = (a) => Math.max(...a);
+  assert.equal(best.air.length, best.vacuum.length);
+  assert.ok(Math.abs(max(best.air) / max(best.vacuum) - 1) > 0.05, `${max(best.air)} vs ${max(best.vacuum)}`);
+});

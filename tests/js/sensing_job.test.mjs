@@ -88,7 +88,7 @@ test('one request SENSE_DELAY_MS after the last change, with the body rate, the 
   assert.equal(h.drawn(), 1);
   assert.equal(h.job.result.n_nodes, 4);
   assert.equal(h.job.cfg, JSON.stringify({ n: 1 }));
-  assert.match(h.ui.status.textContent, /^Done in .* \(analysis 0\.012 s in the worker/);
+  assert.match(h.ui.status.textContent, /^Done, in a vacuum, in .* \(analysis 0\.012 s in the worker/);
   assert.equal(h.box.dataset.workerMs, '12');
   assert.equal(h.ui.prog.hidden, true);
   assert.equal(h.job.stale(), false);

@@ -71,7 +71,9 @@ export function senseJob(ctx, ui, box, hooks) {
     running = { id: job.id, key };
     dirty = false;
     box.dataset.state = 'computing';
-    status.textContent = `Computing: two runs of the FE wing (with and without ω_b), then ${fe.n_nodes} nodes × 3 strain components…`;
+    const rho = cfg.aero ? Number(cfg.aero.air_density_kg_m3) : 0;
+    const medium = rho > 0 ? `in a fluid of ${fmt(rho, 3)} kg/m³` : 'in a vacuum';
+    status.textContent = `Computing: two runs of the FE wing ${medium} (with and without ω_b), then ${fe.n_nodes} nodes × 3 strain components…`;
     prog.hidden = false;
     cancel.hidden = false;
     job.promise
@@ -86,7 +88,7 @@ export function senseJob(ctx, ui, box, hooks) {
           const t2 = performance.now();
           box.dataset.ms = String(Math.round(t2 - t0));
           box.dataset.workerMs = String(Math.round(ms));
-          status.textContent = `Done in ${fmt((t2 - t0) / 1000, 2)} s (analysis ${fmt(ms / 1000, 2)} s in the worker, drawing ${fmt(t2 - t1, 2)} ms).${r.warnings.length ? ' Warnings: ' + r.warnings.join('; ') : ''}`;
+          status.textContent = `Done, ${medium}, in ${fmt((t2 - t0) / 1000, 2)} s (analysis ${fmt(ms / 1000, 2)} s in the worker, drawing ${fmt(t2 - t1, 2)} ms).${r.warnings.length ? ' Warnings: ' + r.warnings.join('; ') : ''}`;
         },
         (e) => {
           const why = errorText(e);
