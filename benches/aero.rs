@@ -4,6 +4,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
+use wingbeat::aero::ode::{AirOde, LoadTable};
 use wingbeat::aero::{AeroConfig, AeroWing, FrameState};
 use wingbeat::config::SimConfig;
 use wingbeat::simulate::simulate;
@@ -47,6 +48,21 @@ fn air(c: &mut Criterion) {
         b.iter(|| {
             let (mut f, mut d) = ([0.0; 4], [0.0; 16]);
             wing.loads(black_box(&fs), 2.04, 1.2, &mut f, &mut d);
+            black_box((f, d))
+        });
+    });
+    // The run reads the loads from a table over one period (src/aero/ode.rs): its build and
+    // one read.
+    let air = AeroConfig::with_density(1.2);
+    let ode = AirOde::new(&kin, &base.modes, &wing, &air).unwrap();
+    c.bench_function("load table over one period (build)", |b| {
+        b.iter(|| black_box(LoadTable::build(black_box(&ode))));
+    });
+    let table = LoadTable::build(&ode);
+    c.bench_function("one load table read (4 modes)", |b| {
+        b.iter(|| {
+            let (mut f, mut d) = ([0.0; 4], [0.0; 16]);
+            table.eval_at(black_box(0.0123), &mut f, &mut d);
             black_box((f, d))
         });
     });

@@ -307,6 +307,7 @@ impl CoupledOde for AirOde<'_> {
 
 /// Chebyshev points per panel of a [`LoadTable`] (degree 23 interpolants).
 pub const TABLE_NODES: usize = 24;
+const _: () = assert!(TABLE_NODES <= MAX_TABLE_NODES);
 /// Panels per period a [`LoadTable`] starts from (between the kinks).
 pub const TABLE_FIRST_PANELS: usize = 8;
 /// The tolerance of a [`LoadTable`] panel: its last two Chebyshev coefficients of every load
@@ -339,7 +340,8 @@ pub struct LoadTable {
     start: f64,
     /// Panel edges, ascending, from `start` to `start + period`.
     edges: Vec<f64>,
-    /// Per panel: the coefficients, coefficient-major (`coef[(p·m + j)·width + w]`).
+    /// Per panel: the coefficients, coefficient-major, rows padded to whole blocks of
+    /// [`TABLE_LANES`] (`coef[(p·m + j)·wp + w]`).
     coef: Vec<f64>,
     /// Per panel: whether it keeps the exact loads.
     exact: Vec<bool>,
@@ -473,9 +475,15 @@ impl LoadTable {
         table
     }
 
+    /// Appends a panel ending at `b` with the coefficients `c` (coefficient-major, `width`
+    /// per row; stored with rows padded to whole blocks of [`TABLE_LANES`]).
     fn push(&mut self, b: f64, c: &[f64], exact: bool) {
+        let wp = self.width.div_ceil(TABLE_LANES) * TABLE_LANES;
         self.edges.push(b);
-        self.coef.extend_from_slice(c);
+        for row in c.chunks_exact(self.width) {
+            self.coef.extend_from_slice(row);
+            self.coef.extend(std::iter::repeat_n(0.0, wp - self.width));
+        }
         self.exact.push(exact);
     }
 
@@ -492,9 +500,12 @@ impl LoadTable {
 
     #[inline]
     fn eval(&self, t: f64, force: &mut [f64], damping: &mut [f64]) -> bool {
-        let mut tau = t.rem_euclid(self.period);
-        if tau < self.start {
-            tau += self.period;
+        let mut tau = if t < self.start { t + self.period } else { t };
+        if !(tau >= self.start && tau < self.start + self.period) {
+            tau = t.rem_euclid(self.period);
+            if tau < self.start {
+                tau += self.period;
+            }
         }
         let p = self
             .edges
@@ -508,25 +519,32 @@ impl LoadTable {
         let x = ((2.0 * tau - a - b) / (b - a)).clamp(-1.0, 1.0);
         let m = self.m;
         let w = self.width;
+        let wp = w.div_ceil(TABLE_LANES) * TABLE_LANES;
         let n = self.n;
-        let c = &self.coef[p * m * w..(p + 1) * m * w];
-        // Clenshaw, eight loads at a time.
-        const LANES: usize = 8;
-        let mut blk = 0;
-        while blk < w {
-            let bw = LANES.min(w - blk);
-            let (mut b1, mut b2) = ([0.0; LANES], [0.0; LANES]);
-            for j in (1..m).rev() {
-                let cj = &c[j * w + blk..j * w + blk + bw];
-                for i in 0..bw {
-                    let v = cj[i] + 2.0 * x * b1[i] - b2[i];
-                    b2[i] = b1[i];
-                    b1[i] = v;
+        let c = &self.coef[p * m * wp..(p + 1) * m * wp];
+        // T_k(x) by the three-term recurrence, then every load's Σ c_k T_k(x) at once.
+        let mut tk = [0.0f64; MAX_TABLE_NODES];
+        tk[0] = 1.0;
+        if m > 1 {
+            tk[1] = x;
+        }
+        for k in 2..m {
+            tk[k] = 2.0 * x * tk[k - 1] - tk[k - 2];
+        }
+        for blk in 0..wp / TABLE_LANES {
+            let mut acc = [0.0f64; TABLE_LANES];
+            for (cj, t) in c.chunks_exact(wp).zip(&tk[..m]) {
+                let cj = &cj[blk * TABLE_LANES..(blk + 1) * TABLE_LANES];
+                for i in 0..TABLE_LANES {
+                    acc[i] += cj[i] * t;
                 }
             }
-            for i in 0..bw {
-                let v = c[blk + i] + x * b1[i] - b2[i];
-                let k = blk + i;
+            for i in 0..TABLE_LANES {
+                let k = blk * TABLE_LANES + i;
+                if k >= w {
+                    break;
+                }
+                let v = acc[i];
                 if k < n {
                     force[k] = v;
                 } else {
@@ -535,11 +553,15 @@ impl LoadTable {
                     damping[col * n + r] = v;
                 }
             }
-            blk += bw;
         }
         true
     }
 }
+
+/// Loads per block of the table's Chebyshev sums.
+const TABLE_LANES: usize = 8;
+/// Most Chebyshev points per panel the table's reader supports.
+const MAX_TABLE_NODES: usize = 32;
 
 /// Samples the loads at one panel's Chebyshev points.
 struct PanelSampler<'o, 'a> {

@@ -607,18 +607,21 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
         let pt = &map.part[slot * d * nf..(slot + 1) * d * nf];
         // q rows of Φ(τ) X + p(τ), every column at once.
         for r in 0..n {
-            for blk in (0..mp).step_by(LANES) {
-                let mut a = [0.0f64; LANES];
-                for c in 0..d {
-                    let pc = ph[r * d + c];
-                    let x: &[f64; LANES] = xs[c * mp + blk..c * mp + blk + LANES]
-                        .try_into()
-                        .expect("padded rows");
-                    for l in 0..LANES {
-                        a[l] += pc * x[l];
-                    }
+            let ph_row = &ph[r * d..(r + 1) * d];
+            for (blk, out) in acc.chunks_exact_mut(LANES).enumerate() {
+                let (mut a0, mut a1, mut a2, mut a3) = ([0.0f64; 2], [0.0; 2], [0.0; 2], [0.0; 2]);
+                for (pc, xrow) in ph_row.iter().zip(xs.chunks_exact(mp)) {
+                    let x = &xrow[blk * LANES..(blk + 1) * LANES];
+                    a0[0] += pc * x[0];
+                    a0[1] += pc * x[1];
+                    a1[0] += pc * x[2];
+                    a1[1] += pc * x[3];
+                    a2[0] += pc * x[4];
+                    a2[1] += pc * x[5];
+                    a3[0] += pc * x[6];
+                    a3[1] += pc * x[7];
                 }
-                acc[blk..blk + LANES].copy_from_slice(&a);
+                out.copy_from_slice(&[a0[0], a0[1], a1[0], a1[1], a2[0], a2[1], a3[0], a3[1]]);
             }
             for j in 0..nf {
                 q[j][r].push(acc[j] + pt[j * d + r]);
