@@ -67,9 +67,10 @@ pub fn still_air_frequencies(modes: &[Mode], mass: &[f64]) -> Vec<f64> {
 /// Estimated cost of an air run in step equivalents (as [`crate::simulate::run_cost`]; one
 /// unit is about 1 µs natively), counted in multiply-adds at [`AIR_PRODUCTS_PER_UNIT`] per
 /// unit:
-/// - the load table ([`super::ode::LoadTable`]): four times its first panels (allowing for
-///   the halving where the loads change fast), [`TABLE_NODES`] load evaluations each, every
-///   one N + N(N+1)/2 + 20 products per quadrature point;
+/// - the load table ([`super::ode::LoadTable`]): [`TABLE_NODES`] load evaluations for each
+///   of eight times its first panels (allowing for the halving where the loads change fast:
+///   the paper's kinematics take 1.1 times, a steady body roll rate of 3 rad/s 8 times),
+///   every one N + N(N+1)/2 + 20 products per quadrature point;
 /// - the Gauss steps: one period by the coupled rule ([`coupled_steps_per_span`]) plus one
 ///   step per output phase and per Floquet phase (checkpoints split steps), and half as many
 ///   again for the error estimate; per step four table reads, the 4N LU with its 2N + 5
@@ -107,9 +108,12 @@ pub fn air_run_cost(cfg: &SimConfig, wing_points: usize) -> f64 {
     (table + all_steps * per_step + output) / AIR_PRODUCTS_PER_UNIT + samples * n * 0.2
 }
 
-/// Multiply-adds per step equivalent in [`air_run_cost`] (about 1 µs natively; measured on the
-/// FE wing in air, see docs/benchmarks.md).
-pub const AIR_PRODUCTS_PER_UNIT: f64 = 2500.0;
+/// Multiply-adds per step equivalent in [`air_run_cost`] (about 1 µs natively). Measured on
+/// the FE wing in air (2026-12-02, load 1–3): 2 s at 10 kHz 25.5e3 units against 13–16 ms;
+/// 0.5 s 12.6e3 against 11 ms; 0.5 s with a steady body roll rate 12.6e3 against 18 ms (its
+/// load table halves its panels more); 0.3 s at the incommensurate 25.5 Hz (a checkpoint per
+/// sample) 18.7e3 against 19 ms.
+pub const AIR_PRODUCTS_PER_UNIT: f64 = 5000.0;
 
 /// Runs `cfg` in its medium (`cfg.aero`, density > 0) on the wing `geom`.
 pub fn simulate_in_air(cfg: &SimConfig, geom: &WingGeometry) -> Result<SimResult> {
