@@ -1,7 +1,9 @@
 //! The wing in air as an ODE: Eq. 13 of every mode with the aerodynamic loads, mass-normalised
 //! by M = I + M_a, as a [`CoupledOde`] ([`AirOde`]); the instants where the loads kink
-//! ([`rest_instants`]). Used by the air run ([`super::simulate`]), its Floquet analysis
-//! ([`super::floquet`]) and the nonlinear reference ([`super::nonlinear`]).
+//! ([`rest_instants`]); the loads tabulated over one period ([`LoadTable`], which the air run
+//! reads instead of summing over the quadrature at every stage). Used by the air run
+//! ([`super::simulate`]), its Floquet analysis ([`super::floquet`]) and the nonlinear
+//! reference ([`super::nonlinear`]).
 
 use super::{AeroConfig, AeroWing, FrameState};
 use crate::error::{Result, WingbeatError};
