@@ -317,7 +317,7 @@ pub const TABLE_FIRST_PANELS: usize = 8;
 pub const TABLE_TOLERANCE: f64 = 1e-14;
 /// Shortest panel of a [`LoadTable`], as a fraction of the period; a panel that would need to
 /// be shorter keeps the exact loads.
-const TABLE_MIN_PANEL: f64 = 1.0 / 8192.0;
+pub const TABLE_MIN_PANEL: f64 = 1.0 / 8192.0;
 /// Most panels of a [`LoadTable`]; past it the remaining panels keep the exact loads.
 pub const TABLE_MAX_PANELS: usize = 2048;
 
