@@ -179,6 +179,17 @@ impl FloquetGrid {
     }
 }
 
+/// The Φ values handed to [`analyse_coupled`]: one d × d matrix per checkpoint.
+fn check_phi(phi: &[f64], checkpoints: usize, d: usize) -> Result<()> {
+    if phi.len() != checkpoints * d * d {
+        return Err(WingbeatError::NonFinite {
+            what: "coupled Floquet analysis".into(),
+            detail: format!("{} values of Φ for {checkpoints} phases", phi.len()),
+        });
+    }
+    Ok(())
+}
+
 /// Analyses the coupled system `ode` whose full-period monodromy is `mono` (2N × 2N
 /// row-major), from Φ at the `grid`'s [`FloquetGrid::checkpoints`] (`phi`, concatenated, as
 /// [`crate::solve::coupled::propagate_coupled`] returns them for those extra phases).
@@ -206,12 +217,7 @@ pub fn analyse_coupled(
     let fp = 1.0 / tp;
     let phases = &grid.phases;
     let nh = phases.len();
-    if phi.len() != (nh + 1) * d * d {
-        return Err(WingbeatError::NonFinite {
-            what: "coupled Floquet analysis".into(),
-            detail: format!("{} values of Φ for {} phases", phi.len(), nh + 1),
-        });
-    }
+    check_phi(phi, nh + 1, d)?;
     let mp = DMatrix::from_row_slice(d, d, &phi[nh * d * d..]);
     let lp = mp.complex_eigenvalues();
     let mpc = mp.map(|x| C64::new(x, 0.0));

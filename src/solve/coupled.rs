@@ -521,6 +521,49 @@ fn richardson_error(map: &CoupledMap, coarse: &CoupledMap, w: f64) -> f64 {
     map_difference(map, coarse, w) / 255.0 + map.steps as f64 * f64::EPSILON
 }
 
+/// Columns per block of the output's products (rows of the period-start states are padded to
+/// a whole number of blocks).
+const LANES: usize = 8;
+
+/// The next period's start states X' = M X + [p(T) | 0] (d rows, padded to `mp` columns; the
+/// first n_forces columns are the forcings' responses from rest, the next the free one).
+fn next_period(map: &CoupledMap, xs: &[f64], next: &mut [f64], mp: usize) {
+    let (d, nf) = (2 * map.n, map.nf);
+    for i in 0..d {
+        let row = &mut next[i * mp..(i + 1) * mp];
+        row.fill(0.0);
+        for j in 0..nf {
+            row[j] = map.part_end[j * d + i];
+        }
+        for c in 0..d {
+            let mc = map.monodromy[i * d + c];
+            for (o, x) in row.iter_mut().zip(&xs[c * mp..(c + 1) * mp]) {
+                *o += mc * x;
+            }
+        }
+    }
+}
+
+/// `acc` ← one row of Φ(τ) times the period-start states `xs` (rows of `mp` columns), in
+/// blocks of [`LANES`] columns on fixed accumulators.
+fn row_times_states(ph_row: &[f64], xs: &[f64], mp: usize, acc: &mut [f64]) {
+    for (blk, out) in acc.chunks_exact_mut(LANES).enumerate() {
+        let (mut a0, mut a1, mut a2, mut a3) = ([0.0f64; 2], [0.0; 2], [0.0; 2], [0.0; 2]);
+        for (pc, xrow) in ph_row.iter().zip(xs.chunks_exact(mp)) {
+            let x = &xrow[blk * LANES..(blk + 1) * LANES];
+            a0[0] += pc * x[0];
+            a0[1] += pc * x[1];
+            a1[0] += pc * x[2];
+            a1[1] += pc * x[3];
+            a2[0] += pc * x[4];
+            a2[1] += pc * x[5];
+            a3[0] += pc * x[6];
+            a3[1] += pc * x[7];
+        }
+        out.copy_from_slice(&[a0[0], a0[1], a1[0], a1[1], a2[0], a2[1], a3[0], a3[1]]);
+    }
+}
+
 /// Propagates `ode` to t_i = i·dt, i = 0..n: every forcing column's response from rest, and
 /// for the column `total` also with the initial state `x0` = (q(0), q̇(0)) (2N values). The
 /// same pass records Φ at the `extra` phases (ascending, in (0, period]; the Floquet analysis'
@@ -562,7 +605,6 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
     // Period-start states X = [x_0 … x_{nf−1} | x_free]: d rows of m columns (each forcing's
     // response from rest and the free response), row-major with rows padded to `mp`, a
     // multiple of LANES, so the per-sample products run on fixed-size accumulators.
-    const LANES: usize = 8;
     let m = nf + 1;
     let mp = m.div_ceil(LANES) * LANES;
     let mut xs = vec![0.0; d * mp];
@@ -578,20 +620,7 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
     let mut periods = 0u64;
     for &(k, slot) in &sched.slots {
         while cur < k {
-            // X ← M X + [p(T) | 0].
-            for i in 0..d {
-                let row = &mut next[i * mp..(i + 1) * mp];
-                row.fill(0.0);
-                for j in 0..nf {
-                    row[j] = map.part_end[j * d + i];
-                }
-                for c in 0..d {
-                    let mc = map.monodromy[i * d + c];
-                    for (o, x) in row.iter_mut().zip(&xs[c * mp..(c + 1) * mp]) {
-                        *o += mc * x;
-                    }
-                }
-            }
+            next_period(&map, &xs, &mut next, mp);
             std::mem::swap(&mut xs, &mut next);
             cur += 1;
         }
@@ -607,22 +636,7 @@ pub fn propagate_coupled<O: CoupledOde + ?Sized>(
         let pt = &map.part[slot * d * nf..(slot + 1) * d * nf];
         // q rows of Φ(τ) X + p(τ), every column at once.
         for r in 0..n {
-            let ph_row = &ph[r * d..(r + 1) * d];
-            for (blk, out) in acc.chunks_exact_mut(LANES).enumerate() {
-                let (mut a0, mut a1, mut a2, mut a3) = ([0.0f64; 2], [0.0; 2], [0.0; 2], [0.0; 2]);
-                for (pc, xrow) in ph_row.iter().zip(xs.chunks_exact(mp)) {
-                    let x = &xrow[blk * LANES..(blk + 1) * LANES];
-                    a0[0] += pc * x[0];
-                    a0[1] += pc * x[1];
-                    a1[0] += pc * x[2];
-                    a1[1] += pc * x[3];
-                    a2[0] += pc * x[4];
-                    a2[1] += pc * x[5];
-                    a3[0] += pc * x[6];
-                    a3[1] += pc * x[7];
-                }
-                out.copy_from_slice(&[a0[0], a0[1], a1[0], a1[1], a2[0], a2[1], a3[0], a3[1]]);
-            }
+            row_times_states(&ph[r * d..(r + 1) * d], &xs, mp, &mut acc);
             for j in 0..nf {
                 q[j][r].push(acc[j] + pt[j * d + r]);
             }
