@@ -320,6 +320,9 @@ pub const TABLE_TOLERANCE: f64 = 1e-14;
 pub const TABLE_MIN_PANEL: f64 = 1.0 / 8192.0;
 /// Most panels of a [`LoadTable`]; past it the remaining panels keep the exact loads.
 pub const TABLE_MAX_PANELS: usize = 2048;
+/// Most coefficients a [`LoadTable`] stores (32 MB); with many modes this, not
+/// [`TABLE_MAX_PANELS`], bounds the panels that are interpolated.
+pub const TABLE_MAX_VALUES: usize = 1 << 22;
 
 /// The aerodynamic loads of one period (F_A, and C_a's upper triangle) as piecewise Chebyshev
 /// interpolants in time: [`TABLE_NODES`] points per panel, panels between the kinks
@@ -327,7 +330,8 @@ pub const TABLE_MAX_PANELS: usize = 2048;
 /// [`TABLE_TOLERANCE`] of each load group's size. One load evaluation over the quadrature
 /// costs as much as a whole panel's interpolant evaluated about 40 times, and the propagator
 /// asks for the loads at several thousand instants per period, so it reads them here.
-/// A panel that does not converge before [`TABLE_MIN_PANEL`] (or past [`TABLE_MAX_PANELS`])
+/// A panel that does not converge before [`TABLE_MIN_PANEL`] (or past [`TABLE_MAX_PANELS`] or
+/// [`TABLE_MAX_VALUES`])
 /// is marked exact: the loads are computed directly there.
 #[derive(Debug, Clone)]
 pub struct LoadTable {
@@ -345,6 +349,8 @@ pub struct LoadTable {
     /// Per panel: the coefficients, coefficient-major, rows padded to whole blocks of
     /// [`TABLE_LANES`] (`coef[(p·m + j)·wp + w]`).
     coef: Vec<f64>,
+    /// Per panel: where its coefficients start in `coef`.
+    offset: Vec<usize>,
     /// Per panel: whether it keeps the exact loads.
     exact: Vec<bool>,
     /// Largest tail over the interpolated panels, relative to its load group's size.
@@ -382,6 +388,7 @@ impl LoadTable {
         let width = Self::width_for(n);
         let period = ode.period();
         let m = TABLE_NODES;
+        let wp = width.div_ceil(TABLE_LANES) * TABLE_LANES;
         let nodes: Vec<f64> = (0..m)
             .map(|j| (PI * (j as f64 + 0.5) / m as f64).cos())
             .collect();
@@ -449,6 +456,7 @@ impl LoadTable {
             start,
             edges: vec![start],
             coef: Vec::new(),
+            offset: Vec::new(),
             exact: Vec::new(),
             tail: 0.0,
             evaluations: 0,
@@ -463,6 +471,7 @@ impl LoadTable {
                     table.tail = table.tail.max(tail * TABLE_TOLERANCE);
                     table.push(b, &c, false);
                 } else if table.exact.len() + stack.len() >= TABLE_MAX_PANELS
+                    || table.coef.len() + (stack.len() + 2) * m * wp > TABLE_MAX_VALUES
                     || b - a < 2.0 * TABLE_MIN_PANEL * period
                 {
                     table.push(b, &c, true);
@@ -479,12 +488,16 @@ impl LoadTable {
 
     /// Appends a panel ending at `b` with the coefficients `c` (coefficient-major, `width`
     /// per row; stored with rows padded to whole blocks of [`TABLE_LANES`]).
+    /// An exact panel stores no coefficients.
     fn push(&mut self, b: f64, c: &[f64], exact: bool) {
         let wp = self.width.div_ceil(TABLE_LANES) * TABLE_LANES;
         self.edges.push(b);
-        for row in c.chunks_exact(self.width) {
-            self.coef.extend_from_slice(row);
-            self.coef.extend(std::iter::repeat_n(0.0, wp - self.width));
+        self.offset.push(self.coef.len());
+        if !exact {
+            for row in c.chunks_exact(self.width) {
+                self.coef.extend_from_slice(row);
+                self.coef.extend(std::iter::repeat_n(0.0, wp - self.width));
+            }
         }
         self.exact.push(exact);
     }
@@ -523,7 +536,7 @@ impl LoadTable {
         let w = self.width;
         let wp = w.div_ceil(TABLE_LANES) * TABLE_LANES;
         let n = self.n;
-        let c = &self.coef[p * m * wp..(p + 1) * m * wp];
+        let c = &self.coef[self.offset[p]..self.offset[p] + m * wp];
         // T_k(x) by the three-term recurrence, then every load's Σ c_k T_k(x) at once.
         let mut tk = [0.0f64; MAX_TABLE_NODES];
         tk[0] = 1.0;
