@@ -6,21 +6,9 @@
 // modes is refused, naming `air_density`.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { defaults, FE_LAB_INPUT } from '../../www/state.js';
-import { createEngine } from '../../www/engine.js';
+import { loadReal, realEngine } from './real_wasm.mjs';
 import { withWing } from '../../www/engine/cache.js';
-
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const PKG = path.join(ROOT, 'www', 'pkg');
-
-async function loadReal() {
-  const m = await import(new URL(`file://${path.join(PKG, 'wingbeat.js')}`).href);
-  m.initSync({ module: fs.readFileSync(path.join(PKG, 'wingbeat_bg.wasm')) });
-  return m;
-}
 
 test('withWing attaches the wing only in a fluid and only to that wing’s modes', () => {
   const fe = {
@@ -45,13 +33,7 @@ test('withWing attaches the wing only in a fluid and only to that wing’s modes
 
 test('the live analysis in air on the real wasm: aerodynamic force, share, spectrum and decay; vacuum unchanged', async () => {
   const wb = await loadReal();
-  const e = createEngine({
-    load: async () => wb,
-    createWorker: () => {
-      throw new Error('no worker in this test');
-    },
-  });
-  await e.load();
+  const e = await realEngine(wb);
   // The lab's default FE wing, solved here (the engine's worker path is tested elsewhere).
   const fe = wb.feModes({ ...FE_LAB_INPUT }, null, undefined);
   e.useFe(fe, 'test');

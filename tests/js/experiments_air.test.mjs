@@ -3,17 +3,11 @@
 // lab's FE wing, the live run in air and the study's run in a vacuum, as the lab computes them.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { psdNear, superharmonicRatio, AIR_EXPERIMENTS } from '../../www/experiments/air.js';
 import { experimentState, predict } from '../../www/experiments.js';
 import { EXPERIMENT_SCREEN } from '../../www/screens.js';
 import { FE_LAB_INPUT } from '../../www/state.js';
-import { createEngine } from '../../www/engine.js';
-
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const PKG = path.join(ROOT, 'www', 'pkg');
+import { loadReal, realEngine } from './real_wasm.mjs';
 
 test('the 3f_d/1f_d ratio reads the harmonics’ peaks: amplitudes 2 and 0.5 give 0.25', () => {
   // A one-sided PSD with a peak of A²/2·(1/df) at f_d and 3f_d, noise elsewhere.
@@ -39,15 +33,8 @@ test('the air experiments open the beat screen with the FE wing in air', () => {
 });
 
 test('both air predictions hold on the real wasm: the beat is gone in air, the 3f_d superharmonic is suppressed', async () => {
-  const wb = await import(new URL(`file://${path.join(PKG, 'wingbeat.js')}`).href);
-  wb.initSync({ module: fs.readFileSync(path.join(PKG, 'wingbeat_bg.wasm')) });
-  const e = createEngine({
-    load: async () => wb,
-    createWorker: () => {
-      throw new Error('no worker in this test');
-    },
-  });
-  await e.load();
+  const wb = await loadReal();
+  const e = await realEngine(wb);
   e.useFe(wb.feModes({ ...FE_LAB_INPUT }, null, undefined), 'test');
   for (const id of ['air-beat', 'air-superharmonic']) {
     const s = experimentState(id);

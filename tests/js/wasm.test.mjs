@@ -8,26 +8,9 @@
 //     give exactly the paper case (wasm `defaultConfig()`).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { NUMERIC, MEDIA, SAMPLE_RATE_HZ, defaults } from '../../www/state.js';
 import { createEngine } from '../../www/engine.js';
-
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const PKG = path.join(ROOT, 'www', 'pkg');
-
-async function loadReal() {
-  const glue = path.join(PKG, 'wingbeat.js');
-  const bin = path.join(PKG, 'wingbeat_bg.wasm');
-  assert.ok(
-    fs.existsSync(glue) && fs.existsSync(bin),
-    'www/pkg is missing: run `bash scripts/build-web.sh www` first (npm test does)',
-  );
-  const m = await import(new URL(`file://${glue}`).href);
-  m.initSync({ module: fs.readFileSync(bin) });
-  return m;
-}
+import { loadReal } from './real_wasm.mjs';
 
 const wbPromise = loadReal();
 

@@ -3,20 +3,9 @@
 // `wingInput` equal to the plain-JS mapping. Needs www/pkg (scripts/build-web.sh www).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { WING, defaults } from '../../www/state.js';
 import { createEngine, plainWingInput } from '../../www/engine.js';
-
-const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const PKG = path.join(ROOT, 'www', 'pkg');
-
-async function loadReal() {
-  const m = await import(new URL(`file://${path.join(PKG, 'wingbeat.js')}`).href);
-  m.initSync({ module: fs.readFileSync(path.join(PKG, 'wingbeat_bg.wasm')) });
-  return m;
-}
+import { loadReal } from './real_wasm.mjs';
 
 test('the wing table has the core’s keys, ranges and steps (the lab’s own defaults aside)', async () => {
   const wb = await loadReal();

@@ -787,23 +787,23 @@ pub fn air_run_matches_core() {
     let nodes: Vec<f64> = geom.nodes.iter().flat_map(|p| [p[0], p[1], 0.0]).collect();
     let tris: Vec<u32> = geom.triangles.iter().flatten().map(|&i| i as u32).collect();
     let shapes: Vec<f64> = geom.shapes.iter().flatten().copied().collect();
-    let wing = js_sys::Object::new();
     let put = |o: &js_sys::Object, k: &str, v: &JsValue| {
         Reflect::set(o, &JsValue::from_str(k), v).unwrap();
     };
-    put(&wing, "nodes", &fa(&nodes));
-    put(
-        &wing,
-        "triangles",
-        &js_sys::Uint32Array::from(&tris[..]).into(),
-    );
-    put(&wing, "shapes", &fa(&shapes));
+    let wing_of = |nodes: &[f64], tris: &[u32], shapes: &[f64]| -> JsValue {
+        let o = js_sys::Object::new();
+        put(&o, "nodes", &fa(nodes));
+        put(&o, "triangles", &js_sys::Uint32Array::from(tris).into());
+        put(&o, "shapes", &fa(shapes));
+        o.into()
+    };
+    let wing = wing_of(&nodes, &tris, &shapes);
     let with_wing = |c: &SimConfig, w: &JsValue| {
         let o = to_js(c);
         Reflect::set(&o, &JsValue::from_str("wing"), w).unwrap();
         o
     };
-    let js = wasm::simulate(with_wing(&cfg, &wing.clone().into())).unwrap();
+    let js = wasm::simulate(with_wing(&cfg, &wing)).unwrap();
     let core = simulate(&cfg).unwrap();
     for (k, m) in core.modes.iter().enumerate() {
         let p = |s: &str| format!("modes.{k}.{s}");
@@ -843,12 +843,7 @@ pub fn air_run_matches_core() {
         segment_len: 256,
         ..WelchOptions::default()
     };
-    let a = wasm::analyze(
-        with_wing(&cfg, &wing.clone().into()),
-        to_js(&opts),
-        JsValue::from(0.0),
-    )
-    .unwrap();
+    let a = wasm::analyze(with_wing(&cfg, &wing), to_js(&opts), JsValue::from(0.0)).unwrap();
     let f = force_series(&cfg).unwrap();
     assert!(f[0].aerodynamic.iter().any(|v| *v != 0.0));
     close_all(
@@ -869,7 +864,7 @@ pub fn air_run_matches_core() {
         aero: Default::default(),
         ..cfg.clone()
     };
-    let v1 = wasm::simulate(with_wing(&vac, &wing.clone().into())).unwrap();
+    let v1 = wasm::simulate(with_wing(&vac, &wing)).unwrap();
     let v0 = wasm::simulate(to_js(&vac)).unwrap();
     assert_eq!(f64s(&v1, "modes.0.q.total"), f64s(&v0, "modes.0.q.total"));
     assert!(get(&v1, "modes.0.q.aerodynamic").is_undefined());
@@ -879,48 +874,17 @@ pub fn air_run_matches_core() {
     assert!(m.contains("aero.air_density_kg_m3"), "{m}");
     let m = message(wasm::simulate(with_wing(&cfg, &JsValue::from(5.0))));
     assert!(m.contains("config.wing"), "{m}");
-    let short = js_sys::Object::new();
-    put(&short, "nodes", &fa(&nodes));
-    put(
-        &short,
-        "triangles",
-        &js_sys::Uint32Array::from(&tris[..]).into(),
-    );
-    put(&short, "shapes", &fa(&shapes[..shapes.len() - n]));
-    let m = message(wasm::simulate(with_wing(&cfg, &short.into())));
+    let refused = |w: JsValue| message(wasm::simulate(with_wing(&cfg, &w)));
+    let m = refused(wing_of(&nodes, &tris, &shapes[..shapes.len() - n]));
     assert!(m.contains("config.wing.shapes"), "{m}");
-    let odd = js_sys::Object::new();
-    put(&odd, "nodes", &fa(&nodes[..nodes.len() - 1]));
-    put(
-        &odd,
-        "triangles",
-        &js_sys::Uint32Array::from(&tris[..]).into(),
-    );
-    put(&odd, "shapes", &fa(&shapes));
-    let m = message(wasm::simulate(with_wing(&cfg, &odd.into())));
+    let m = refused(wing_of(&nodes[..nodes.len() - 1], &tris, &shapes));
     assert!(m.contains("config.wing.nodes"), "{m}");
-    let bad_index = js_sys::Object::new();
     let mut t2 = tris.clone();
     t2[0] = n as u32 + 7;
-    put(&bad_index, "nodes", &fa(&nodes));
-    put(
-        &bad_index,
-        "triangles",
-        &js_sys::Uint32Array::from(&t2[..]).into(),
-    );
-    put(&bad_index, "shapes", &fa(&shapes));
-    let m = message(wasm::simulate(with_wing(&cfg, &bad_index.into())));
+    let m = refused(wing_of(&nodes, &t2, &shapes));
     assert!(m.contains("wing.triangles[0]"), "{m}");
     let mut nan_nodes = nodes.clone();
     nan_nodes[4] = f64::NAN;
-    let bad_node = js_sys::Object::new();
-    put(&bad_node, "nodes", &fa(&nan_nodes));
-    put(
-        &bad_node,
-        "triangles",
-        &js_sys::Uint32Array::from(&tris[..]).into(),
-    );
-    put(&bad_node, "shapes", &fa(&shapes));
-    let m = message(wasm::simulate(with_wing(&cfg, &bad_node.into())));
+    let m = refused(wing_of(&nan_nodes, &tris, &shapes));
     assert!(m.contains("wing.nodes[1]"), "{m}");
 }
