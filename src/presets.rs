@@ -83,3 +83,64 @@ pub fn fe_wing_modes_and_wing() -> crate::Result<(Vec<Mode>, crate::aero::WingGe
 
 /// Names of the built-in presets.
 pub const PRESETS: [&str; 2] = ["paper", "fe-wing"];
+
+/// Span of the published sensing plate, mm (Eberle et al. 2015; Mohren et al. 2018).
+pub const MOHREN2018_SPAN_MM: f64 = 50.0;
+/// Chord of the published sensing plate, mm; the clamped root edge has this length.
+pub const MOHREN2018_CHORD_MM: f64 = 25.0;
+/// Mass-proportional damping of the published plate, C = 63 s⁻¹ · M, in s⁻¹.
+pub const MOHREN2018_DAMPING_PER_S: f64 = 63.0;
+
+/// The published plate's material: acrylic, h = 0.127 mm, E = 3 GPa, ρ = 1180 kg/m³, ν = 0.35.
+pub fn mohren2018_material() -> crate::fem::ShellMaterial {
+    crate::fem::ShellMaterial {
+        thickness_m: 0.127e-3,
+        e_pa: 3.0e9,
+        rho_kg_m3: 1180.0,
+        nu: 0.35,
+    }
+}
+
+/// The sensing plate of Mohren et al. 2018 (PNAS 115:10564) and Weber et al. 2021 (PLOS
+/// Comput. Biol. 17:e1009195), taken from Eberle et al. 2015 (J. R. Soc. Interface
+/// 12:20141088): a flat rectangle, [`MOHREN2018_SPAN_MM`] span × [`MOHREN2018_CHORD_MM`]
+/// chord, its 25 mm root edge (x = 0) clamped, acrylic ([`mohren2018_material`]). The
+/// published model is a single Rayleigh–Ritz plate element; this is the same plate for the
+/// shell FE. In wingbeat's frame x runs spanwise from the root and the chord lies toward −y.
+///
+/// `mesh_size_mm`: target element edge (`None` = automatic); `n_modes`: 1 ..= 64. Both are
+/// checked when the input is solved ([`crate::fem::compute_modes`]).
+pub fn mohren2018_plate_input(mesh_size_mm: Option<f64>, n_modes: usize) -> crate::fem::FemInput {
+    crate::fem::FemInput {
+        planform_mm: crate::fem::rectangle_planform(MOHREN2018_SPAN_MM, MOHREN2018_CHORD_MM),
+        planform_note: "Mohren et al. 2018 plate (Eberle et al. 2015): 50 × 25 mm, root clamped"
+            .into(),
+        camber: 0.0,
+        clamp: crate::fem::Clamp::Root,
+        material: mohren2018_material(),
+        n_modes,
+        mesh_size_mm,
+        max_nodes: None,
+    }
+}
+
+/// Modal damping ratios of the published mass-proportional damping C = 63 s⁻¹ · M:
+/// ζ_k = 63 / (2 ω_k) with ω_k = 2π f_k. Every frequency must be finite and positive
+/// (error names `freq_hz[k]`).
+pub fn mohren2018_damping_ratios(freq_hz: &[f64]) -> crate::Result<Vec<f64>> {
+    freq_hz
+        .iter()
+        .enumerate()
+        .map(|(k, &f)| {
+            if f.is_finite() && f > 0.0 {
+                Ok(MOHREN2018_DAMPING_PER_S / (2.0 * 2.0 * std::f64::consts::PI * f))
+            } else {
+                Err(crate::error::WingbeatError::invalid(
+                    format!("freq_hz[{k}]"),
+                    f,
+                    "finite and > 0 Hz",
+                ))
+            }
+        })
+        .collect()
+}
