@@ -65,3 +65,50 @@ fn modes_on_a_slender_outline_with_the_automatic_size() {
     assert_eq!(r["modes"][0]["freq_hz"].as_f64().unwrap(), f1);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `wingbeat modes --preset mohren2018`: the published sensing plate's modes, the same as the
+/// library's preset, damped at ζ_k = 63/(2ω_k); its material flags still override, the
+/// outline flags conflict, and an unknown preset is refused by name.
+#[test]
+fn modes_preset_mohren2018_gives_the_published_plate_with_its_damping() {
+    let (code, out, err) = run(&["modes", "--preset", "mohren2018", "--n-modes", "3"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let lib = wingbeat::fem::compute_modes(&wingbeat::presets::mohren2018_plate_input(None, 3))
+        .expect("plate solves");
+    assert_eq!(v["mesh_size_mm"].as_f64().unwrap(), lib.mesh_size_mm);
+    for k in 0..3 {
+        let f = v["freq_hz"][k].as_f64().unwrap();
+        assert!((f - lib.freq_hz[k]).abs() < 1e-9 * f, "mode {k}: {f}");
+        let zeta = v["modes"][k]["zeta"].as_f64().unwrap();
+        let want = wingbeat::presets::MOHREN2018_DAMPING_PER_S / (4.0 * std::f64::consts::PI * f);
+        assert!((zeta - want).abs() < 1e-12, "mode {k}: ζ = {zeta}");
+    }
+    // the first bending mode of a 50 mm acrylic cantilever lies near 13.5 Hz, below the
+    // Euler–Bernoulli beam's 14.0 Hz (tests/fem_published_plate.rs has the bounds)
+    let f1 = lib.freq_hz[0];
+    assert!(f1 > 13.0 && f1 < 14.0, "f1 = {f1}");
+    // a softer material (Weber et al. sweep E) scales every frequency by √(E'/E)
+    let (code, out, err) = run(&[
+        "modes",
+        "--preset",
+        "mohren2018",
+        "--n-modes",
+        "1",
+        "--e-pa",
+        "1.5e9",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let soft = v["freq_hz"][0].as_f64().unwrap();
+    assert!((soft / f1 - 0.5f64.sqrt()).abs() < 1e-6, "{soft} vs {f1}");
+    let (code, _, err) = run(&["modes", "--preset", "mohren2018", "--camber", "0.1"]);
+    assert_ne!(code, 0);
+    assert!(err.contains("--camber"), "{err}");
+    let (code, _, err) = run(&["modes", "--preset", "mohren", "--n-modes", "1"]);
+    assert_ne!(code, 0);
+    assert!(
+        err.contains("--preset") && err.contains("mohren2018"),
+        "{err}"
+    );
+}

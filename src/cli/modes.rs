@@ -10,6 +10,13 @@ use wingbeat::{Result, WingbeatError};
 
 #[derive(Args, Debug, Clone)]
 pub struct ModesArgs {
+    /// Built-in plate instead of the wing: `mohren2018`, the sensing plate of Mohren et al.
+    /// 2018 / Weber et al. 2021 (Eberle et al. 2015): flat 50 × 25 mm, the 25 mm root edge
+    /// clamped, acrylic E = 3 GPa, ν = 0.35, 0.127 mm, 1180 kg/m³, each mode damped at
+    /// ζ_k = 63/(2ω_k) (their C = 63 s⁻¹·M). Not with --planform, --camber, --clamp or
+    /// --material; --thickness-um, --e-pa, --rho and --nu still override its material.
+    #[arg(long, conflicts_with_all = ["planform", "camber", "clamp", "material"])]
+    pub preset: Option<String>,
     /// Planform outline: CSV (`x_mm,y_mm` or `i,x_mm,y_mm`, `#` comments) or JSON `[[x,y],…]`, mm.
     /// Default: the built-in SYNTHETIC Manduca-like outline (not digitised from a specimen).
     #[arg(long, value_name = "FILE")]
@@ -75,7 +82,11 @@ pub fn fem_input(
     a: &ModesArgs,
     read: impl Fn(&std::path::Path) -> Result<String>,
 ) -> Result<FemInput> {
-    let mut input = FemInput::default();
+    let mut input = match a.preset.as_deref() {
+        None => FemInput::default(),
+        Some(MOHREN2018) => wingbeat::presets::mohren2018_plate_input(None, a.n_modes),
+        Some(other) => return Err(WingbeatError::invalid("--preset", other, MOHREN2018)),
+    };
     if let Some(p) = &a.planform {
         let text = read(p)?;
         let is_json = p
@@ -89,20 +100,22 @@ pub fn fem_input(
         };
         input.planform_note = format!("user outline from {}", p.display());
     }
-    input.camber = a.camber;
-    input.clamp = Clamp::parse(&a.clamp)
-        .map_err(|_| WingbeatError::invalid("--clamp", &a.clamp, "root | strip:X_MM"))?;
-    input.material = match a.material.as_str() {
-        "paper-frequencies" => ShellMaterial::paper_frequencies(),
-        "paper-as-printed" => ShellMaterial::paper_as_printed(),
-        other => {
-            return Err(WingbeatError::invalid(
-                "--material",
-                other,
-                "paper-frequencies | paper-as-printed",
-            ))
-        }
-    };
+    if a.preset.is_none() {
+        input.camber = a.camber;
+        input.clamp = Clamp::parse(&a.clamp)
+            .map_err(|_| WingbeatError::invalid("--clamp", &a.clamp, "root | strip:X_MM"))?;
+        input.material = match a.material.as_str() {
+            "paper-frequencies" => ShellMaterial::paper_frequencies(),
+            "paper-as-printed" => ShellMaterial::paper_as_printed(),
+            other => {
+                return Err(WingbeatError::invalid(
+                    "--material",
+                    other,
+                    "paper-frequencies | paper-as-printed",
+                ))
+            }
+        };
+    }
     if let Some(t) = a.thickness_um {
         input.material.thickness_m = t * 1e-6;
     }
@@ -129,9 +142,20 @@ pub fn points(a: &ModesArgs, input: &FemInput) -> Result<Vec<(String, f64, f64)>
     a.points.iter().map(|s| parse_point(s)).collect()
 }
 
+/// The `--preset` value of the published sensing plate.
+const MOHREN2018: &str = "mohren2018";
+
 /// Model modes with strains at the points; a point outside the wing is an error naming it.
-pub fn model_modes(fe: &FemModes, pts: &[(String, f64, f64)]) -> Result<Vec<Mode>> {
-    fe.model_modes(0.0, pts, "--point")
+/// Undamped, except with `--preset mohren2018`: ζ_k = 63/(2ω_k), the published damping.
+pub fn model_modes(a: &ModesArgs, fe: &FemModes, pts: &[(String, f64, f64)]) -> Result<Vec<Mode>> {
+    let mut modes = fe.model_modes(0.0, pts, "--point")?;
+    if a.preset.as_deref() == Some(MOHREN2018) {
+        let zetas = wingbeat::presets::mohren2018_damping_ratios(&fe.freq_hz)?;
+        for (m, z) in modes.iter_mut().zip(zetas) {
+            m.zeta = z;
+        }
+    }
+    Ok(modes)
 }
 
 /// Runs `wingbeat modes`.
@@ -160,6 +184,6 @@ pub fn run(a: &ModesArgs, read: impl Fn(&std::path::Path) -> Result<String>) -> 
         fe.n_dofs,
         t0.elapsed().as_secs_f64()
     );
-    let modes = model_modes(&fe, &pts)?;
+    let modes = model_modes(a, &fe, &pts)?;
     modes_document(&fe, &modes)
 }
