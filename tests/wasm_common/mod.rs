@@ -883,7 +883,7 @@ pub fn air_run_matches_core() {
     t2[0] = n as u32 + 7;
     let m = refused(wing_of(&nodes, &t2, &shapes));
     assert!(m.contains("wing.triangles[0]"), "{m}");
-    let mut nan_nodes = nodes.clone();
+    let mut nan_nodes = nodes;
     nan_nodes[4] = f64::NAN;
     let m = refused(wing_of(&nan_nodes, &tris, &shapes));
     assert!(m.contains("wing.nodes[1]"), "{m}");
