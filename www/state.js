@@ -200,7 +200,7 @@ const NUMBER_RE = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,3})?$/;
  * The lab's URL parameters (one store property each).
  * @typedef {{
  *   alpha0: number, beta0: number, gamma0: number, flap_hz: number, zeta: number,
- *   alpha_phase: number, beta_phase: number, gamma_phase: number, duration: number,
+ *   alpha_phase: number, beta_phase: number, gamma_phase: number, duration: number, air_density: number,
  *   modes: 'paper' | 'fe', mode: string, detrend: 'none' | 'mean' | 'linear', panels: string[], exp: string, embed?: boolean,
  *   camber: number, clamp: number, e_pa: number, rho: number, nu: number, thickness_um: number, mesh_mm: number, n_modes: number,
  *   outline: string, planform: string, body_rate: number, body_axis: 'x' | 'y' | 'z',
