@@ -76,7 +76,7 @@ export const EXPERIMENT_SCREEN = Object.freeze({
   instability: 'beat',
   sensing: 'sensing',
   'air-beat': 'beat',
-  'air-superharmonic': 'beat',
+  'air-superharmonic': 'research',
 });
 
 /**

@@ -130,6 +130,13 @@ test('helium: the beat fades over about a beat instead of vanishing (custom dens
   assert.equal(await page.evaluate(() => __wl.q('select[data-key="medium"]').value), 'helium');
   const fate = await cell(page, 'fate-0');
   assert.match(fate, /^(fades over [\d.]+ beats|gone within one beat) \(τ 0\.1\d* s/);
+  // The density slider from the keyboard, from a vacuum with the paper's modes: the FE wing in 0.01 kg/m³.
+  await page.goto(`${env.url}?screen=full`);
+  await waitRenders(page, 1);
+  await page.evaluate(() => __wl.q('input[type="range"][data-key="air_density"]').focus());
+  await page.keyboard.press('ArrowRight');
+  await waitMedium(page, 0.01);
+  assert.equal(await page.evaluate(() => __wl.q('select[data-key="medium"]').value), 'custom');
   // A custom density typed into the slider's number box.
   await page.evaluate(() => {
     const n = __wl.q('input[data-key="air_density"][type="number"]');

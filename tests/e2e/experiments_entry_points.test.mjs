@@ -2,7 +2,7 @@
 // `?exp=<id>` alone, the `<wing-lab exp="<id>">` attribute (when the element connects, and
 // changed on a running lab) and the iframe message API's `set({ exp: '<id>' })` each bring the
 // experiment's settings (www/experiments.js experimentPatch), and the experiment's checks all hold
-// on the result computed with them. One browser; one page per entry point, reused for all eight.
+// on the result computed with them. One browser; one page per entry point, reused for all ten.
 //   node --test --test-concurrency=1 tests/e2e/experiments_entry_points.test.mjs
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -16,7 +16,8 @@ import { NUMERIC } from '../../www/state.js';
 
 /**
  * The checks each experiment must show (all holding) before it counts as open: the study-based
- * ones (yaw: the γ0 sweep, ic: the initial-condition map) appear only once their worker study is in.
+ * ones (yaw: the γ0 sweep, ic: the initial-condition map, the air experiments: the same case in
+ * a vacuum) appear only once their worker study is in.
  */
 const CHECKS = {
   beat: ['beat-period'],
@@ -27,6 +28,8 @@ const CHECKS = {
   resonance: ['beat-period', 'stable'],
   instability: ['unstable', 'growth'],
   sensing: ['coriolis-present'],
+  'air-beat': ['decays-within-a-beat', 'beat-gone'],
+  'air-superharmonic': ['superharmonic-suppressed', 'third-harmonic-falls'],
 };
 const PANEL_IN = '[data-panel="experiments"]';
 const PANELS = 'controls,time,experiments,numbers';

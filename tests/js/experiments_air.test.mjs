@@ -23,13 +23,14 @@ test('the 3f_d/1f_d ratio reads the harmonics’ peaks: amplitudes 2 and 0.5 giv
   assert.ok(Math.abs(r.ratio - 0.25) < 1e-12, String(r.ratio));
 });
 
-test('the air experiments open the beat screen with the FE wing in air', () => {
+test('the air experiments open with the FE wing in air, on the screen that shows them', () => {
   for (const e of AIR_EXPERIMENTS) {
     const s = experimentState(e.id);
     assert.equal(s.modes, 'fe', e.id);
     assert.equal(s.air_density, 1.2, e.id);
-    assert.equal(EXPERIMENT_SCREEN[e.id], 'beat', e.id);
   }
+  assert.equal(EXPERIMENT_SCREEN['air-beat'], 'beat', 'the responses plot');
+  assert.equal(EXPERIMENT_SCREEN['air-superharmonic'], 'research', 'the Floquet table beside it');
 });
 
 test('both air predictions hold on the real wasm: the beat is gone in air, the 3f_d superharmonic is suppressed', async () => {

@@ -96,7 +96,7 @@ export const AIR_EXPERIMENTS = [
     params: { modes: 'fe', air_density: 1.2, flap_hz: 20.5, zeta: 0.02, duration: 4 },
     mode: 0,
     study: VACUUM,
-    look: 'The FE wing flaps at 20.5 Hz, about a third of its first natural frequency, so the third flap harmonic 3f_d sits near mode 1. Read the numbers below, then open the Forces tab: in the spectra panel compare the total response’s peak at 3f_d with the one at f_d, in air, and again after switching the Medium to vacuum.',
+    look: 'The FE wing flaps at 20.5 Hz, about a third of its first natural frequency, so the third flap harmonic 3f_d sits near mode 1. Read the numbers below and the Floquet table’s air rows, then open the Forces tab: in the spectra panel compare the total response’s peak at 3f_d with the one at f_d, in air, and again after switching the Medium to vacuum.',
     predict(/** @type {any} */ a, /** @type {any} */ ctx = {}) {
       const k = ctx.mode ?? 0;
       const fd = a.sim.flap_freq_hz;

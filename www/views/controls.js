@@ -60,7 +60,14 @@ export function mount(ctx) {
       'data-key': p.key,
       'aria-label': `${label}, exact value`,
     });
-    range.addEventListener('input', () => store.set({ [p.key]: snap(p, Number(range.value)) }));
+    /** A fluid acts on the FE wing's mode shapes: a density above 0 brings the FE mode set, as the Medium control does. */
+    const patchOf = (/** @type {number} */ v) => {
+      /** @type {Record<string, unknown>} */
+      const patch = { [p.key]: v };
+      if (p.key === 'air_density' && v > 0 && store.get().modes !== 'fe') patch.modes = 'fe';
+      return patch;
+    };
+    range.addEventListener('input', () => store.set(patchOf(snap(p, Number(range.value)))));
     num.addEventListener('change', () => {
       const v = Number(num.value);
       if (num.value.trim() === '' || !Number.isFinite(v)) {
@@ -69,7 +76,7 @@ export function mount(ctx) {
       }
       num.removeAttribute('aria-invalid');
       const s = snap(p, v);
-      store.set({ [p.key]: s });
+      store.set(patchOf(s));
       if (s !== v) num.value = String(s);
     });
     inputs[p.key] = { range, num, p };
