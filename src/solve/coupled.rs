@@ -21,7 +21,7 @@
 //! columns and the forcings.
 
 use super::gauss::{Tableau, STAGES};
-use super::propagator::{schedule, MAX_OMEGA_H, MIN_STEPS_PER_PERIOD, TARGET_PERIOD_ERROR};
+use super::propagator::schedule;
 use crate::error::{Result, WingbeatError};
 
 /// A coupled linear periodic system of N modes (see the module docs).
@@ -319,28 +319,23 @@ pub struct CoupledMap {
 pub const COUPLED_ERROR_CONSTANT: f64 = 576.0 / (40320.0 * 362880.0);
 
 /// ω·h for the coupled propagator: the accumulated error over `span`, (ω·span / ωh) steps ×
-/// C (ωh)⁹, at [`TARGET_PERIOD_ERROR`] with C = [`COUPLED_ERROR_CONSTANT`]; never above
-/// [`MAX_OMEGA_H`]. For the FE wing in air this takes 1207 steps per period (the single-mode
+/// C (ωh)⁹, at [`super::propagator::TARGET_PERIOD_ERROR`] with C = [`COUPLED_ERROR_CONSTANT`]; never above
+/// [`super::propagator::MAX_OMEGA_H`]. For the FE wing in air this takes 1207 steps per period (the single-mode
 /// rule: 2579) and the measured one-period error is 1.7e-13 (`tests/aero_air.rs`,
 /// `coupled_step_rule_meets_the_one_period_target_and_the_estimate_bounds_the_error`).
 pub fn coupled_omega_h(w: f64, span: f64) -> f64 {
-    let wt = (w * span).max(1.0);
-    (TARGET_PERIOD_ERROR / (COUPLED_ERROR_CONSTANT * wt))
-        .powf(0.125)
-        .min(MAX_OMEGA_H)
+    super::propagator::omega_h_with(COUPLED_ERROR_CONSTANT, w, span)
 }
 
 /// Steps over `span` at the highest angular frequency `freq_scale` (rad/s) by the coupled
-/// rule ([`coupled_omega_h`]), at least [`MIN_STEPS_PER_PERIOD`]; kinks and checkpoints add
+/// rule ([`coupled_omega_h`]), at least [`super::propagator::MIN_STEPS_PER_PERIOD`]; kinks and checkpoints add
 /// more. The air run's cost estimate (`aero::simulate::air_run_cost`) calls this.
 pub fn coupled_steps_per_span(freq_scale: f64, span: f64) -> f64 {
-    let w = freq_scale.max(1e-300);
-    let hmax = (coupled_omega_h(w, span) / w).min(span / MIN_STEPS_PER_PERIOD as f64);
-    (span / hmax).ceil()
+    super::propagator::steps_with(coupled_omega_h, freq_scale, span)
 }
 
 /// The step length for `ode` over `span`: [`coupled_omega_h`] with ω the system's
-/// [`CoupledOde::freq_scale`], and at least [`MIN_STEPS_PER_PERIOD`] steps.
+/// [`CoupledOde::freq_scale`], and at least [`super::propagator::MIN_STEPS_PER_PERIOD`] steps.
 pub fn max_step<O: CoupledOde + ?Sized>(ode: &O, span: f64) -> f64 {
     span / coupled_steps_per_span(ode.freq_scale(), span)
 }

@@ -35,10 +35,24 @@ pub const GAUSS_ERROR_CONSTANT: f64 = 2.3e-5;
 /// the accumulated error over the span, (ω·span / ωh) steps × C (ωh)⁹ = C ω·span (ωh)⁸, stays at
 /// [`TARGET_PERIOD_ERROR`]; never above [`MAX_OMEGA_H`].
 pub fn omega_h_for(w: f64, span: f64) -> f64 {
+    omega_h_with(GAUSS_ERROR_CONSTANT, w, span)
+}
+
+/// [`omega_h_for`] with the error constant `c` of the method's (ωh)⁹ local error (the coupled
+/// propagator uses its own, `solve::coupled::COUPLED_ERROR_CONSTANT`).
+pub(crate) fn omega_h_with(c: f64, w: f64, span: f64) -> f64 {
     let wt = (w * span).max(1.0);
-    (TARGET_PERIOD_ERROR / (GAUSS_ERROR_CONSTANT * wt))
+    (TARGET_PERIOD_ERROR / (c * wt))
         .powf(0.125)
         .min(MAX_OMEGA_H)
+}
+
+/// Steps over `span` at the largest angular frequency `freq_scale` with the ω·h rule `omega_h`,
+/// at least [`MIN_STEPS_PER_PERIOD`].
+pub(crate) fn steps_with(omega_h: impl Fn(f64, f64) -> f64, freq_scale: f64, span: f64) -> f64 {
+    let w = freq_scale.max(1e-300);
+    let hmax = (omega_h(w, span) / w).min(span / MIN_STEPS_PER_PERIOD as f64);
+    (span / hmax).ceil()
 }
 
 /// Number of Gauss–Legendre steps [`period_map`] takes over `span` (s) when the largest
@@ -46,9 +60,7 @@ pub fn omega_h_for(w: f64, span: f64) -> f64 {
 /// at least [`MIN_STEPS_PER_PERIOD`]. Cost estimates elsewhere (`floquet::analysis_cost`,
 /// `simulate::run_cost`) call this, so they follow the rule.
 pub fn steps_per_span(freq_scale: f64, span: f64) -> f64 {
-    let w = freq_scale.max(1e-300);
-    let hmax = (omega_h_for(w, span) / w).min(span / MIN_STEPS_PER_PERIOD as f64);
-    (span / hmax).ceil()
+    steps_with(omega_h_for, freq_scale, span)
 }
 
 /// One period's transition data at a set of checkpoint phases.
