@@ -66,6 +66,7 @@ pub mod reproduce;
 pub mod run;
 pub mod simulate;
 pub mod solve;
+pub mod transient;
 #[cfg(feature = "web")]
 pub mod wasm;
 

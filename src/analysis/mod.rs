@@ -10,6 +10,7 @@ pub mod ic_map;
 pub mod neural;
 pub mod psd;
 pub mod resonance;
+pub mod rotation_classify;
 pub mod sensing;
 pub mod spectra;
 pub mod sspoc;

@@ -214,8 +214,30 @@ pub fn elastic_net_equality(phi: &DMatrix<f64>, c: &DVector<f64>, alpha: f64) ->
 
 /// SSPOC on two classes of training data (rows samples, columns sensors).
 pub fn sspoc(class0: &DMatrix<f64>, class1: &DMatrix<f64>, cfg: &SspocConfig) -> Result<Sspoc> {
+    let mut v = sspoc_sweep(class0, class1, cfg, &[cfg.kept_modes])?;
+    Ok(v.remove(0))
+}
+
+/// SSPOC for several numbers of kept modes (`cfg.kept_modes` is ignored; each entry of
+/// `kept_modes` is checked as it would be): the SVD and the discriminant in mode space are
+/// computed once, the sparse weights once per entry.
+pub fn sspoc_sweep(
+    class0: &DMatrix<f64>,
+    class1: &DMatrix<f64>,
+    cfg: &SspocConfig,
+    kept_modes: &[usize],
+) -> Result<Vec<Sspoc>> {
     let p = class0.ncols();
-    check_config(cfg, p, class0.nrows() + class1.nrows())?;
+    for &k in kept_modes {
+        check_config(
+            &SspocConfig {
+                kept_modes: k,
+                ..*cfg
+            },
+            p,
+            class0.nrows() + class1.nrows(),
+        )?;
+    }
     let x = DMatrix::from_fn(p, class0.nrows() + class1.nrows(), |i, j| {
         if j < class0.nrows() {
             class0[(j, i)]
@@ -231,30 +253,35 @@ pub fn sspoc(class0: &DMatrix<f64>, class1: &DMatrix<f64>, cfg: &SspocConfig) ->
         ThresholdRule::GaussianCrossing,
     )?;
     let w = &lda.direction;
-    let mut modes: Vec<usize> = (0..r).collect();
-    modes.sort_by(|&i, &j| (w[j].abs() * sigma[j]).total_cmp(&(w[i].abs() * sigma[i])));
-    modes.truncate(cfg.kept_modes.min(r));
-    let phi = DMatrix::from_fn(p, modes.len(), |i, j| psi[(i, modes[j])]);
-    let c = DVector::from_iterator(modes.len(), modes.iter().map(|&k| w[k]));
-    let s = elastic_net_equality(&phi, &c, cfg.l1_weight)?;
-    let mut order: Vec<usize> = (0..p).collect();
-    order.sort_by(|&i, &j| s[j].abs().total_cmp(&s[i].abs()).then(i.cmp(&j)));
-    let sensors = match cfg.sensors {
-        SensorCount::Top(k) => order[..k].to_vec(),
-        SensorCount::Cutoff => {
-            let norm = s.iter().map(|v| v * v).sum::<f64>().sqrt();
-            order
-                .iter()
-                .take(r)
-                .copied()
-                .filter(|&i| s[i].abs() >= norm / r as f64)
-                .collect()
-        }
-    };
-    Ok(Sspoc {
-        sensors,
-        weights: s,
-        singular_values: sigma,
-        kept_modes: modes,
-    })
+    let mut ranked: Vec<usize> = (0..r).collect();
+    ranked.sort_by(|&i, &j| (w[j].abs() * sigma[j]).total_cmp(&(w[i].abs() * sigma[i])));
+    kept_modes
+        .iter()
+        .map(|&kept| {
+            let modes: Vec<usize> = ranked.iter().copied().take(kept.min(r)).collect();
+            let phi = DMatrix::from_fn(p, modes.len(), |i, j| psi[(i, modes[j])]);
+            let c = DVector::from_iterator(modes.len(), modes.iter().map(|&k| w[k]));
+            let s = elastic_net_equality(&phi, &c, cfg.l1_weight)?;
+            let mut order: Vec<usize> = (0..p).collect();
+            order.sort_by(|&i, &j| s[j].abs().total_cmp(&s[i].abs()).then(i.cmp(&j)));
+            let sensors = match cfg.sensors {
+                SensorCount::Top(k) => order[..k].to_vec(),
+                SensorCount::Cutoff => {
+                    let norm = s.iter().map(|v| v * v).sum::<f64>().sqrt();
+                    order
+                        .iter()
+                        .take(r)
+                        .copied()
+                        .filter(|&i| s[i].abs() >= norm / r as f64)
+                        .collect()
+                }
+            };
+            Ok(Sspoc {
+                sensors,
+                weights: s,
+                singular_values: sigma.clone(),
+                kept_modes: modes,
+            })
+        })
+        .collect()
 }

@@ -1,6 +1,7 @@
 //! Argument parsing and the subcommands of the `wingbeat` binary.
 
 mod args;
+mod classify;
 mod modes;
 #[cfg(feature = "render")]
 mod render;
@@ -91,6 +92,17 @@ enum Command {
     ///   wingbeat sense --preset fe-wing --body-rate 0,0,1 > sense.json
     ///   wingbeat sense --preset fe-wing --format csv --table curve
     Sense(sense::SenseArgs),
+    /// Rotation or none, told from wing strain as the published sensing studies do (Mohren et
+    /// al. 2018): two non-periodic runs from rest (with and without a body rotation about the
+    /// plate's normal, each under its own seeded disturbance), the spanwise strain at a sensor
+    /// grid, neuron-like encoding (an STA filter and a sigmoid), and a linear discriminant on
+    /// all sensors, on sparse sensors chosen by SSPOC and on random sets; the same on raw
+    /// strain (docs/sensing.md, "Classifying rotation").
+    ///
+    /// Examples:
+    ///   wingbeat classify --preset mohren2018 > classify.json
+    ///   wingbeat classify --kept-modes 5,10,20 --counts 1-30 --draws 100 --format csv
+    Classify(classify::ClassifyArgs),
     /// Render the flexing wing offscreen to PNG (wgpu; needs a build with `--features render`
     /// and a Vulkan or GL driver, e.g. Mesa's lavapipe).
     Render(RenderArgs),
@@ -265,6 +277,7 @@ pub fn run() -> Result<String> {
         Command::Reproduce(a) => cmd_reproduce(a),
         Command::Modes(a) => modes::run(&a, read_file),
         Command::Sense(a) => sense::run(a),
+        Command::Classify(a) => classify::run(a),
         Command::Render(a) => cmd_render(a),
     }
 }
