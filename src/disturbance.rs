@@ -69,6 +69,8 @@ pub struct Disturbance {
     pub std: f64,
     /// a: the amplitude, rad/s.
     pub amplitude: f64,
+    /// Σ_j cos(p_j) / (2π f_j), s: the raw sum's integral's value at t = 0 (kept for [`Disturbance::eval`]).
+    angle_at_zero: f64,
 }
 
 fn check(field: &str, v: f64, lo: f64, hi: f64, unit: &str) -> Result<()> {
@@ -139,7 +141,14 @@ impl Disturbance {
             mean: 0.0,
             std: 1.0,
             amplitude: spec.amplitude_rad_per_s,
+            angle_at_zero: 0.0,
         };
+        d.angle_at_zero = d
+            .freqs_hz
+            .iter()
+            .zip(&d.phases_rad)
+            .map(|(f, p)| p.cos() / (TAU * f))
+            .sum();
         let n = n as usize;
         let raw: Vec<f64> = (0..n)
             .map(|i| d.raw(i as f64 * spec.normalise_step_s))
@@ -191,6 +200,25 @@ impl Disturbance {
             .map(|(f, p)| (p.cos() - (TAU * f * t + p).cos()) / (TAU * f))
             .sum();
         self.amplitude * (s - self.mean * t) / self.std
+    }
+
+    /// [`Disturbance::angle`], [`Disturbance::rate`] and [`Disturbance::rate_dot`] at t from one
+    /// sine and cosine per component (rad, rad/s, rad/s²).
+    pub fn eval(&self, t: f64) -> (f64, f64, f64) {
+        let (mut s_angle, mut s_rate, mut s_dot) = (self.angle_at_zero, 0.0, 0.0);
+        for (f, p) in self.freqs_hz.iter().zip(&self.phases_rad) {
+            let w = TAU * f;
+            let (sn, cs) = (w * t + p).sin_cos();
+            s_angle -= cs / w;
+            s_rate += sn;
+            s_dot += w * cs;
+        }
+        let k = self.amplitude / self.std;
+        (
+            k * (s_angle - self.mean * t),
+            k * (s_rate - self.mean),
+            k * s_dot,
+        )
     }
 
     /// The constant by which the published indefinite integral differs from [`Disturbance::angle`]:

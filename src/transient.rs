@@ -216,9 +216,10 @@ impl CompiledTransient {
             *ad = d * sig + v * dsig;
             *add = dd * sig + 2.0 * d * dsig + v * ddsig;
             if let Some(x) = dist {
-                *a += x.angle(t);
-                *ad += x.rate(t);
-                *add += x.rate_dot(t);
+                let (angle, rate, rate_dot) = x.eval(t);
+                *a += angle;
+                *ad += rate;
+                *add += rate_dot;
             }
         }
         // The body rotation angle is w t σ(t): its rate w (σ + t σ′), and that rate's derivative
@@ -234,8 +235,9 @@ impl CompiledTransient {
             v[i] = self.body_rate[i] * f;
             vd[i] = self.body_rate[i] * fd;
             if let Some(x) = &self.body[i] {
-                v[i] += x.rate(t);
-                vd[i] += x.rate_dot(t);
+                let (_, rate, rate_dot) = x.eval(t);
+                v[i] += rate;
+                vd[i] += rate_dot;
             }
         }
         match self.frame {
@@ -302,7 +304,9 @@ pub const MAX_SAMPLES: usize = 10_000_000;
 /// Most Gauss steps of one run, summed over modes.
 pub const MAX_STEPS: f64 = 5e8;
 
-/// Gauss steps per output interval `dt` for the largest angular frequency `w` over `span`.
+/// Gauss steps per output interval `dt` for the largest angular frequency `w`, the error target
+/// of [`omega_h_for`] holding over each `span` (the runs use one flap period, as the periodic
+/// path does).
 pub fn steps_per_sample(w: f64, dt: f64, span: f64) -> usize {
     let w = w.max(1e-300);
     let h = omega_h_for(w, span) / w;
@@ -343,7 +347,9 @@ pub fn check_run_cost(
         .iter()
         .map(|m| m.omega().max(2.0 * m.zeta * m.omega()))
         .fold(kin.freq_scale(), f64::max);
-    let m = steps_per_sample(w, dt_s, duration_s);
+    // The periodic path's accuracy rule: its error target holds per flap period.
+    let period = std::f64::consts::TAU / kin.flapping.wd;
+    let m = steps_per_sample(w, dt_s, period.min(duration_s));
     let steps = (n - 1) as f64 * m as f64 * modes.len() as f64;
     if steps > MAX_STEPS {
         return Err(WingbeatError::ResourceCap {

@@ -131,3 +131,19 @@ fn bad_specs_are_named() {
         assert!(e.contains(field), "{field}: {e}");
     }
 }
+
+#[test]
+fn eval_is_angle_rate_and_derivative_together() {
+    let d = Disturbance::new(&DisturbanceSpec::published(0.312, 11)).unwrap();
+    for i in 0..400 {
+        let t = i as f64 * 0.0123;
+        let (a, r, rd) = d.eval(t);
+        let scale = 0.312 * 15.0 * std::f64::consts::TAU * 10.0;
+        assert!((a - d.angle(t)).abs() <= 1e-13 * scale, "angle at {t}");
+        assert!((r - d.rate(t)).abs() <= 1e-13 * scale, "rate at {t}");
+        assert!(
+            (rd - d.rate_dot(t)).abs() <= 1e-13 * scale,
+            "rate_dot at {t}"
+        );
+    }
+}

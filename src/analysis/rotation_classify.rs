@@ -8,7 +8,7 @@
 //! ([`super::sspoc`]) and on random sensors; the same on the raw strain.
 
 use nalgebra::DMatrix;
-use rand::{seq::index::sample, SeedableRng};
+use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
@@ -328,6 +328,17 @@ fn columns(x: &DMatrix<f64>, idx: &[usize]) -> DMatrix<f64> {
     DMatrix::from_fn(x.nrows(), idx.len(), |i, j| x[(i, idx[j])])
 }
 
+/// q distinct indices below p, uniformly: the first q steps of a Fisher–Yates shuffle.
+fn draw(rng: &mut ChaCha8Rng, p: usize, q: usize) -> Vec<usize> {
+    let mut all: Vec<usize> = (0..p).collect();
+    for i in 0..q.min(p) {
+        let j = rng.random_range(i..p);
+        all.swap(i, j);
+    }
+    all.truncate(q);
+    all
+}
+
 /// Test accuracy of a discriminant fitted on the sensors `idx` (all when `None`); `None` when no
 /// direction separates the training classes.
 fn accuracy(
@@ -377,7 +388,7 @@ fn curves(enc: Encoded, n_train: usize, opts: &ClassifyOptions) -> Result<Curves
             let mut failed = 0;
             let acc: Vec<f64> = (0..opts.random_draws)
                 .map(|_| {
-                    let idx = sample(&mut rng, p, q).into_vec();
+                    let idx = draw(&mut rng, p, q);
                     accuracy(&train, &test, Some(&idx), rule).unwrap_or_else(|| {
                         failed += 1;
                         0.5
