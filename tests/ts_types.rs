@@ -180,3 +180,46 @@ fn lab_wing_types_match_serde() {
     ok.extend(["ok", "default_mesh_size_mm", "default_strain_point_mm"].map(String::from));
     ts_common::check(&i, "PlanformOk", &ok);
 }
+
+#[test]
+fn classify_types_match_serde() {
+    use wingbeat::analysis::rotation_classify::{
+        ClassifyOptions, ClassifyReport, Curves, RandomPoint, SparsePoint,
+    };
+    let i = ts_common::interfaces(ts_common::declarations());
+    let opts = ClassifyOptions {
+        s0: Some(1e-4),
+        ..ClassifyOptions::default()
+    };
+    ts_common::check(&i, "ClassifyOptions", &keys(&opts));
+    let sparse = SparsePoint {
+        kept_modes: 3,
+        sensors: vec![1, 2],
+        accuracy: 0.8,
+    };
+    let random = RandomPoint {
+        sensors: 2,
+        mean: 0.6,
+        sd: 0.1,
+        failed_fits: 0,
+    };
+    ts_common::check(&i, "SparsePoint", &keys(&sparse));
+    ts_common::check(&i, "RandomPoint", &keys(&random));
+    let curves = Curves {
+        all_sensors: 0.9,
+        sparse: vec![sparse],
+        random: vec![random],
+        s0: 1e-4,
+    };
+    ts_common::check(&i, "ClassifyCurves", &keys(&curves));
+    let report = ClassifyReport {
+        options: opts,
+        train_samples: 2700,
+        test_samples: 300,
+        encoded: curves.clone(),
+        raw: curves,
+        sensors: vec![[0.0, 0.0]],
+        steps_per_sample: 45,
+    };
+    ts_common::check(&i, "ClassifyReport", &keys(&report));
+}

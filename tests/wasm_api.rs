@@ -929,3 +929,8 @@ fn unknown_nested_keys_are_refused() {
 fn air_run_matches_core() {
     wasm_common::air_run_matches_core();
 }
+
+#[wasm_bindgen_test]
+fn classify_rotation_matches_core() {
+    wasm_common::classify_rotation_matches_core();
+}

@@ -421,6 +421,19 @@ fn curves(enc: Encoded, n_train: usize, opts: &ClassifyOptions) -> Result<Curves
 /// Runs both classes, encodes the strain and classifies it (module docs). Every input is
 /// checked, and the runs' and the data's sizes against their caps, before any work.
 pub fn classify(case: &ClassifyCase, opts: &ClassifyOptions) -> Result<ClassifyReport> {
+    classify_with_progress(case, opts, &mut |_, _| {})
+}
+
+/// Stages [`classify_with_progress`] reports: the two runs, the encoding, the encoded and the
+/// raw curves.
+pub const CLASSIFY_STAGES: usize = 5;
+
+/// [`classify`], calling `progress(done, CLASSIFY_STAGES)` after each stage.
+pub fn classify_with_progress(
+    case: &ClassifyCase,
+    opts: &ClassifyOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<ClassifyReport> {
     let ns = case.sensors.len();
     if ns == 0 || ns > MAX_SENSORS {
         return Err(WingbeatError::invalid(
@@ -472,6 +485,7 @@ pub fn classify(case: &ClassifyCase, opts: &ClassifyOptions) -> Result<ClassifyR
     let mut strain: [Vec<Vec<f64>>; 2] = [Vec::new(), Vec::new()];
     for (c, kin) in compiled.iter().enumerate() {
         let run = transient::run(kin, &case.modes, opts.duration_s, opts.sample_step_s)?;
+        progress(c + 1, CLASSIFY_STAGES);
         strain[c] = case
             .sensors
             .iter()
@@ -492,14 +506,19 @@ pub fn classify(case: &ClassifyCase, opts: &ClassifyOptions) -> Result<ClassifyR
     let encoded = encode(&strain, first, &taps, &opts.nonlinearity, opts.s0)?;
     let raw = encode(&strain, first, &[1.0], &Nonlinearity::Identity, None)
         .or_else(|_| encode(&strain, first, &[1.0], &Nonlinearity::Identity, Some(1.0)))?;
+    progress(3, CLASSIFY_STAGES);
     let n_rows = encoded.classes[0].nrows();
     let n_train = n_train.min(n_rows - 1);
+    let encoded = curves(encoded, n_train, opts)?;
+    progress(4, CLASSIFY_STAGES);
+    let raw = curves(raw, n_train, opts)?;
+    progress(5, CLASSIFY_STAGES);
     Ok(ClassifyReport {
         options: opts.clone(),
         train_samples: n_train,
         test_samples: n_rows - n_train,
-        encoded: curves(encoded, n_train, opts)?,
-        raw: curves(raw, n_train, opts)?,
+        encoded,
+        raw,
         sensors: case.sensors.iter().map(|s| [s.x_mm, s.y_mm]).collect(),
         steps_per_sample: steps,
     })
@@ -556,8 +575,16 @@ pub fn mohren2018_classes(
 /// apart, edges included, ordered as published (chord index fastest, from the root row to the
 /// tip). In wingbeat's frame x = 0 … 50 mm spanwise, y = 0 … −25 mm chordwise.
 pub fn mohren2018_grid_mm() -> Vec<(f64, f64)> {
+    mohren2018_grid_every(1)
+}
+
+/// Every `step`-th point of [`mohren2018_grid_mm`] along both axes (from the root and the
+/// leading edge): 1 is the published grid, 2 a 2 mm grid of 26 × 13 points.
+pub fn mohren2018_grid_every(step: usize) -> Vec<(f64, f64)> {
+    let step = step.max(1);
     (0..51)
-        .flat_map(|s| (0..26).map(move |c| (s as f64, -(c as f64))))
+        .step_by(step)
+        .flat_map(|s| (0..26).step_by(step).map(move |c| (s as f64, -(c as f64))))
         .collect()
 }
 
@@ -579,6 +606,25 @@ pub fn spanwise_sensors(
         .collect())
 }
 
+/// A case on an FE wing: its modes with the published damping ζ_k = 63/(2ω_k), the two classes,
+/// and spanwise-strain sensors at `points_mm` (each must lie on the wing; errors name it).
+pub fn fe_case(
+    fe: &crate::fem::FemModes,
+    classes: [TransientKinematics; 2],
+    points_mm: &[(f64, f64)],
+) -> Result<ClassifyCase> {
+    let zetas = crate::presets::mohren2018_damping_ratios(&fe.freq_hz)?;
+    let mut modes = fe.to_modes(0.0, &[]);
+    for (m, z) in modes.iter_mut().zip(zetas) {
+        m.zeta = z;
+    }
+    Ok(ClassifyCase {
+        modes,
+        classes,
+        sensors: spanwise_sensors(fe, points_mm)?,
+    })
+}
+
 /// The published setup on wingbeat's shell FE: the plate of [`crate::presets::mohren2018_plate_input`]
 /// (`n_modes` modes, `mesh_size_mm` or automatic), its published damping ζ_k = 63/(2ω_k), the
 /// classes of [`mohren2018_classes`] (10 rad/s; disturbances 0.312 and 0.1 rad/s) and the
@@ -592,18 +638,10 @@ pub fn mohren2018_case(
         mesh_size_mm,
         n_modes,
     ))?;
-    let zetas = crate::presets::mohren2018_damping_ratios(&fe.freq_hz)?;
-    let mut modes = fe.to_modes(0.0, &[]);
-    for (m, z) in modes.iter_mut().zip(zetas) {
-        m.zeta = z;
-    }
-    let sensors = spanwise_sensors(&fe, &mohren2018_grid_mm())?;
-    Ok((
-        ClassifyCase {
-            modes,
-            classes: mohren2018_classes(10.0, 0.312, 0.1, seed),
-            sensors,
-        },
-        fe,
-    ))
+    let case = fe_case(
+        &fe,
+        mohren2018_classes(10.0, 0.312, 0.1, seed),
+        &mohren2018_grid_mm(),
+    )?;
+    Ok((case, fe))
 }

@@ -8,7 +8,7 @@ use serde_json::json;
 use wingbeat::analysis::classify::ThresholdRule;
 use wingbeat::analysis::neural::{Filter, Nonlinearity, Orientation};
 use wingbeat::analysis::rotation_classify::{
-    classify, mohren2018_case, mohren2018_classes, mohren2018_grid_mm, spanwise_sensors,
+    classify, fe_case, mohren2018_case, mohren2018_classes, mohren2018_grid_mm, spanwise_sensors,
     ClassifyCase, ClassifyOptions, ClassifyReport,
 };
 use wingbeat::modes_doc::read_modes_document;
@@ -190,7 +190,6 @@ fn case(a: &ClassifyArgs) -> Result<ClassifyCase> {
     if let Some(path) = &a.modes {
         let text = read_file(path)?;
         let doc = read_modes_document(&text, &path.display().to_string())?;
-        let mut modes = doc.modes;
         let fe = doc.fe.ok_or_else(|| {
             WingbeatError::invalid(
                 "--modes",
@@ -198,10 +197,6 @@ fn case(a: &ClassifyArgs) -> Result<ClassifyCase> {
                 "a file written by `wingbeat modes` (it carries the mesh the sensors need)",
             )
         })?;
-        let zetas = wingbeat::presets::mohren2018_damping_ratios(&fe.freq_hz)?;
-        for (m, z) in modes.iter_mut().zip(zetas) {
-            m.zeta = z;
-        }
         let grid: Vec<(f64, f64)> = mohren2018_grid_mm()
             .into_iter()
             .filter(|&p| spanwise_sensors(&fe, &[p]).is_ok())
@@ -211,12 +206,7 @@ fn case(a: &ClassifyArgs) -> Result<ClassifyCase> {
         } else {
             fe.nodes.iter().map(|p| (p[0] * 1e3, p[1] * 1e3)).collect()
         };
-        let sensors = spanwise_sensors(&fe, &points)?;
-        return Ok(ClassifyCase {
-            modes,
-            classes,
-            sensors,
-        });
+        return fe_case(&fe, classes, &points);
     }
     let (mut c, _) = mohren2018_case(a.n_modes, a.mesh_size_mm, a.seed)?;
     c.classes = classes;

@@ -33,6 +33,7 @@
 //! cannot leave the page's module dead.
 
 pub mod analysis;
+pub mod classify;
 pub mod fe;
 pub mod helpers;
 pub mod marshal;
@@ -44,6 +45,7 @@ pub mod view;
 pub mod wing;
 
 pub use analysis::{analyze, envelope, ic_map, psd, resonance_map, spectra, sweep};
+pub use classify::classify_rotation;
 pub use fe::fe_modes;
 pub use sim::{
     angles_at, apply_overrides, default_config, force_series, kinematics_from_csv, limits,

@@ -230,6 +230,36 @@ export interface KinematicsTable {
 }
 /** One accepted range of the body angular velocity (core params::BODY_RATE_RANGES). */
 export interface BodyRateRange { what: "mean" | "amplitude" | "phase" | "value" | "peak"; min: number; max: number; unit: string }
+/** The STA filter of classifyRotation's encoder (ω_s rad/ms, δ, w and the window in ms), or none. */
+export type NeuralFilter =
+  | { kind: "identity" }
+  | { kind: "sta"; omega_rad_per_ms: number; delay_ms: number; width_ms: number; window_ms: number; orientation: "causal" | "published_code" };
+/** The encoder's nonlinearity: ξ/s₀, or the firing probability 1/(1 + exp(−g(ξ/s₀ − θ))). */
+export type NeuralNonlinearity = { kind: "identity" } | { kind: "sigmoid"; gain: number; threshold: number };
+/** How classifyRotation samples, encodes and classifies (core ClassifyOptions; missing = published). */
+export interface ClassifyOptions {
+  duration_s?: number; sample_step_s?: number; discard_s?: number; filter?: NeuralFilter; nonlinearity?: NeuralNonlinearity;
+  s0?: number | null; train_fraction?: number; threshold?: "gaussian_crossing" | "midpoint"; rank?: number; l1_weight?: number;
+  kept_modes?: number[]; random_counts?: number[]; random_draws?: number; seed?: number;
+}
+/** What classifyRotation is asked; missing = the published setup (8 FE modes, 10 rad/s, disturbances 0.312 and 0.1 rad/s, 1 mm grid). */
+export interface ClassifyRequest {
+  n_modes?: number; mesh_size_mm?: number | null; rotation_rad_s?: number; flap_disturbance_rad_s?: number;
+  rotation_disturbance_rad_s?: number; seed?: number; grid_step_mm?: number; options?: ClassifyOptions;
+}
+/** SSPOC's sensors for one number of kept modes (indices into `sensors`) and their test accuracy. */
+export interface SparsePoint { kept_modes: number; sensors: number[]; accuracy: number }
+/** Random sets of one size: mean and sd of the test accuracy over the draws. */
+export interface RandomPoint { sensors: number; mean: number; sd: number; failed_fits: number }
+/** Accuracy against the number of sensors for one representation of the strain. */
+export interface ClassifyCurves { all_sensors: number; sparse: SparsePoint[]; random: RandomPoint[]; s0: number }
+/** The classification (core ClassifyReport); accuracies are fractions of test samples (chance 0.5), positions mm. */
+export interface ClassifyReport {
+  options: ClassifyOptions; train_samples: number; test_samples: number; encoded: ClassifyCurves; raw: ClassifyCurves;
+  sensors: [number, number][]; steps_per_sample: number;
+}
+/** classifyRotation's result: the plate's modes (Hz, ζ, FE kind) and the report. */
+export interface ClassifyRotationResult { modes: { freq_hz: number; zeta: number; kind: string }[]; report: ClassifyReport }
 /** Options of senseRotation; missing = the core's defaults (k_max 30, ρ 0.01, σ 1e-7, 256 samples per sensor, the best sensor's point). */
 export interface SenseOptions { k_max?: number | null; rho?: number | null; noise?: number | null; samples_per_sensor?: number | null; point_mm?: [number, number] | null }
 /** The sensing analysis's options as used (core SensingOptions). */

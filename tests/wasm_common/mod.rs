@@ -888,3 +888,84 @@ pub fn air_run_matches_core() {
     let m = refused(wing_of(&nan_nodes, &tris, &shapes));
     assert!(m.contains("wing.nodes[1]"), "{m}");
 }
+
+/// `classifyRotation` on a thin, short case against the core's pipeline for the same request:
+/// the same accuracies and normalisation, progress to 6 of 6; bad requests named.
+pub fn classify_rotation_matches_core() {
+    use wingbeat::analysis::rotation_classify::{
+        classify, fe_case, mohren2018_classes, mohren2018_grid_every, ClassifyOptions,
+    };
+    let request = r#"{"n_modes": 3, "mesh_size_mm": 2.5, "grid_step_mm": 5, "seed": 3,
+        "options": {"duration_s": 1.6, "discard_s": 0.5, "kept_modes": [2], "random_counts": [2],
+        "random_draws": 3}}"#;
+    let calls = Rc::new(RefCell::new(Vec::<(f64, f64)>::new()));
+    let sink = calls.clone();
+    let progress = Closure::<dyn FnMut(f64, f64)>::new(move |d, t| sink.borrow_mut().push((d, t)));
+    let js = wasm::classify_rotation(
+        js_sys::JSON::parse(request).unwrap(),
+        progress.as_ref().clone(),
+    )
+    .unwrap();
+    assert_eq!(calls.borrow().last(), Some(&(6.0, 6.0)));
+    let fe = wingbeat::fem::compute_modes(&wingbeat::presets::mohren2018_plate_input(Some(2.5), 3))
+        .unwrap();
+    let case = fe_case(
+        &fe,
+        mohren2018_classes(10.0, 0.312, 0.1, 3),
+        &mohren2018_grid_every(5),
+    )
+    .unwrap();
+    let opts = ClassifyOptions {
+        duration_s: 1.6,
+        discard_s: 0.5,
+        kept_modes: vec![2],
+        random_counts: vec![2],
+        random_draws: 3,
+        ..ClassifyOptions::default()
+    };
+    let core = classify(&case, &opts).unwrap();
+    assert_eq!(num(&js, "report.test_samples") as usize, core.test_samples);
+    assert_eq!(
+        get(&js, "report.sensors")
+            .dyn_into::<js_sys::Array>()
+            .unwrap()
+            .length() as usize,
+        11 * 6
+    );
+    let one = 1.0 / (2 * core.test_samples) as f64;
+    for (name, c) in [("encoded", &core.encoded), ("raw", &core.raw)] {
+        let got = num(&js, &format!("report.{name}.all_sensors"));
+        assert!(
+            (got - c.all_sensors).abs() <= one + 1e-12,
+            "{name}: {got} vs {}",
+            c.all_sensors
+        );
+        close(
+            &format!("{name}.s0"),
+            num(&js, &format!("report.{name}.s0")),
+            c.s0,
+            1e-9,
+        );
+    }
+    close(
+        "modes.0.freq_hz",
+        num(&js, "modes.0.freq_hz"),
+        fe.freq_hz[0],
+        1e-9,
+    );
+    for (req, field) in [
+        (r#"{"grid_step_mm": 0}"#, "request.grid_step_mm"),
+        (r#"{"rotation_rad_s": 1e9}"#, "request.rotation_rad_s"),
+        (
+            r#"{"options": {"train_fraction": 2}}"#,
+            "options.train_fraction",
+        ),
+        (r#"{"colour": 1}"#, "colour"),
+    ] {
+        let m = message(wasm::classify_rotation(
+            js_sys::JSON::parse(req).unwrap(),
+            JsValue::UNDEFINED,
+        ));
+        assert!(m.contains(field), "{req}: {m}");
+    }
+}
