@@ -19,6 +19,7 @@ import { UNITS, errorText } from './format.js';
 import { peakAbs, measureBeat, growthRate } from './measure.js';
 import { fmt } from './experiments/fmt.js';
 import { AIR_EXPERIMENTS } from './experiments/air.js';
+import { NEURAL_EXPERIMENTS } from './experiments/neural.js';
 
 export { fmt };
 
@@ -356,6 +357,7 @@ export const EXPERIMENTS = [
     },
   },
   ...AIR_EXPERIMENTS,
+  ...NEURAL_EXPERIMENTS,
 ];
 
 export function experiment(id) {

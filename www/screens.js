@@ -77,6 +77,7 @@ export const EXPERIMENT_SCREEN = Object.freeze({
   sensing: 'sensing',
   'air-beat': 'beat',
   'air-superharmonic': 'research',
+  'neural-sensing': 'sensing',
 });
 
 /**

@@ -137,6 +137,7 @@ export const EXPERIMENT_IDS = [
   'sensing',
   'air-beat',
   'air-superharmonic',
+  'neural-sensing',
 ];
 
 /**

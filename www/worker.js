@@ -106,6 +106,12 @@ const jobs = {
     // point; progress after each stage. `fe` = { nodes, triangles, strain_nodes } of feModes.
     return wb.senseRotation(cfg, fe.nodes, fe.triangles, fe.strain_nodes, body_rate, opts || undefined, progress);
   },
+  [JOB.classify]({ opts }, progress) {
+    // Sensing as the published studies measure it (wasm classifyRotation): the published plate,
+    // two runs from rest, encoding and classification; `opts` is the request. Progress after the
+    // FE solve and each stage.
+    return wb.classifyRotation(opts, progress);
+  },
 };
 
 /** The worker's global scope (a DedicatedWorkerGlobalScope; tsconfig's lib is the page's DOM). */

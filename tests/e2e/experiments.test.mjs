@@ -31,7 +31,7 @@ async function openExperiment(id, viewport) {
 
 /** Waits until the experiment panel shows `id` with all of its checks computed. */
 async function waitChecks(page, id) {
-  const want = { yaw: 2, ic: 1, 'air-beat': 2, 'air-superharmonic': 2 }[id];
+  const want = { yaw: 2, ic: 1, 'air-beat': 2, 'air-superharmonic': 2, 'neural-sensing': 3 }[id];
   await page.waitForFunction(
     ([sel, exp, n]) => {
       const box = __wl.q(sel);

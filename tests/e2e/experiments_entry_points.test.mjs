@@ -30,6 +30,7 @@ const CHECKS = {
   sensing: ['coriolis-present'],
   'air-beat': ['decays-within-a-beat', 'beat-gone'],
   'air-superharmonic': ['superharmonic-suppressed', 'third-harmonic-falls'],
+  'neural-sensing': ['raw-cannot', 'encoding-can', 'one-sensor-chance'],
 };
 const PANEL_IN = '[data-panel="experiments"]';
 const PANELS = 'controls,time,experiments,numbers';

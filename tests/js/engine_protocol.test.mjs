@@ -53,6 +53,7 @@ test('what the engine writes is read by the worker as the job and its inputs', (
 test('the job kinds are the jobs worker.js defines, each once', () => {
   assert.deepEqual([...JOB_KINDS].sort(), [
     'analyze',
+    'classify',
     'damping',
     'fe',
     'icmap',

@@ -106,7 +106,7 @@ test('every experiment has an id, title, look text and in-range URL parameters',
       if (en) assert.ok(en.choices.includes(v));
     }
   }
-  assert.equal(EXPERIMENTS.length, 10);
+  assert.equal(EXPERIMENTS.length, 11);
   assert.deepEqual(
     EXPERIMENTS.map((e) => e.id),
     EXPERIMENT_IDS,

@@ -20,6 +20,7 @@ export const JOB = Object.freeze({
   fe: 'fe',
   sense: 'sense',
   analyze: 'analyze',
+  classify: 'classify',
 });
 /** @type {readonly string[]} */
 export const JOB_KINDS = Object.freeze(Object.values(JOB));

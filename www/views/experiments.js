@@ -148,7 +148,7 @@ export function mount(ctx) {
         lastAnnounced = say;
       }
     }
-    if (e.study && e.study.kind !== 'analyze') {
+    if (e.study && e.study.kind !== 'analyze' && e.study.kind !== 'classify') {
       const target = e.study.kind === 'resonance' ? 'resonance' : 'studies';
       const label = {
         resonance: 'Go to the resonance map',
