@@ -67,6 +67,23 @@ pub enum WingbeatError {
 pub type Result<T> = std::result::Result<T, WingbeatError>;
 
 impl WingbeatError {
+    /// An input error with its field renamed by `f` (to say where it happened: a sweep point,
+    /// a disturbance's axis, an option's path); other errors unchanged.
+    pub fn map_field(self, f: impl FnOnce(String) -> String) -> Self {
+        match self {
+            WingbeatError::InvalidInput {
+                field,
+                value,
+                allowed,
+            } => WingbeatError::InvalidInput {
+                field: f(field),
+                value,
+                allowed,
+            },
+            other => other,
+        }
+    }
+
     /// Shorthand for [`WingbeatError::InvalidInput`].
     pub fn invalid(
         field: impl Into<String>,

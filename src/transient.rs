@@ -139,18 +139,7 @@ impl TransientKinematics {
 /// A disturbance's error, its field (`disturbance.x`) renamed to the axis it is on
 /// (`disturbances.beta.x`).
 fn on_axis(e: WingbeatError, axis: &str) -> WingbeatError {
-    match e {
-        WingbeatError::InvalidInput {
-            field,
-            value,
-            allowed,
-        } => WingbeatError::InvalidInput {
-            field: field.replacen("disturbance", &format!("disturbances.{axis}"), 1),
-            value,
-            allowed,
-        },
-        other => other,
-    }
+    e.map_field(|field| field.replacen("disturbance", &format!("disturbances.{axis}"), 1))
 }
 
 /// [`TransientKinematics`] resolved for evaluation.

@@ -48,13 +48,18 @@ pub enum Filter {
 
 impl Filter {
     /// The published STA filter (ω_s = 1 rad/ms, δ = 5 ms, w = 4 ms, 40 ms window), causal.
-    pub const PUBLISHED: Filter = Filter::Sta {
-        omega_rad_per_ms: 1.0,
-        delay_ms: 5.0,
-        width_ms: 4.0,
-        window_ms: 40.0,
-        orientation: Orientation::Causal,
-    };
+    pub const PUBLISHED: Filter = Filter::published(Orientation::Causal);
+
+    /// The published STA filter laid over the past as `orientation` says.
+    pub const fn published(orientation: Orientation) -> Filter {
+        Filter::Sta {
+            omega_rad_per_ms: 1.0,
+            delay_ms: 5.0,
+            width_ms: 4.0,
+            window_ms: 40.0,
+            orientation,
+        }
+    }
 }
 
 /// The nonlinearity from filtered strain to output.

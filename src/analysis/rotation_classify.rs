@@ -254,22 +254,13 @@ impl ClassifyOptions {
 }
 
 fn rename(e: WingbeatError, from: &str, to: &str) -> WingbeatError {
-    match e {
-        WingbeatError::InvalidInput {
-            field,
-            value,
-            allowed,
-        } => WingbeatError::InvalidInput {
-            field: if field.starts_with(from) {
-                field.replacen(from, to, 1)
-            } else {
-                format!("{to} ({field})")
-            },
-            value,
-            allowed,
-        },
-        other => other,
-    }
+    e.map_field(|field| {
+        if field.starts_with(from) {
+            field.replacen(from, to, 1)
+        } else {
+            format!("{to} ({field})")
+        }
+    })
 }
 
 /// The two classes' sensor readings after encoding: rows are samples, columns sensors.

@@ -73,18 +73,7 @@ pub struct SweepOptions {
 /// (sweep value 0.3)`); other errors come back unchanged. Sweeps and resonance maps name the
 /// point that failed with it.
 pub fn in_context(e: WingbeatError, at: &str) -> WingbeatError {
-    match e {
-        WingbeatError::InvalidInput {
-            field,
-            value,
-            allowed,
-        } => WingbeatError::InvalidInput {
-            field: format!("{field} ({at})"),
-            value,
-            allowed,
-        },
-        other => other,
-    }
+    e.map_field(|field| format!("{field} ({at})"))
 }
 
 /// Names the sweep value in an input error.

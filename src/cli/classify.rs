@@ -128,26 +128,10 @@ fn options(a: &ClassifyArgs) -> Result<ClassifyOptions> {
             ))
         }
     };
-    let Filter::Sta {
-        omega_rad_per_ms,
-        delay_ms,
-        width_ms,
-        window_ms,
-        ..
-    } = Filter::PUBLISHED
-    else {
-        unreachable!("the published filter is an STA")
-    };
     Ok(ClassifyOptions {
         duration_s: a.duration,
         discard_s: a.discard,
-        filter: Filter::Sta {
-            omega_rad_per_ms,
-            delay_ms,
-            width_ms,
-            window_ms,
-            orientation,
-        },
+        filter: Filter::published(orientation),
         nonlinearity: Nonlinearity::Sigmoid {
             gain: a.gain,
             threshold: a.threshold,
