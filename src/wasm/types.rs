@@ -242,7 +242,7 @@ export interface ClassifyOptions {
   s0?: number | null; train_fraction?: number; threshold?: "gaussian_crossing" | "midpoint"; rank?: number; l1_weight?: number;
   kept_modes?: number[]; random_counts?: number[]; random_draws?: number; seed?: number;
 }
-/** What classifyRotation is asked; missing = the published setup (8 FE modes, 10 rad/s, disturbances 0.312 and 0.1 rad/s, 1 mm grid). */
+/** What classifyRotation is asked; missing = the published setup (8 FE modes, 10 rad/s, disturbances 0.312 and 0.1 rad/s) on a 2 mm grid (the browser's cap: 400 sensors). */
 export interface ClassifyRequest {
   n_modes?: number; mesh_size_mm?: number | null; rotation_rad_s?: number; flap_disturbance_rad_s?: number;
   rotation_disturbance_rad_s?: number; seed?: number; grid_step_mm?: number; options?: ClassifyOptions;

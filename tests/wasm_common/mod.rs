@@ -955,6 +955,7 @@ pub fn classify_rotation_matches_core() {
     );
     for (req, field) in [
         (r#"{"grid_step_mm": 0}"#, "request.grid_step_mm"),
+        (r#"{"grid_step_mm": 1}"#, "request.grid_step_mm"),
         (r#"{"rotation_rad_s": 1e9}"#, "request.rotation_rad_s"),
         (
             r#"{"options": {"train_fraction": 2}}"#,
