@@ -24,6 +24,22 @@ export async function loadReal() {
   return m;
 }
 
+/**
+ * The small test wing of the hostile-input tests: FE modes of a 30 × 8 mm rectangle, 2 modes,
+ * 4 mm elements, damping ratio `zeta`.
+ * @param {any} wb the wasm exports
+ * @param {number} zeta
+ */
+export function smallWing(wb, zeta) {
+  const planform_mm = [
+    [0, 0],
+    [0, -8],
+    [30, -8],
+    [30, 0],
+  ];
+  return wb.feModes({ planform_mm, n_modes: 2, mesh_size_mm: 4 }, zeta, undefined);
+}
+
 /** A loaded engine on the real wasm `wb` whose workers cannot start (it computes here). */
 export async function realEngine(wb) {
   const e = createEngine({

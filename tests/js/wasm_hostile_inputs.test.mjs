@@ -23,6 +23,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { prng } from './prng.mjs';
+import { smallWing } from './real_wasm.mjs';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 // WASM_HOSTILE_PKG: another build to try (e.g. one of an older commit, to see this test fail there).
@@ -268,20 +269,7 @@ function validArgs(wb) {
     [10, -5],
     [0, -5],
   ];
-  const fe = wb.feModes(
-    {
-      planform_mm: [
-        [0, 0],
-        [0, -8],
-        [30, -8],
-        [30, 0],
-      ],
-      n_modes: 2,
-      mesh_size_mm: 4,
-    },
-    0.01,
-    undefined,
-  );
+  const fe = smallWing(wb, 0.01);
   const nModes = fe.n_modes;
   const series = new Float64Array(256).map((_, i) => Math.sin(i / 5));
   const qs = Array.from({ length: nModes }, () => series.slice(0, 64));

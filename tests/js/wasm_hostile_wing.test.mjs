@@ -5,24 +5,11 @@
 // compute the valid air run afterwards, with the same result as before.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { loadReal } from './real_wasm.mjs';
+import { loadReal, smallWing } from './real_wasm.mjs';
 
 test('hostile wings are refused by name, never trap, and leave the instance working', async () => {
   const wb = await loadReal();
-  const fe = wb.feModes(
-    {
-      planform_mm: [
-        [0, 0],
-        [0, -8],
-        [30, -8],
-        [30, 0],
-      ],
-      n_modes: 2,
-      mesh_size_mm: 4,
-    },
-    0,
-    undefined,
-  );
+  const fe = smallWing(wb, 0);
   const cfg = {
     ...wb.defaultConfig(),
     modes: fe.modes,
