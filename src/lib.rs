@@ -57,6 +57,7 @@ pub mod kinematics;
 pub mod kinematics_table;
 pub mod model;
 pub mod modes_doc;
+pub mod parallel;
 pub mod params;
 pub mod presets;
 pub mod ranges;

@@ -5,7 +5,7 @@
 
 use nalgebra::{DMatrix, DVector};
 use wingbeat::analysis::sspoc::{
-    elastic_net_equality, leading_singular, sspoc, SensorCount, SspocConfig,
+    elastic_net_equality, leading_eigen, leading_singular, sspoc, SensorCount, SspocConfig,
 };
 
 mod normals_common;
@@ -55,15 +55,20 @@ fn the_randomised_svd_matches_a_full_svd() {
         (0..m).map(|k| 0.7_f64.powi(k as i32)),
     ));
     let x = &u * s * v.transpose();
-    let (uu, sv) = leading_singular(&x, 12, 4, 3);
-    for (k, val) in sv.iter().enumerate() {
-        let want = 0.7_f64.powi(k as i32);
-        assert!(
-            (val - want).abs() < 1e-10 * want.max(1e-3),
-            "σ_{k}: {val} vs {want}"
-        );
-        let cos = uu.column(k).dot(&u.column(k)).abs();
-        assert!((1.0 - cos) < 1e-9, "singular vector {k}: |cos| = {cos}");
+    // From the data, and from its Gram matrix X Xᵀ (the route SSPOC takes from the moments).
+    for (uu, sv) in [
+        leading_singular(&x, 12, 4, 3),
+        leading_eigen(&(&x * x.transpose()), 12, 4, 3),
+    ] {
+        for (k, val) in sv.iter().enumerate() {
+            let want = 0.7_f64.powi(k as i32);
+            assert!(
+                (val - want).abs() < 1e-10 * want.max(1e-3),
+                "σ_{k}: {val} vs {want}"
+            );
+            let cos = uu.column(k).dot(&u.column(k)).abs();
+            assert!((1.0 - cos) < 1e-9, "singular vector {k}: |cos| = {cos}");
+        }
     }
 }
 

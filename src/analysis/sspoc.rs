@@ -11,8 +11,10 @@
 //!    largest with |s_i| ≥ ‖s‖₂ / r.
 //!
 //! The singular vectors come from a seeded randomised subspace iteration (Halko, Martinsson &
-//! Tropp 2011) with power iterations, so the cost is a few products with X instead of a full SVD
-//! of a 1326 × 5400 matrix; its accuracy is checked against a full SVD in the tests.
+//! Tropp 2011): on the data itself ([`leading_singular`]) or, as the sweep takes them, on the
+//! p × p Gram matrix X Xᵀ assembled from the training moments ([`leading_eigen`],
+//! [`Moments::gram`]), which costs products with a 1326 × 1326 matrix instead of a
+//! 1326 × 5400 one; both are checked against a full SVD in the tests.
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
@@ -23,7 +25,7 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;
 
-use super::classify::{Discriminant, ThresholdRule};
+use super::classify::{Moments, ThresholdRule};
 use crate::{Result, WingbeatError};
 
 /// How many sensors SSPOC returns.
@@ -105,6 +107,40 @@ pub fn leading_singular(
     (
         u,
         order[..k].iter().map(|&i| svd.singular_values[i]).collect(),
+    )
+}
+
+/// The r leading eigenvectors of a symmetric positive semi-definite `g` (p × p) and the square
+/// roots of their eigenvalues, by seeded randomised subspace iteration (r + 10 columns, `power`
+/// products with g after the first) and Rayleigh–Ritz. With g = X Xᵀ these are X's r leading
+/// left singular vectors and values ([`leading_singular`]) at the cost of products with a p × p
+/// matrix instead of the p × n data.
+pub fn leading_eigen(
+    g: &DMatrix<f64>,
+    r: usize,
+    power: usize,
+    seed: u64,
+) -> (DMatrix<f64>, Vec<f64>) {
+    let p = g.nrows();
+    let l = (r + 10).min(p);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let omega = DMatrix::from_fn(p, l, |_, _| rng.sample::<f64, _>(StandardNormal));
+    let mut q = (g * omega).qr().q();
+    for _ in 0..power {
+        q = (g * &q).qr().q();
+    }
+    let t = q.transpose() * g * &q;
+    let eig = nalgebra::SymmetricEigen::new((&t + t.transpose()) * 0.5);
+    let mut order: Vec<usize> = (0..eig.eigenvalues.len()).collect();
+    order.sort_by(|&i, &j| eig.eigenvalues[j].total_cmp(&eig.eigenvalues[i]));
+    let k = r.min(order.len());
+    let u = q * DMatrix::from_fn(l, k, |i, j| eig.eigenvectors[(i, order[j])]);
+    (
+        u,
+        order[..k]
+            .iter()
+            .map(|&i| eig.eigenvalues[i].max(0.0).sqrt())
+            .collect(),
     )
 }
 
@@ -227,7 +263,19 @@ pub fn sspoc_sweep(
     cfg: &SspocConfig,
     kept_modes: &[usize],
 ) -> Result<Vec<Sspoc>> {
-    let p = class0.ncols();
+    sspoc_sweep_moments(&Moments::new(class0, class1)?, cfg, kept_modes)
+}
+
+/// [`sspoc_sweep`] from the training data's moments: the left singular vectors are the
+/// eigenvectors of X Xᵀ ([`Moments::gram`], [`leading_eigen`]) and the discriminant in mode
+/// space is fitted from the projected moments, so neither pass touches the samples.
+pub fn sspoc_sweep_moments(
+    moments: &Moments,
+    cfg: &SspocConfig,
+    kept_modes: &[usize],
+) -> Result<Vec<Sspoc>> {
+    let p = moments.features();
+    let [n0, n1] = moments.counts();
     for &k in kept_modes {
         check_config(
             &SspocConfig {
@@ -235,23 +283,14 @@ pub fn sspoc_sweep(
                 ..*cfg
             },
             p,
-            class0.nrows() + class1.nrows(),
+            n0 + n1,
         )?;
     }
-    let x = DMatrix::from_fn(p, class0.nrows() + class1.nrows(), |i, j| {
-        if j < class0.nrows() {
-            class0[(j, i)]
-        } else {
-            class1[(j - class0.nrows(), i)]
-        }
-    });
-    let (psi, sigma) = leading_singular(&x, cfg.rank, 4, cfg.seed);
+    let (psi, sigma) = leading_eigen(&moments.gram(), cfg.rank, 4, cfg.seed);
     let r = psi.ncols();
-    let lda = Discriminant::fit(
-        &(class0 * &psi),
-        &(class1 * &psi),
-        ThresholdRule::GaussianCrossing,
-    )?;
+    let lda = moments
+        .project(&psi)
+        .fit(None, ThresholdRule::GaussianCrossing)?;
     let w = &lda.direction;
     let mut ranked: Vec<usize> = (0..r).collect();
     ranked.sort_by(|&i, &j| (w[j].abs() * sigma[j]).total_cmp(&(w[i].abs() * sigma[i])));
