@@ -12,7 +12,7 @@
 //   any other subset: the sliders (controls, 250 px) as a sidebar beside the other panels —
 //           on the right when the 3-D wing is shown (it comes first, as in the template), else
 //           on the left; wide packs the other panels two per row, the broad ones (experiments,
-//           wing, studies, resonance, report, sensing) and a lone last one span both columns; the
+//           wing, studies, resonance, report, sensing, neural) and a lone last one span both columns; the
 //           3-D wing pairs with the guided experiments (the sensing screen).
 
 export const WIDE_AT = 1100;
@@ -35,6 +35,7 @@ export const TEMPLATES = {
       ['spectrum', 'spectrum', 'numbers'],
       ['modeshape', 'strain', 'strain'],
       ['sensing', 'sensing', 'sensing'],
+      ['neural', 'neural', 'neural'],
       ['studies', 'studies', 'studies'],
       ['resonance', 'resonance', 'resonance'],
       ['report', 'report', 'report'],
@@ -53,6 +54,7 @@ export const TEMPLATES = {
       ['modeshape', 'modeshape'],
       ['strain', 'strain'],
       ['sensing', 'sensing'],
+      ['neural', 'neural'],
       ['studies', 'studies'],
       ['resonance', 'resonance'],
       ['report', 'report'],
@@ -61,7 +63,7 @@ export const TEMPLATES = {
 };
 
 /** Panels that take a whole row of the main area in the sidebar layout. */
-export const BROAD = ['experiments', 'wing', 'studies', 'resonance', 'report', 'sensing'];
+export const BROAD = ['experiments', 'wing', 'studies', 'resonance', 'report', 'sensing', 'neural'];
 
 /**
  * The layout mode: `forced` (the `layout` attribute) wins, then `embed` (compact, one column),

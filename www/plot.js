@@ -56,7 +56,7 @@ let plotIds = 0;
 
 /**
  * @typedef {{ label: string, unit?: string, color: string, scale?: 'y' | 'y2', dash?: number[],
- *   width?: number, legend?: boolean, show?: boolean, with?: number[] }} SeriesSpec
+ *   width?: number, legend?: boolean, show?: boolean, with?: number[], points?: boolean, span?: boolean }} SeriesSpec
  * @typedef {{ x: number, label: string, color: string, dash?: number[], width?: number }} Marker
  * @typedef {{ x0: number, x1: number, label?: string, color?: string, fill?: string }} Band
  * @typedef {{
@@ -129,7 +129,11 @@ export function linePlot(parent, spec) {
       width: s.width ?? 1.25,
       dash: s.dash,
       scale: s.scale || 'y',
-      points: { show: false },
+      // `points`: markers only (a scatter, e.g. one accuracy per sensor set), no line.
+      points: s.points ? { show: true, size: 11, width: 1.5, fill: s.color, stroke: '#fff' } : { show: false },
+      ...(s.points ? { paths: () => null } : {}),
+      // `span`: a line through the points it has, across the x values it has none for.
+      ...(s.span ? { spanGaps: true } : {}),
       show: s.show !== false,
     })),
   ];

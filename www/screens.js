@@ -41,8 +41,8 @@ export const SCREENS = Object.freeze(
     {
       id: 'sensing',
       label: 'Sensing',
-      panels: ['wing3d', 'sensing', 'experiments'],
-      about: 'sensing a body rotation with strain sensors on the wing',
+      panels: ['wing3d', 'sensing', 'neural', 'experiments'],
+      about: 'sensing a body rotation with strain sensors on the wing, and as a neuron sees it',
     },
     {
       id: 'research',

@@ -79,6 +79,7 @@ export const PANELS = [
   'kinematics',
   'modeshape',
   'sensing',
+  'neural',
 ];
 
 /**

@@ -26,12 +26,22 @@ export const NEURAL_REQUEST = Object.freeze({
 /** Published (Mohren et al. 2018, Fig. 3; 1326 sensors, 100 runs): all sensors encoded and raw, 10 random sensors. */
 export const PUBLISHED = Object.freeze({ encoded: 0.9, raw: 0.488, random10: 0.631 });
 
+/** Published mean accuracy of random encoded sensor sets by size (Mohren et al. 2018, Fig. 3; docs/sensing.md). */
+export const PUBLISHED_RANDOM = Object.freeze([
+  Object.freeze({ sensors: 10, mean: 0.631 }),
+  Object.freeze({ sensors: 20, mean: 0.814 }),
+  Object.freeze({ sensors: 30, mean: 0.889 }),
+]);
+
+/** The study's request to the worker and its key in the page's study cache (www/lab/study-cache.js). */
+export const NEURAL_STUDY = Object.freeze({ kind: 'classify', opts: NEURAL_REQUEST });
+
 /**
  * The random-placement point with `n` sensors, or null.
  * @param {any} curves
  * @param {number} n
  */
-const randomAt = (curves, n) => curves.random.find((/** @type {any} */ p) => p.sensors === n) || null;
+export const randomAt = (curves, n) => curves.random.find((/** @type {any} */ p) => p.sensors === n) || null;
 
 /**
  * The most accurate SSPOC set of at most `n` sensors, or null.
@@ -45,7 +55,7 @@ export function bestSparse(curves, n) {
   return best;
 }
 
-const pct = (/** @type {number} */ x) => `${fmt(100 * x, 3)} %`;
+export const pct = (/** @type {number} */ x) => `${fmt(100 * x, 3)} %`;
 
 export const NEURAL_EXPERIMENTS = [
   {
@@ -54,7 +64,7 @@ export const NEURAL_EXPERIMENTS = [
     figure: 'beyond the paper',
     params: { modes: 'fe' },
     mode: 0,
-    study: { kind: 'classify', opts: NEURAL_REQUEST },
+    study: NEURAL_STUDY,
     look: 'The study worker flaps the published sensing plate (50 × 25 mm acrylic, 25 Hz) twice from rest, once still and once turning at 10 rad/s about its normal, with small random disturbances, and reads the spanwise strain at 338 points. Each reading is encoded as a neuron would (a spike-triggered-average filter, then a sigmoid), and a linear classifier learns from the first 90 % of the samples to tell turning from still; the last 10 % test it. Can raw strain do it? Can a few sensors? (The 3-D view keeps the lab’s own wing; the plate is computed apart.)',
     predict(/** @type {any} */ _a, /** @type {any} */ ctx = {}) {
       const r = ctx.study;

@@ -15,6 +15,7 @@ import * as wing from '../views/wing.js';
 import * as kinematics from '../views/kinematics.js';
 import * as modeshape from '../views/modeshape.js';
 import * as sensing from '../views/sensing.js';
+import * as neural from '../views/neural.js';
 
 /** The view of each panel, by name (www/state.js PANELS). */
 export const VIEWS = {
@@ -32,6 +33,7 @@ export const VIEWS = {
   kinematics,
   modeshape,
   sensing,
+  neural,
 };
 /** DOM (= tab) order of the panels; layout.js places them so that it is also the visual order. */
 export const LAYOUT = [
@@ -46,6 +48,7 @@ export const LAYOUT = [
   'modeshape',
   'strain',
   'sensing',
+  'neural',
   'studies',
   'resonance',
   'report',

@@ -10,6 +10,7 @@ import { plain, errorText } from '../format.js';
 import { LIVE_SEGMENT_LEN } from '../engine/requests.js';
 import { SCREENS, EXPERIMENT_SCREEN } from '../screens.js';
 import { EXPERIMENTS, experiment, experimentPatch, experimentQuery, predict } from '../experiments.js';
+import { study, studyKey, watchStudy } from '../lab/study-cache.js';
 
 export const title = 'Guided experiments';
 
@@ -50,7 +51,10 @@ export function mount(ctx) {
   const elsewhere = el('p', { class: 'wl-note wl-exp-elsewhere', hidden: true });
   section.append(list, elsewhere, detail, live);
 
-  const studies = new Map(); // key → { result, error, job }
+  /** The study keys this panel listens to (www/lab/study-cache.js) and how to stop. */
+  const watched = new Set();
+  /** @type {(() => void)[]} */
+  const unwatch = [];
   let lastAnnounced = '';
 
   /** Applies an experiment: exp=id and its parameters (experimentPatch: the same as its URL). */
@@ -61,7 +65,7 @@ export function mount(ctx) {
     refresh();
   }
 
-  function studyFor(e) {
+  function studyFor(e, restart = false) {
     if (!e.study) return null;
     const s = store.get();
     // `analyze`: the live analysis of the same state with the study's `params` (another
@@ -75,24 +79,13 @@ export function mount(ctx) {
     }
     const opts = compare ? { detrend: s.detrend, segment_len: LIVE_SEGMENT_LEN } : { ...e.study.opts };
     if (e.study.kind === 'icmap') opts.mode = Number(s.mode) - 1;
-    const key = `${e.study.kind}|${JSON.stringify(opts)}|${JSON.stringify(cfg)}`;
-    let entry = studies.get(key);
-    if (!entry) {
-      entry = { result: null, error: null };
-      studies.set(key, entry);
-      const job = engine.run(e.study.kind, compare ? { cfg, opts, k: Number(s.mode) - 1 } : { cfg, opts });
-      job.promise.then(
-        ({ result }) => {
-          entry.result = result;
-          refresh();
-        },
-        (err) => {
-          if (errorText(err) === 'cancelled')
-            studies.delete(key); // another study was cancelled: rerun later
-          else entry.error = errorText(err);
-          refresh();
-        },
-      );
+    const key = studyKey(e.study.kind, opts, cfg);
+    const entry = study(engine, e.study.kind, compare ? { cfg, opts, k: Number(s.mode) - 1 } : { cfg, opts }, key, {
+      restart,
+    });
+    if (!watched.has(key)) {
+      watched.add(key);
+      unwatch.push(watchStudy(key, () => refresh()));
     }
     return entry;
   }
@@ -120,6 +113,14 @@ export function mount(ctx) {
       pred.append(el('p', { class: 'wl-exp-label', text: 'The model predicts' }));
       for (const line of p.lines) pred.append(el('p', { class: 'wl-exp-line', rich: line }));
       if (entry && entry.error) pred.append(el('p', { class: 'wl-error', text: `The study failed: ${entry.error}` }));
+      if (entry && 'cancelled' in entry && entry.cancelled && !entry.result) {
+        const again = el('button', { type: 'button', class: 'wl-run', text: 'Run the study again' });
+        again.addEventListener('click', () => {
+          studyFor(e, true);
+          refresh();
+        });
+        pred.append(el('p', { class: 'wl-note', text: 'The study was cancelled. ' }, again));
+      }
       if (p.checks.length) {
         const ul = el('ul', {
           class: 'wl-exp-checks',
@@ -202,6 +203,7 @@ export function mount(ctx) {
     refresh,
     destroy() {
       unsub();
+      for (const f of unwatch) f();
     },
   };
 }
