@@ -279,6 +279,10 @@ pub struct TransientRun {
     pub q: Vec<[Vec<f64>; MAX_FORCES]>,
     /// Gauss steps per output interval.
     pub steps_per_sample: usize,
+    /// In a fluid ([`crate::aero::transient::run_in_air`]): per mode, the response to the
+    /// aerodynamic force alone (kg^½·m); empty in a vacuum.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub aerodynamic: Vec<Vec<f64>>,
 }
 
 impl TransientRun {
@@ -413,5 +417,6 @@ pub fn run(
         t: (0..n).map(|i| i as f64 * dt_s).collect(),
         q,
         steps_per_sample: m,
+        aerodynamic: Vec::new(),
     })
 }

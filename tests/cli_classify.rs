@@ -90,6 +90,36 @@ fn any_fe_wing_from_a_modes_file() {
 }
 
 #[test]
+fn in_air_the_runs_carry_the_air_and_the_json_says_so() {
+    // A short run of the plate in air against the same in a vacuum: the JSON names the density,
+    // and the raw strain's all-sensor accuracy moves (the air's force depends on the rotation).
+    let json = |rho: &str| {
+        let mut args = vec!["classify", "--air-density", rho];
+        args.extend(&SHORT[..8]);
+        args.extend(["--kept-modes", "2", "--counts", "1", "--draws", "2"]);
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 0, "{err}");
+        serde_json::from_str::<serde_json::Value>(&out).unwrap()
+    };
+    let (air, vac) = (json("1.2"), json("0"));
+    assert_eq!(air["air_density_kg_m3"], 1.2);
+    assert_eq!(vac["air_density_kg_m3"], 0.0);
+    let raw = |v: &serde_json::Value| v["report"]["raw"]["all_sensors"].as_f64().unwrap();
+    let enc = |v: &serde_json::Value| v["report"]["encoded"]["all_sensors"].as_f64().unwrap();
+    for v in [&air, &vac] {
+        assert!((0.0..=1.0).contains(&raw(v)) && (0.0..=1.0).contains(&enc(v)));
+    }
+    assert!(
+        raw(&air) != raw(&vac) || enc(&air) != enc(&vac),
+        "air changed nothing: raw {} / {}, encoded {} / {}",
+        raw(&air),
+        raw(&vac),
+        enc(&air),
+        enc(&vac)
+    );
+}
+
+#[test]
 fn bad_flags_are_named() {
     for (flag, value, named) in [
         ("--kept-modes", "0", "--kept-modes"),
@@ -103,6 +133,8 @@ fn bad_flags_are_named() {
         ("--draws", "0", "options.random_draws"),
         ("--discard", "9", "options.discard_s"),
         ("--gain", "0", "options.nonlinearity.gain"),
+        ("--air-density", "-1", "--air-density"),
+        ("--air-density", "2000", "--air-density"),
     ] {
         let (code, _, err) = run(&["classify", flag, value]);
         assert_ne!(code, 0, "{flag} {value}");

@@ -40,6 +40,7 @@ pub mod floquet;
 pub mod nonlinear;
 pub mod ode;
 pub mod simulate;
+pub mod transient;
 pub mod wing;
 
 use crate::error::{check_range, Result, WingbeatError};

@@ -11,6 +11,7 @@ use crate::kinematics::Compiled;
 use crate::model::{coefficients, stiffness_coefficient, Mode};
 use crate::solve::coupled::CoupledOde;
 use crate::solve::ModalOde;
+use crate::transient::CompiledTransient;
 use std::f64::consts::PI;
 
 /// Forcing columns of [`AirOde`].
@@ -55,6 +56,9 @@ pub struct AirOde<'a> {
     /// The loads tabulated over one period ([`AirOde::tabulate`]); `None`: every evaluation
     /// computes them over the quadrature.
     pub table: Option<std::sync::Arc<LoadTable>>,
+    /// Non-periodic kinematics ([`AirOde::new_transient`]): the state at t comes from them
+    /// instead of `kin` (then their periodic flapping), and nothing is tabulated.
+    pub transient: Option<&'a CompiledTransient>,
 }
 
 /// The instants in [0, T) where the frame's rates (Ω, γ̇) all vanish: local minima of
@@ -163,6 +167,7 @@ impl<'a> AirOde<'a> {
             damping_scale: 0.0,
             kinks: rest_instants(kin),
             table: None,
+            transient: None,
         };
         let t = ode.period();
         let (mut b, mut c, mut f) = (vec![0.0; n * n], vec![0.0; n * n], vec![0.0; 5 * n]);
@@ -193,13 +198,51 @@ impl<'a> AirOde<'a> {
             damping_scale: self.damping_scale,
             kinks: self.kinks.clone(),
             table: self.table.clone(),
+            transient: self.transient,
+        }
+    }
+
+    /// The system under non-periodic kinematics ([`crate::transient`]): set up on their
+    /// periodic flapping, then evaluated at `kin.state(t)`. Nothing repeats, so there are no
+    /// rest instants to mark and no load table; the damping scale of the step rule is the
+    /// largest ‖C(t)‖∞ over 512 instants of [0, `duration_s`], the disturbances included.
+    pub fn new_transient(
+        kin: &'a CompiledTransient,
+        modes: &'a [Mode],
+        wing: &'a AeroWing,
+        aero: &AeroConfig,
+        duration_s: f64,
+    ) -> Result<Self> {
+        let mut ode = AirOde::new(&kin.flapping, modes, wing, aero)?;
+        ode.transient = Some(kin);
+        ode.kinks.clear();
+        let n = modes.len();
+        let (mut b, mut c, mut f) = (vec![0.0; n * n], vec![0.0; n * n], vec![0.0; 5 * n]);
+        for j in 0..=512 {
+            ode.eval(j as f64 * duration_s / 512.0, &mut b, &mut c, &mut f);
+            for r in 0..n {
+                let row: f64 = (0..n).map(|col| c[r * n + col].abs()).sum();
+                ode.damping_scale = ode.damping_scale.max(row);
+            }
+        }
+        Ok(ode)
+    }
+
+    /// The kinematic state at t: the non-periodic kinematics' where there are some.
+    fn state(&self, t: f64) -> crate::kinematics::RateState {
+        match self.transient {
+            Some(k) => k.state(t),
+            None => self.kin.state(t),
         }
     }
 
     /// Tabulates the loads over one period ([`LoadTable`]); [`CoupledOde::eval`] reads them
-    /// there from then on.
+    /// there from then on. Not for non-periodic kinematics (their loads do not repeat): then
+    /// nothing is tabulated.
     pub fn tabulate(&mut self) {
-        self.table = Some(std::sync::Arc::new(LoadTable::build(self)));
+        if self.transient.is_none() {
+            self.table = Some(std::sync::Arc::new(LoadTable::build(self)));
+        }
     }
 
     /// The aerodynamic damping matrix C_a(t) (N × N, 1/s) and force F_A(t), unscaled by M⁻¹:
@@ -216,7 +259,7 @@ impl<'a> AirOde<'a> {
 
     /// C_a(t) and F_A(t) as [`AirOde::loads`], always summed over the quadrature.
     pub fn exact_loads(&self, t: f64, force: &mut [f64], damping: &mut [f64]) {
-        let s = self.kin.state(t);
+        let s = self.state(t);
         let fs = FrameState::from_state(&s);
         force.fill(0.0);
         damping.fill(0.0);
@@ -237,7 +280,7 @@ impl CoupledOde for AirOde<'_> {
     }
     fn eval(&self, t: f64, b: &mut [f64], c: &mut [f64], f: &mut [f64]) {
         let n = self.modes.len();
-        let s = self.kin.state(t);
+        let s = self.state(t);
         let sc = stiffness_coefficient(&s);
         let mut fa = [0.0; crate::model::MAX_MODES];
         let fa = &mut fa[..n];
@@ -302,8 +345,11 @@ impl CoupledOde for AirOde<'_> {
     }
     fn freq_scale(&self) -> f64 {
         let w = self.modes.iter().map(Mode::omega).fold(0.0, f64::max);
-        w.max(4.0 * self.max_harmonic * self.kin.wd)
-            .max(self.damping_scale)
+        let forcing = match self.transient {
+            Some(k) => k.freq_scale(),
+            None => 4.0 * self.max_harmonic * self.kin.wd,
+        };
+        w.max(forcing).max(self.damping_scale)
     }
 }
 

@@ -43,6 +43,9 @@ pub struct ClassifyCase {
     pub classes: [TransientKinematics; 2],
     /// The sensors.
     pub sensors: Vec<Sensor>,
+    /// A fluid the wing flaps in (its mesh and mode shapes for the loads, and the medium);
+    /// `None`: a vacuum.
+    pub air: Option<(crate::aero::WingGeometry, crate::aero::AeroConfig)>,
 }
 
 /// How the runs are sampled, encoded and classified.
@@ -483,7 +486,17 @@ pub fn classify_with_progress(
     // The two classes' runs share nothing: on a native target they run at once. Each keeps
     // every mode's total response, the first `n` samples.
     let class_run = |kin: &CompiledTransient| -> Result<Vec<Vec<f64>>> {
-        let run = transient::run(kin, &case.modes, opts.duration_s, opts.sample_step_s)?;
+        let run = match &case.air {
+            None => transient::run(kin, &case.modes, opts.duration_s, opts.sample_step_s)?,
+            Some((geom, aero)) => crate::aero::transient::run_in_air(
+                kin,
+                &case.modes,
+                geom,
+                aero,
+                opts.duration_s,
+                opts.sample_step_s,
+            )?,
+        };
         Ok((0..case.modes.len())
             .map(|k| run.total(k)[..n].to_vec())
             .collect())
@@ -626,7 +639,19 @@ pub fn fe_case(
         modes,
         classes,
         sensors: spanwise_sensors(fe, points_mm)?,
+        air: None,
     })
+}
+
+/// `case` flapping in the fluid `aero` (density > 0; checked with the run) on the FE wing
+/// `fe` it was built from: the loads of [`crate::aero`] from the wing's mesh and mode shapes.
+pub fn in_fluid(
+    mut case: ClassifyCase,
+    fe: &crate::fem::FemModes,
+    aero: crate::aero::AeroConfig,
+) -> ClassifyCase {
+    case.air = Some((crate::aero::WingGeometry::from_fem(fe), aero));
+    case
 }
 
 /// The published setup on wingbeat's shell FE: the plate of [`crate::presets::mohren2018_plate_input`]

@@ -273,6 +273,54 @@ impl Work {
     }
 }
 
+/// Steps `ode` from rest (q = q̇ = 0 at t = 0) with `m` Gauss steps in each of `intervals`
+/// intervals of `dt`, the same order-8 step as the propagator, and calls `sample(i, x)` at
+/// t = i·dt (i = 0 … `intervals`) with the 2N-state [q, q̇] of each forcing column, column j at
+/// `x[j·2N .. (j + 1)·2N]`. For kinematics that do not repeat ([`crate::transient`]): no
+/// period is reused, every step is taken.
+pub fn step_from_rest<O: CoupledOde + ?Sized>(
+    ode: &O,
+    dt: f64,
+    intervals: usize,
+    m: usize,
+    mut sample: impl FnMut(usize, &[f64]),
+) -> Result<()> {
+    let (n, nf) = (ode.n_modes(), ode.n_forces());
+    let d = 2 * n;
+    let ncol = d + nf;
+    let mut work = Work::new(n, nf);
+    let mut x = vec![0.0; nf * d];
+    let mut next = vec![0.0; d];
+    let h = dt / m.max(1) as f64;
+    sample(0, &x);
+    for i in 0..intervals {
+        for k in 0..m.max(1) {
+            work.step(ode, i as f64 * dt + k as f64 * h, h)?;
+            for j in 0..nf {
+                let xj = &mut x[j * d..(j + 1) * d];
+                for (r, out) in next.iter_mut().enumerate() {
+                    let row = &work.rp[r * ncol..(r + 1) * ncol];
+                    *out = row[d + j]
+                        + row[..d]
+                            .iter()
+                            .zip(xj.iter())
+                            .map(|(a, b)| a * b)
+                            .sum::<f64>();
+                }
+                xj.copy_from_slice(&next);
+            }
+        }
+        if x.iter().any(|v| !v.is_finite()) {
+            return Err(WingbeatError::NonFinite {
+                what: "coupled run from rest".into(),
+                detail: format!("the state is not finite at t = {} s", (i + 1) as f64 * dt),
+            });
+        }
+        sample(i + 1, &x);
+    }
+    Ok(())
+}
+
 /// S ← [R | P] applied to the affine state S = [Φ | p] (d rows, `ncol` = d + n_forces columns,
 /// row-major): Φ ← R Φ, p_j ← R p_j + P_j. `tmp` is scratch of the same size.
 fn compose(rp: &[f64], st: &mut [f64], d: usize, ncol: usize, tmp: &mut [f64]) {
