@@ -355,6 +355,17 @@ pub fn check_run_cost(
     Ok((n, m))
 }
 
+/// At least one mode, each valid (errors name `modes` or the mode).
+pub fn check_modes(modes: &[Mode]) -> Result<()> {
+    if modes.is_empty() {
+        return Err(WingbeatError::invalid("modes", 0, "at least one mode"));
+    }
+    for (i, m) in modes.iter().enumerate() {
+        m.validate(i)?;
+    }
+    Ok(())
+}
+
 /// Steps every mode of Eq. 13 from rest (q = q̇ = 0 at t = 0) over `duration_s`, sampling every
 /// `dt_s`. The kinematics are evaluated once per stage time and shared by all modes.
 pub fn run(
@@ -363,12 +374,7 @@ pub fn run(
     duration_s: f64,
     dt_s: f64,
 ) -> Result<TransientRun> {
-    if modes.is_empty() {
-        return Err(WingbeatError::invalid("modes", 0, "at least one mode"));
-    }
-    for (i, m) in modes.iter().enumerate() {
-        m.validate(i)?;
-    }
+    check_modes(modes)?;
     let (n, m) = check_run_cost(kin, modes, duration_s, dt_s)?;
     let h = dt_s / m as f64;
     let tab = Tableau::new();

@@ -9,7 +9,7 @@ use super::ode::{AirOde, AERODYNAMIC, CENTRIFUGAL, CORIOLIS, EULER, TOTAL};
 use super::{AeroConfig, AeroWing, WingGeometry};
 use crate::model::Mode;
 use crate::solve::coupled::{coupled_omega_h, step_from_rest, CoupledOde};
-use crate::transient::{check_run_cost, CompiledTransient, TransientRun};
+use crate::transient::{check_modes, check_run_cost, CompiledTransient, TransientRun};
 use crate::{Result, WingbeatError};
 
 /// Most multiply-adds of one run in a fluid: about 90 s natively (measured 2026-12-02: the
@@ -55,12 +55,7 @@ pub fn run_in_air(
     duration_s: f64,
     dt_s: f64,
 ) -> Result<TransientRun> {
-    if modes.is_empty() {
-        return Err(WingbeatError::invalid("modes", 0, "at least one mode"));
-    }
-    for (i, m) in modes.iter().enumerate() {
-        m.validate(i)?;
-    }
+    check_modes(modes)?;
     aero.validate()?;
     if aero.is_vacuum() {
         return Err(WingbeatError::invalid(
