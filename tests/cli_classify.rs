@@ -33,8 +33,8 @@ fn a_short_published_run_through_the_binary() {
     assert_eq!(code, 0, "{err}");
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines[0], "strain,placement,kept_modes,sensors,accuracy,sd");
-    // Per strain: all sensors, 2 SSPOC rows, 2 random rows.
-    assert_eq!(lines.len(), 1 + 2 * 5, "{out}");
+    // Per strain: all sensors, 2 SSPOC rows, 2 random rows, 2 greedy d′ rows.
+    assert_eq!(lines.len(), 1 + 2 * 7, "{out}");
     assert!(lines[1].starts_with("encoded,all,,1326,"), "{}", lines[1]);
     for l in &lines[1..] {
         let acc: f64 = l.split(',').nth(4).unwrap().parse().unwrap();

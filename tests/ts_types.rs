@@ -184,7 +184,7 @@ fn lab_wing_types_match_serde() {
 #[test]
 fn classify_types_match_serde() {
     use wingbeat::analysis::rotation_classify::{
-        ClassifyOptions, ClassifyReport, Curves, RandomPoint, SparsePoint,
+        ClassifyOptions, ClassifyReport, Curves, GreedyPoint, RandomPoint, SparsePoint,
     };
     let i = ts_common::interfaces(ts_common::declarations());
     let opts = ClassifyOptions {
@@ -205,10 +205,17 @@ fn classify_types_match_serde() {
     };
     ts_common::check(&i, "SparsePoint", &keys(&sparse));
     ts_common::check(&i, "RandomPoint", &keys(&random));
+    let greedy = GreedyPoint {
+        sensors: vec![4, 1],
+        d_prime: 1.5,
+        accuracy: 0.7,
+    };
+    ts_common::check(&i, "GreedyPoint", &keys(&greedy));
     let curves = Curves {
         all_sensors: 0.9,
         sparse: vec![sparse],
         random: vec![random],
+        greedy: vec![greedy],
         s0: 1e-4,
     };
     ts_common::check(&i, "ClassifyCurves", &keys(&curves));

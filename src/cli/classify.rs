@@ -56,7 +56,7 @@ pub struct ClassifyArgs {
     /// SSPOC's kept modes, a list or ranges: `1-30`, `2,5,10`.
     #[arg(long, default_value = "1-30")]
     kept_modes: String,
-    /// Sensor counts for random placement, a list or ranges.
+    /// Sensor counts for random placement and for the greedy d′ sets, a list or ranges.
     #[arg(long, default_value = "1-30")]
     counts: String,
     /// Where the STA kernel is laid: causal (the STA convention) or published-code (as the
@@ -246,6 +246,13 @@ fn csv(r: &ClassifyReport) -> String {
             out.push_str(&format!(
                 "{name},random,,{},{:.6},{:.6}\n",
                 p.sensors, p.mean, p.sd
+            ));
+        }
+        for p in &c.greedy {
+            out.push_str(&format!(
+                "{name},greedy,,{},{:.6},\n",
+                p.sensors.len(),
+                p.accuracy
             ));
         }
     }

@@ -252,7 +252,8 @@ export interface SparsePoint { kept_modes: number; sensors: number[]; accuracy: 
 /** Random sets of one size: mean and sd of the test accuracy over the draws. */
 export interface RandomPoint { sensors: number; mean: number; sd: number; failed_fits: number }
 /** Accuracy against the number of sensors for one representation of the strain. */
-export interface ClassifyCurves { all_sensors: number; sparse: SparsePoint[]; random: RandomPoint[]; s0: number }
+export interface GreedyPoint { sensors: number[]; d_prime: number; accuracy: number }
+export interface ClassifyCurves { all_sensors: number; sparse: SparsePoint[]; random: RandomPoint[]; greedy: GreedyPoint[]; s0: number }
 /** The classification (core ClassifyReport); accuracies are fractions of test samples (chance 0.5), positions mm. */
 export interface ClassifyReport {
   options: ClassifyOptions; train_samples: number; test_samples: number; encoded: ClassifyCurves; raw: ClassifyCurves;

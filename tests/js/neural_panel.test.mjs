@@ -5,7 +5,14 @@
 // Run: node --test tests/js/neural_panel.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { curveColumns, comparisonRows, sparseChoices, sensorWords, neuralWords } from '../../www/views/neural-data.js';
+import {
+  curveColumns,
+  comparisonRows,
+  setChoices,
+  setOf,
+  sensorWords,
+  neuralWords,
+} from '../../www/views/neural-data.js';
 import { study, peekStudy, watchStudy, cancelStudy, studyKey } from '../../www/lab/study-cache.js';
 import { NEURAL_STUDY, NEURAL_REQUEST } from '../../www/experiments/neural.js';
 
@@ -22,11 +29,20 @@ const curves = {
     { kept_modes: 10, sensors: [1, 2, 3], accuracy: 0.8 },
     { kept_modes: 15, sensors: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11], accuracy: 0.85 },
   ],
+  greedy: [
+    { sensors: [7], d_prime: 0.1, accuracy: 0.52 },
+    { sensors: [7, 3, 8, 1, 0], d_prime: 1.2, accuracy: 0.75 },
+  ],
 };
 
 test('the curve columns: x the sizes with a point, random mean ± sd, the best SSPOC set per size, all sensors, the published points', () => {
-  const [x, mean, hi, lo, sparse, all, pub] = curveColumns(curves, true);
-  assert.deepEqual(x, [1, 3, 5, 10, 11, 20, 30], 'random sizes, SSPOC sizes (3, 11) and the published 10, 20, 30');
+  const [x, mean, hi, lo, sparse, all, pub, greedy] = curveColumns(curves, true);
+  assert.deepEqual(
+    x,
+    [1, 3, 5, 10, 11, 20, 30],
+    'random sizes, SSPOC sizes (3, 11), greedy (1, 5) and the published 10, 20, 30',
+  );
+  assert.deepEqual(greedy, [52, null, 75, null, null, null, null]);
   assert.deepEqual(mean, [50, null, 55, null, null, null, 90]);
   assert.deepEqual(hi, [51, null, 59, null, null, null, 100], 'mean + sd, capped at 100 %');
   assert.deepEqual(lo, [49, null, 51, null, null, null, 70]);
@@ -50,11 +66,22 @@ test('the comparison rows and the set chooser say the report’s numbers', () =>
   assert.deepEqual(rows[1].slice(0, 2), ['1 random sensor (mean)', '50.0 %']);
   assert.equal(rows[2][1], '—', 'no 10-sensor random point in this report');
   assert.equal(rows[2][3], '63.1 %');
-  assert.equal(rows[4][1], '85.0 % (11 sensors)', 'best SSPOC set of at most 15 sensors');
+  assert.deepEqual(rows[4].slice(0, 2), ['greedy d′ set of 10 sensors', '—'], 'no 10-sensor greedy set here');
+  assert.equal(rows[5][1], '85.0 % (11 sensors)', 'best SSPOC set of at most 15 sensors');
+  const choices = setChoices(curves);
   assert.deepEqual(
-    sparseChoices(curves).map((c) => c.text),
-    ['5 modes kept: 3 sensors, 70.0 %', '10 modes kept: 3 sensors, 80.0 %', '15 modes kept: 11 sensors, 85.0 %'],
+    choices.map((c) => c.text),
+    [
+      'SSPOC, 5 modes kept: 3 sensors, 70.0 %',
+      'SSPOC, 10 modes kept: 3 sensors, 80.0 %',
+      'SSPOC, 15 modes kept: 11 sensors, 85.0 %',
+      'greedy d′: 1 sensor, 52.0 %',
+      'greedy d′: 5 sensors, 75.0 %',
+    ],
   );
+  assert.deepEqual(setOf(curves, choices[4].value).sensors, [7, 3, 8, 1, 0]);
+  assert.equal(setOf(curves, choices[1].value).accuracy, 0.8);
+  assert.equal(setOf(curves, 'nonsense:1'), null);
   const pos = [
     [0, 0],
     [4, -2],

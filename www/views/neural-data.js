@@ -8,7 +8,8 @@ import { PUBLISHED, PUBLISHED_RANDOM, bestSparse, randomAt } from '../experiment
 /**
  * @typedef {{ sensors: number, mean: number, sd: number, failed_fits: number }} RandomPoint
  * @typedef {{ kept_modes: number, sensors: number[], accuracy: number }} SparsePoint
- * @typedef {{ all_sensors: number, sparse: SparsePoint[], random: RandomPoint[], s0: number }} Curves
+ * @typedef {{ sensors: number[], d_prime: number, accuracy: number }} GreedyPoint
+ * @typedef {{ all_sensors: number, sparse: SparsePoint[], random: RandomPoint[], greedy?: GreedyPoint[], s0: number }} Curves
  */
 
 /** Which strain the panel shows: the encoder's output or the raw strain. */
@@ -19,9 +20,10 @@ export const STRAINS = Object.freeze([
 
 /**
  * The plot's columns for one representation: x the sensor counts that carry a point (random
- * sets, SSPOC sets, the published random points), then per x the random mean, mean ± sd, the
- * SSPOC accuracy (the best set of that size), the all-sensor accuracy and the published
- * random mean (encoded only); null where a series has no point. Accuracies in %.
+ * sets, SSPOC sets, greedy d′ sets, the published random points), then per x the random mean,
+ * mean ± sd, the SSPOC accuracy (the best set of that size), the all-sensor accuracy, the
+ * published random mean (encoded only) and the greedy d′ set's accuracy; null where a series
+ * has no point. Accuracies in %.
  * @param {Curves} c
  * @param {boolean} published whether the published points belong (encoded strain)
  * @returns {(number | null)[][]}
@@ -30,6 +32,7 @@ export function curveColumns(c, published) {
   const xs = new Set();
   for (const r of c.random) xs.add(r.sensors);
   for (const s of c.sparse) xs.add(s.sensors.length);
+  for (const g of c.greedy || []) xs.add(g.sensors.length);
   if (published) for (const p of PUBLISHED_RANDOM) xs.add(p.sensors);
   const x = [...xs].filter((v) => v >= 1).sort((a, b) => a - b);
   const pct = (/** @type {number} */ v) => Math.round(1e4 * v) / 100;
@@ -57,18 +60,51 @@ export function curveColumns(c, published) {
       const p = published ? PUBLISHED_RANDOM.find((q) => q.sensors === n) : null;
       return p ? pct(p.mean) : null;
     }),
+    col((n) => {
+      const g = (c.greedy || []).find((q) => q.sensors.length === n);
+      return g ? pct(g.accuracy) : null;
+    }),
   ];
 }
 
 /**
- * The SSPOC sets, one per kept-mode count, as the panel's chooser lists them.
+ * The sensor sets the panel's chooser lists: SSPOC's, one per kept-mode count, then the
+ * greedy d′ sets, one per size. `value` is "sspoc:<i>" or "greedy:<i>".
  * @param {Curves} c
  */
-export function sparseChoices(c) {
-  return c.sparse.map((s, i) => ({
-    index: i,
-    text: `${s.kept_modes} modes kept: ${s.sensors.length} sensor${s.sensors.length === 1 ? '' : 's'}, ${fmtPct(s.accuracy)}`,
-  }));
+export function setChoices(c) {
+  const n = (/** @type {number} */ k) => `${k} sensor${k === 1 ? '' : 's'}`;
+  return [
+    ...c.sparse.map((s, i) => ({
+      value: `sspoc:${i}`,
+      text: `SSPOC, ${s.kept_modes} modes kept: ${n(s.sensors.length)}, ${fmtPct(s.accuracy)}`,
+    })),
+    ...(c.greedy || []).map((g, i) => ({
+      value: `greedy:${i}`,
+      text: `greedy d′: ${n(g.sensors.length)}, ${fmtPct(g.accuracy)}`,
+    })),
+  ];
+}
+
+/**
+ * The set a chooser value names, or null.
+ * @param {Curves} c
+ * @param {string} value
+ * @returns {{ sensors: number[], accuracy: number } | null}
+ */
+export function setOf(c, value) {
+  const [kind, i] = value.split(':');
+  const list = kind === 'greedy' ? c.greedy || [] : kind === 'sspoc' ? c.sparse : [];
+  return list[Number(i)] || null;
+}
+
+/**
+ * @param {Curves} c
+ * @param {number} k
+ */
+function greedyCell(c, k) {
+  const g = (c.greedy || []).find((q) => q.sensors.length === k);
+  return g ? fmtPct(g.accuracy) : '—';
 }
 
 /** @param {number} v a fraction */
@@ -104,6 +140,7 @@ export function comparisonRows(rep) {
     [...rnd(1), '50 % (chance)'],
     [...rnd(10), pub10 ? fmtPct(pub10.mean) : '—'],
     [...rnd(30), pub30 ? fmtPct(pub30.mean) : '—'],
+    ['greedy d′ set of 10 sensors', greedyCell(rep.encoded, 10), greedyCell(rep.raw, 10), '—'],
     [
       'best SSPOC set of at most 15 sensors',
       best ? `${fmtPct(best.accuracy)} (${best.sensors.length} sensors)` : '—',

@@ -14,7 +14,7 @@ import { fmt } from '../format.js';
 import { linePlot } from '../plot.js';
 import { NEURAL_STUDY, bestSparse } from '../experiments/neural.js';
 import { study, peekStudy, watchStudy, cancelStudy, studyKey } from '../lab/study-cache.js';
-import { STRAINS, curveColumns, sparseChoices, comparisonRows, sensorWords, neuralWords } from './neural-data.js';
+import { STRAINS, curveColumns, setChoices, setOf, comparisonRows, sensorWords, neuralWords } from './neural-data.js';
 import { drawPlate, CHOSEN } from './neural-plate.js';
 
 export const title = 'As a neuron sees it';
@@ -72,6 +72,7 @@ export function mount(ctx) {
       { label: 'SSPOC sets', color: CHOSEN, points: true },
       { label: 'all sensors', color: '#2a7f3f', dash: [6, 3], width: 1.5 },
       { label: 'published random (Mohren 2018)', color: '#222', points: true },
+      { label: 'greedy d′ sets', color: '#7b3294', width: 1.5, span: true },
     ],
     keys: false,
     height: 220,
@@ -79,7 +80,7 @@ export function mount(ctx) {
   ctx.registerPlot('neural-accuracy', plot);
   const words = el('p', { class: 'wl-note' });
   body.append(words);
-  body.append(el('h3', { class: 'wl-smap-title', text: 'Where SSPOC put the sensors' }));
+  body.append(el('h3', { class: 'wl-smap-title', text: 'Where the chosen sensors sit' }));
   const chooser = /** @type {HTMLSelectElement} */ (el('select', { id: ctx.id('neural-set') }));
   chooser.addEventListener('change', () => drawSet());
   body.append(el('p', { class: 'wl-neural-pick' }, el('label', { for: chooser.id, text: 'Sensor set: ' }), chooser));
@@ -100,14 +101,14 @@ export function mount(ctx) {
     const rep = report();
     if (!rep) return;
     const c = rep[strain()];
-    const set = c.sparse[Number(chooser.value)] || null;
+    const set = setOf(c, chooser.value);
     const idx = set ? set.sensors : [];
     drawPlate(canvas, rep.sensors, idx, section.clientWidth - 24 || 600);
     const where = sensorWords(idx, rep.sensors);
     canvas.setAttribute('aria-label', `The plate, root on the left, with the chosen sensor set: ${where}`);
     setWords.textContent = set
       ? `${where}. Test accuracy with them: ${fmt(100 * set.accuracy, 3)} %.`
-      : 'No SSPOC set.';
+      : 'No sensor set.';
     section.dataset.neuralSet = String(idx.length);
   }
 
@@ -122,11 +123,9 @@ export function mount(ctx) {
       `${which} strain: all ${rep.sensors.length} sensors ${fmt(100 * c.all_sensors, 3)} %; one random sensor ${one ? fmt(100 * one.mean, 3) : '—'} %.`,
     );
     words.textContent = neuralWords(rep, which);
-    const choices = sparseChoices(c);
     const best = bestSparse(c, 15);
-    chooser.replaceChildren(...choices.map((o) => el('option', { value: String(o.index), text: o.text })));
-    const pick = best ? c.sparse.indexOf(best) : 0;
-    chooser.value = String(Math.max(0, pick));
+    chooser.replaceChildren(...setChoices(c).map((o) => el('option', { value: o.value, text: o.text })));
+    chooser.value = `sspoc:${Math.max(0, best ? c.sparse.indexOf(best) : 0)}`;
     drawSet();
     table.replaceChildren(
       el(
