@@ -40,6 +40,10 @@ mkdir -p "$dest/vendor"
 cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css "$dest/vendor/"
 cp node_modules/uplot/LICENSE "$dest/vendor/uPlot.LICENSE" 2>/dev/null || true
 
+# Brotli and gzip copies of the wasm, its glue and the vendor files, which scripts/serve.mjs sends
+# to browsers that accept them (the first visit's bytes, issue 25).
+node scripts/precompress.mjs "$dest"
+
 # The service worker's precache list (www/sw.js): the real files of this folder, written after
 # everything else is in place (the dist/ extras below are left out by the script itself).
 node scripts/precache-manifest.mjs "$dest"

@@ -20,7 +20,8 @@ const SKIP_NAMES = new Set([
   '.gitignore',
   'package.json',
 ]);
-const SKIP_ENDINGS = ['.d.ts', '.map', '.tmp'];
+// .br / .gz: scripts/precompress.mjs's copies, sent by the server in place of the file.
+const SKIP_ENDINGS = ['.d.ts', '.map', '.tmp', '.br', '.gz'];
 
 /**
  * The files of `dir` to precache, relative paths with '/' separators, sorted.

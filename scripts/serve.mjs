@@ -2,6 +2,8 @@
 // A tiny static file server for the lab (no dependencies): 127.0.0.1 only, GET/HEAD only,
 // no directory listings, no path traversal, correct MIME types (application/wasm matters for
 // WebAssembly.instantiateStreaming). Plain static hosting: no COOP/COEP headers are needed.
+// A file with a precompressed copy (scripts/precompress.mjs: file.br, file.gz) is sent as that
+// copy, with Content-Encoding, to a browser that accepts it (Vary: Accept-Encoding).
 //   node scripts/serve.mjs [root=www] [port=$PORT|8080] [--cors]   (port 0 = any free port)
 // --cors (or startServer(root, port, { cors: true })) adds `Access-Control-Allow-Origin: *`,
 // what a lab host must send when course pages on other origins load lab.js, its modules, the
@@ -24,6 +26,39 @@ const MIME = {
   '.md': 'text/plain; charset=utf-8',
   '.txt': 'text/plain; charset=utf-8',
 };
+
+/**
+ * Precompressed copies a file may have (scripts/precompress.mjs writes them), in the order they
+ * are preferred: [file suffix, Content-Encoding].
+ */
+export const ENCODINGS = Object.freeze([Object.freeze(['.br', 'br']), Object.freeze(['.gz', 'gzip'])]);
+
+/**
+ * The copy of `file` (stat `st`) to send for the request's Accept-Encoding: the first of
+ * ENCODINGS the browser accepts (q > 0) whose copy exists and is not older than the file, else
+ * the file itself. Returns { path, size, encoding } (encoding null: as is).
+ * @param {string} file
+ * @param {fs.Stats} st
+ * @param {string | undefined} accept
+ */
+export function pickEncoding(file, st, accept) {
+  const accepted = new Set();
+  for (const part of String(accept || '').split(',')) {
+    const [name, ...params] = part.trim().toLowerCase().split(';');
+    const q = params.map((x) => x.trim()).find((x) => x.startsWith('q='));
+    if (name && !(q && Number(q.slice(2)) === 0)) accepted.add(name.trim());
+  }
+  for (const [suffix, name] of ENCODINGS) {
+    if (!accepted.has(name)) continue;
+    try {
+      const cst = fs.statSync(file + suffix);
+      if (cst.isFile() && cst.mtimeMs >= st.mtimeMs) return { path: file + suffix, size: cst.size, encoding: name };
+    } catch {
+      // no such copy
+    }
+  }
+  return { path: file, size: st.size, encoding: null };
+}
 
 /**
  * Starts a server for `root` on 127.0.0.1:`port`; resolves to { server, url }.
@@ -67,18 +102,21 @@ export function startServer(root, port = 0, opts = {}) {
         res.end('not found');
         return;
       }
+      const body = pickEncoding(file, st, req.headers['accept-encoding']);
       res.writeHead(200, {
         'Content-Type': MIME[path.extname(file).toLowerCase()] || 'application/octet-stream',
-        'Content-Length': st.size,
+        'Content-Length': body.size,
         'Cache-Control': 'no-cache',
         'X-Content-Type-Options': 'nosniff',
+        Vary: 'Accept-Encoding',
+        ...(body.encoding ? { 'Content-Encoding': body.encoding } : {}),
         ...cors,
       });
       if (req.method === 'HEAD') {
         res.end();
         return;
       }
-      fs.createReadStream(file).pipe(res);
+      fs.createReadStream(body.path).pipe(res);
     });
   });
   return new Promise((resolve, reject) => {
