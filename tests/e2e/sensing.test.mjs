@@ -317,11 +317,23 @@ test('the 3-D wing coloured by detectability, with the K best sensors as numbere
       },
       [colourSel, v],
     );
-  // before any sensing result: the option says what to do, and no markers are drawn
+  // before any sensing result: the option says what to do, and no markers are drawn. The
+  // sensing result may arrive at any moment, so the store, the legend and the markers are read
+  // together, and the words are checked only if there was still no result then.
   if (!(await page.evaluate(() => document.querySelector('wing-lab').store.get().sense_map))) {
     await setColour('6');
-    assert.match(await page.textContent(`wing-lab ${w3} .wl-w3-legend-text`), /open the Sensing panel/);
-    assert.equal(await page.evaluate(() => __wl.qa('.wl-w3-sdot:not([hidden])').length), 0);
+    const seen = await page.evaluate(
+      (sel) => ({
+        map: !!document.querySelector('wing-lab').store.get().sense_map,
+        text: __wl.q(`${sel} .wl-w3-legend-text`)?.textContent ?? '',
+        dots: __wl.qa('.wl-w3-sdot:not([hidden])').length,
+      }),
+      w3,
+    );
+    if (!seen.map) {
+      assert.match(seen.text, /open the Sensing panel/);
+      assert.equal(seen.dots, 0);
+    }
   }
   // the strain colouring (whole-run strain map) at a fixed instant, for comparison
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.3));
