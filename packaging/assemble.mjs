@@ -32,6 +32,11 @@ const ASSETS = [
   'pkg/wingbeat.d.ts',
   'pkg/wingbeat_bg.wasm',
   'pkg/wingbeat_bg.wasm.d.ts',
+  // The live build the lab paints its first plot from (docs/lab.md, "Two modules, one crate").
+  'pkg/wingbeat_live.js',
+  'pkg/wingbeat_live.d.ts',
+  'pkg/wingbeat_live_bg.wasm',
+  'pkg/wingbeat_live_bg.wasm.d.ts',
 ];
 
 /** Relative module specifiers in `src`: static imports/re-exports and import('…') with a literal. */
@@ -98,6 +103,7 @@ const pkg = {
     './worker.js': './worker.js',
     './style.css': './style.css',
     './wasm': './pkg/wingbeat_bg.wasm',
+    './wasm-live': './pkg/wingbeat_live_bg.wasm',
     './api': { types: './pkg/wingbeat.d.ts', default: './pkg/wingbeat.js' },
     './package.json': './package.json',
   },

@@ -10,7 +10,9 @@ dest="${1:-www}"
 case "$dest" in www|dist) ;; *) echo "build-web: destination must be www or dist" >&2; exit 2 ;; esac
 target_dir="${CARGO_TARGET_DIR:-target}"
 
-cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web,render
+# Two modules from one crate: the full lab API with the renderer (wingbeat_bg.wasm), and the
+# live analysis alone (wingbeat_live_bg.wasm, feature `web-live`), which the lab loads first and
+# paints its first plot from while the full module loads behind it (issue 25, docs/lab.md).
 wasm="$target_dir/wasm32-unknown-unknown/release/wingbeat.wasm"
 
 if [ "$dest" = dist ]; then
@@ -19,21 +21,37 @@ if [ "$dest" = dist ]; then
   cp -R www/. dist/
   rm -rf dist/pkg dist/vendor
 fi
-
 rm -rf "$dest/pkg"
-wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat "$wasm"
 
-if [ "${WASM_OPT:-1}" != 0 ]; then
-  # npm's binaryen only: Debian's (v108) emits modules Chromium rejects.
-  opt=node_modules/.bin/wasm-opt
+# wasm-opt: npm's binaryen only (Debian's v108 emits modules Chromium rejects).
+optimise() {
+  local file="$1" opt=node_modules/.bin/wasm-opt
+  [ "${WASM_OPT:-1}" != 0 ] || return 0
   if "$opt" -O3 --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
        --enable-mutable-globals --enable-reference-types --enable-multivalue \
-       "$dest/pkg/wingbeat_bg.wasm" -o "$dest/pkg/wingbeat_bg.opt.wasm"; then
-    mv "$dest/pkg/wingbeat_bg.opt.wasm" "$dest/pkg/wingbeat_bg.wasm"
+       "$file" -o "$file.opt"; then
+    mv "$file.opt" "$file"
   else
-    echo "build-web: WARNING: wasm-opt failed; keeping the unoptimised module" >&2
-    rm -f "$dest/pkg/wingbeat_bg.opt.wasm"
+    echo "build-web: WARNING: wasm-opt failed on $file; keeping the unoptimised module" >&2
+    rm -f "$file.opt"
   fi
+}
+
+if [ "$dest" = dist ] && [ "${PKG_FROM_WWW:-0}" = 1 ] && [ -f www/pkg/wingbeat_bg.wasm ] && [ -f www/pkg/wingbeat_live_bg.wasm ]; then
+  # scripts/test-all.sh builds www/ first, from the same sources: take its modules (and their
+  # compressed copies) instead of compiling, binding and compressing them again.
+  echo "build-web: dist/pkg from www/pkg (PKG_FROM_WWW=1)"
+  cp -Rp www/pkg "$dest/pkg"
+else
+# The same target directory for both: cargo keeps both builds' dependencies, and the second
+# build of the crate overwrites wingbeat.wasm, so each is taken by wasm-bindgen at once.
+cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web-live
+wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat_live "$wasm"
+optimise "$dest/pkg/wingbeat_live_bg.wasm"
+
+cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web,render
+wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat "$wasm"
+optimise "$dest/pkg/wingbeat_bg.wasm"
 fi
 
 mkdir -p "$dest/vendor"
@@ -58,6 +76,9 @@ if [ "$dest" = dist ]; then
   grep -q "const BUILD = '$stamp';" dist/sw.js || { echo "build-web: could not stamp dist/sw.js" >&2; exit 1; }
 fi
 
-raw=$(wc -c < "$dest/pkg/wingbeat_bg.wasm")
-gz=$(gzip -9 -c "$dest/pkg/wingbeat_bg.wasm" | wc -c)
-echo "build-web: $dest/ ready; wingbeat_bg.wasm $raw bytes ($gz gzipped)"
+for m in wingbeat_live wingbeat; do
+  raw=$(wc -c < "$dest/pkg/${m}_bg.wasm")
+  gz=$(gzip -9 -c "$dest/pkg/${m}_bg.wasm" | wc -c)
+  echo "build-web: $dest/pkg/${m}_bg.wasm $raw bytes ($gz gzipped)"
+done
+echo "build-web: $dest/ ready"

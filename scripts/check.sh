@@ -14,6 +14,8 @@ cargo clippy --all-targets -- -D warnings
 cargo clippy --all-targets --all-features -- -D warnings
 # The wasm32-only code (the browser view, the wasm suites) is linted too.
 cargo clippy --target wasm32-unknown-unknown --no-default-features --features web,render --lib --tests -- -D warnings
+# The lab's small first module (feature `web-live` alone: docs/lab.md, "Two modules, one crate").
+cargo clippy --target wasm32-unknown-unknown --no-default-features --features web-live --lib -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --all-features
 # npm packages (Biome, acorn) first; `npm test` installs the rest.
 bash scripts/ensure-tools.sh

@@ -3,6 +3,8 @@
 // docs/lab.md (also written to test-output/perf.json):
 //   * load-to-interactive: navigation start → first complete render (wasm loaded, paper case
 //     computed and drawn, sliders live), median of 5 fresh page loads;
+//   * the first load under network emulation (scripts/perf-load.mjs): first plot, 3-D wing and
+//     bytes, cold cache, localhost and 10 Mbit/s with 40 ms RTT, medians of 5 (test-output/load.md);
 //   * slider latency: keydown on the γ0 slider → redraw finished (includes the wait for the next
 //     animation frame), plus its compute and draw parts, over 40 key presses;
 //   * the 101×101 initial-condition map in wasm on the main thread (median of 20);
@@ -17,7 +19,7 @@
 //     finished: median over 120 frames) and the same for the lab's FE wing;
 //   * the lab's 3-D view playing at 1280×800 (WebGL2): scripts/perf-3d.mjs's measure3d;
 //   * the shell FE wing of the lab (wasm feModes, 1.25 mm and the CLI's 1.0 mm), median of 3;
-//   * the wasm module's size, raw and gzipped (-9).
+//   * the two wasm modules' sizes (full and live builds), raw, gzip -9 and Brotli 11.
 // Usage: node scripts/perf.mjs [--screenshot] [--latency-only]   (--screenshot also writes
 // docs/lab.png; --latency-only measures only the sliders, into test-output/perf-latency.json)
 // Run `scripts/build-web.sh www` first (`npm run perf` does both).
@@ -27,6 +29,7 @@ import zlib from 'node:zlib';
 import os from 'node:os';
 import { setup, openPage, waitRenders, ROOT, OUT } from '../tests/e2e/helpers.mjs';
 import { measure3d } from './perf-3d.mjs';
+import { measureLoad, loadTable } from './perf-load.mjs';
 
 const median = (xs) => {
   const s = [...xs].sort((a, b) => a - b);
@@ -55,6 +58,15 @@ try {
   }
   log('loads', loads);
   if (loads.length) result.load_to_interactive_ms = { median: r1(median(loads)), all: loads.map(r1) };
+  if (!process.argv.includes('--latency-only')) {
+    // The first load as a pupil sees it: cold cache, localhost and a 10 Mbit/s, 40 ms link
+    // (scripts/perf-load.mjs); the table goes to test-output/load.md.
+    result.load = await measureLoad(env.browser, env.url, 5);
+    const lt = loadTable(result.load);
+    fs.mkdirSync(OUT, { recursive: true });
+    fs.writeFileSync(path.join(OUT, 'load.md'), lt);
+    console.log(lt);
+  }
 
   const { page, context, problems } = await openPage(env.browser, env.url);
   await page.goto(env.url);
@@ -236,8 +248,16 @@ try {
   await env.close();
 }
 
-const wasm = fs.readFileSync(path.join(ROOT, process.env.LAB_ROOT || 'www', 'pkg', 'wingbeat_bg.wasm'));
-result.wasm_bytes = { raw: wasm.length, gzip9: zlib.gzipSync(wasm, { level: 9 }).length };
+const wasmBytes = (/** @type {string} */ name) => {
+  const w = fs.readFileSync(path.join(ROOT, process.env.LAB_ROOT || 'www', 'pkg', name));
+  return {
+    raw: w.length,
+    gzip9: zlib.gzipSync(w, { level: 9 }).length,
+    brotli11: zlib.brotliCompressSync(w, { params: { [zlib.constants.BROTLI_PARAM_QUALITY]: 11 } }).length,
+  };
+};
+result.wasm_bytes = wasmBytes('wingbeat_bg.wasm');
+result.live_wasm_bytes = wasmBytes('wingbeat_live_bg.wasm');
 result.machine = machine();
 fs.mkdirSync(OUT, { recursive: true });
 fs.writeFileSync(path.join(OUT, 'perf.json'), JSON.stringify(result, null, 2));

@@ -64,7 +64,13 @@ if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.me
   let gz = 0;
   const files = compressible(dir);
   for (const f of files) {
-    const s = precompress(f);
+    // Copies already there and not older than the file (dist/pkg copied from www/pkg with its
+    // times) are kept: Brotli at quality 11 takes seconds per megabyte.
+    const t = fs.statSync(f).mtimeMs;
+    const fresh = ENCODINGS.every(([suffix]) => fs.existsSync(f + suffix) && fs.statSync(f + suffix).mtimeMs >= t);
+    const s = fresh
+      ? { raw: fs.statSync(f).size, br: fs.statSync(f + '.br').size, gz: fs.statSync(f + '.gz').size }
+      : precompress(f);
     raw += s.raw;
     br += s.br;
     gz += s.gz;

@@ -41,9 +41,9 @@ wasm() {
 e2e() {
   echo "== e2e: build the lab, then node --test tests/js tests/e2e"
   bash scripts/build-web.sh www
-  # The teachers' single-folder download, checked by tests/e2e/offline.test.mjs (the wasm build is
-  # already done: this is wasm-bindgen, wasm-opt and a copy).
-  bash scripts/build-web.sh dist
+  # The teachers' single-folder download, checked by tests/e2e/offline.test.mjs (its two wasm
+  # modules and their compressed copies are www/'s, just built from the same sources).
+  PKG_FROM_WWW=1 bash scripts/build-web.sh dist
   echo "== e2e: type-check the lab's JavaScript (tsc --noEmit over www/ against pkg/wingbeat.d.ts and uPlot's types)"
   npm run --silent check:js
   node --test --test-concurrency=1 tests/js/ tests/e2e/

@@ -68,7 +68,7 @@ pub mod run;
 pub mod simulate;
 pub mod solve;
 pub mod transient;
-#[cfg(feature = "web")]
+#[cfg(feature = "web-live")]
 pub mod wasm;
 
 pub use error::{Result, WingbeatError};
@@ -77,7 +77,7 @@ pub use error::{Result, WingbeatError};
 // nothing (a 489-byte module from a plain `wasm-pack build`): refuse that loudly. Only when
 // wingbeat is the package being built (cargo sets CARGO_PRIMARY_PACKAGE then); as a
 // dependency of another wasm crate the Rust core builds without the API as before.
-#[cfg(all(target_arch = "wasm32", not(feature = "web")))]
+#[cfg(all(target_arch = "wasm32", not(feature = "web-live")))]
 const _: () = assert!(
     option_env!("CARGO_PRIMARY_PACKAGE").is_none(),
     "wingbeat for wasm32 needs its JS API: build with `--no-default-features --features web,render` \

@@ -32,8 +32,16 @@
 // unavailable, requestLive computes on the main thread as `analyze` does. Results carry the
 // kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`, from wasm
 // `analyze`), so the 3-D view never crosses into wasm per frame.
+//
+// Two builds of the wasm module (scripts/build-web.sh, issue 25): `load()` resolves once the
+// small live build has loaded (analysis, configs, outlines: the first plot needs nothing else)
+// and starts loading the full build behind it (shell FE, sensing, the renderer); `loadFull()`
+// resolves once that one is there. The study worker runs the full build, the live worker the
+// live one. What needs the full build waits for it: the FE wing (ensureFe, computeWing) resolves
+// only when the page has the full module too, so the modal strains of a wing in use are always
+// at hand; the 3-D view awaits loadFull() before it asks for the renderer.
 import { FE_LAB_INPUT, SAMPLE_RATE_HZ, WING, customWing } from './state.js';
-import { loadWasm, compiledWasm, defaultWorker, startWorker, splitAngles } from './engine/wasm.js';
+import { createBuilds, loadWasm, defaultWorker, startWorker, splitAngles } from './engine/wasm.js';
 import { JOB } from './engine/protocol.js';
 import { liveAsk, liveOverrides, createLiveQueue } from './engine/requests.js';
 import { createJobs } from './engine/jobs.js';
@@ -94,16 +102,17 @@ function liveResult(
 }
 
 /**
- * @param {{ load?: () => Promise<Wasm>, createWorker?: () => Worker, createLiveWorker?: () => Worker, feInput?: FemInput }} [deps]
- *   `load` resolves to the wasm module's exports (default: loadWasm); `createWorker` makes the
- *   study worker, `createLiveWorker` the live worker (default for both: www/worker.js). Tests
- *   pass fakes.
+ * @param {{ load?: () => Promise<Wasm>, loadLive?: () => Promise<Wasm>, createWorker?: () => Worker, createLiveWorker?: () => Worker, feInput?: FemInput }} [deps]
+ *   `load` resolves to the full wasm module's exports (default: loadWasm), `loadLive` to the
+ *   live build's (default: loadLive with the default `load`, else `load` itself);
+ *   `createWorker` makes the study worker, `createLiveWorker` the live worker (default for
+ *   both: www/worker.js). Tests pass fakes.
  */
+// long: the engine's whole API object, one short documented method per operation (the logic is in engine/*.js)
 export function createEngine(deps = {}) {
-  const load = deps.load || loadWasm;
-  /** The page's compiled wasm module for new workers (null with a test's fake wasm). */
-  const wasmModule = () => (load === loadWasm ? compiledWasm() : null);
-  /** @type {Wasm | null} */
+  const builds = createBuilds(deps.load, deps.loadLive);
+  const loadFull = builds.full;
+  /** The live build's exports (the first plot's), once loaded. @type {Wasm | null} */
   let wb = null;
   /** @type {SimConfig | null} */
   let base = null;
@@ -117,11 +126,18 @@ export function createEngine(deps = {}) {
     if (!wb) throw new Error('engine: wasm not loaded');
     return wb;
   };
-  /** The wasm module and the wing in use, or a throw. */
+  /** The full build, or a throw when it has not loaded yet. */
+  const needFull = () => {
+    const wf = builds.loaded;
+    if (!wf) throw new Error('engine: the full wasm module has not loaded yet');
+    return wf;
+  };
+  /** The full build and the wing in use, or a throw. */
   const needFe = () => {
     const f = wings.fe;
-    if (!wb || !f) throw new Error('engine: no FE wing yet');
-    return { w: wb, f };
+    const wf = builds.loaded;
+    if (!wf || !f) throw new Error('engine: no FE wing yet');
+    return { w: wf, f };
   };
   /** wasm analyze of one ask on this thread, timed. */
   const analyzeHere = (/** @type {ReturnType<typeof liveAsk>} */ ask) => {
@@ -130,32 +146,46 @@ export function createEngine(deps = {}) {
     return liveResult(ask, a, now() - t0);
   };
 
-  const jobs = createJobs(() => startWorker(deps.createWorker || defaultWorker, wasmModule()));
+  const jobs = createJobs(() => startWorker(deps.createWorker || defaultWorker, builds.fullModule(), 'full'));
   const live = createLiveQueue({
-    start: () => startWorker(deps.createLiveWorker || defaultWorker, wasmModule()),
+    start: () => startWorker(deps.createLiveWorker || defaultWorker, builds.liveModule(), 'live'),
     here: analyzeHere,
     fromWorker: (ask, a, ms) => liveResult(ask, a, ms),
   });
   const wings = createWings({
     initial: deps.feInput || FE_LAB_INPUT,
-    solve: (input, onProgress) => jobs.run(JOB.fe, { input, opts: { json: true } }, onProgress),
+    // The wing is used once the page has the full build too (its modal strains need it).
+    solve: (input, onProgress) => {
+      const job = jobs.run(JOB.fe, { input, opts: { json: true } }, onProgress);
+      return { ...job, promise: Promise.all([job.promise, loadFull()]).then(([r]) => r) };
+    },
   });
   const modesAt = createPointStrains((f, p) =>
-    need().modalStrainAt(f.nodes, f.triangles, f.strain_nodes, f.modes.length, p),
+    needFull().modalStrainAt(f.nodes, f.triangles, f.strain_nodes, f.modes.length, p),
   );
 
   const engine = {
-    /** Resolves to the wasm module once loaded (and remembers its default config). */
+    /**
+     * Resolves to the live build once loaded (and remembers its default config); the full
+     * build starts loading then, behind it.
+     */
     async load() {
       if (!wb) {
-        const m = await load();
+        const m = await builds.first();
         base = m.defaultConfig();
         wb = m;
+        loadFull().catch(() => {});
       }
       return wb;
     },
+    /** Resolves to the full build once loaded (loading it now if load() has not). */
+    loadFull,
     get ready() {
       return !!wb;
+    },
+    /** Whether the full build has loaded. */
+    get fullReady() {
+      return !!builds.loaded;
     },
     /** The paper's default config (wasm defaultConfig), after load(). */
     get baseConfig() {
@@ -165,13 +195,15 @@ export function createEngine(deps = {}) {
     get fe() {
       return wings.fe;
     },
-    /** Whether the wasm module has the renderer (WingView; false for a test's fake). */
+    /** Whether the full build has loaded and has the renderer (WingView; false for a test's fake). */
     get hasRenderer() {
-      return !!wb && typeof wb.WingView === 'function';
+      const wf = builds.loaded;
+      return !!wf && typeof wf.WingView === 'function';
     },
-    /** The wasm module's WingView, for the views that draw the wing with the renderer. */
+    /** The full build's WingView, for the views that draw the wing with the renderer. */
     get renderer() {
-      return wb && wb.WingView;
+      const wf = builds.loaded;
+      return wf && wf.WingView;
     },
     limits() {
       return need().limits();
@@ -267,7 +299,7 @@ export function createEngine(deps = {}) {
      * @returns {{ modes: Required<import('./pkg/wingbeat.js').Mode>[], fe?: import('./pkg/wingbeat.js').ImportedFe }}
      */
     modesFromJson(text) {
-      return /** @type {{ modes: Required<import('./pkg/wingbeat.js').Mode>[] }} */ (need().modesFromJson(text));
+      return /** @type {{ modes: Required<import('./pkg/wingbeat.js').Mode>[] }} */ (needFull().modesFromJson(text));
     },
     /** The kinematic angles (rad) at times t for a config: { alpha, beta, gamma } (wasm anglesAt). */
     anglesAt(/** @type {SimConfig} */ cfg, /** @type {Float64Array} */ t) {

@@ -48,6 +48,8 @@
     'lab.js',
     'worker.js',
     'style.css',
+    'pkg/wingbeat_live.js',
+    'pkg/wingbeat_live_bg.wasm',
     'pkg/wingbeat.js',
     'pkg/wingbeat_bg.wasm',
   ];

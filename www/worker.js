@@ -9,7 +9,6 @@
 // transferred, not copied) or an error out. The lab runs two of these workers: one for the
 // studies (and `fe`), one for the live `analyze` of the sliders (www/engine/requests.js), so
 // neither waits for the other.
-import init, * as wb from './pkg/wingbeat.js';
 import { decimate } from './decimate.js';
 import { errorText } from './format.js';
 import {
@@ -24,13 +23,28 @@ import {
 
 /**
  * The wasm, loaded on the first message: the page's own compiled module when the engine sends
- * it first ({ wasmModule }: no second download or compile), else fetched next to this file.
+ * it first ({ wasmModule, variant }: no second download or compile; the live worker gets the
+ * small live build, www/engine/wasm.js), else the full build fetched next to this file. The
+ * glue is imported to match the module (the two builds' glue differ).
  * @type {Promise<unknown> | null}
  */
 let ready = null;
-function start(/** @type {WebAssembly.Module | undefined} */ module) {
+/**
+ * The loaded module's exports, set before `ready` resolves (typed as the full build; the live
+ * build has a subset, and the live worker is only given `analyze` jobs).
+ * @type {typeof import('./pkg/wingbeat.js')}
+ */
+let wb = /** @type {any} */ (null);
+function start(/** @type {WebAssembly.Module | undefined} */ module, variant = 'full') {
   if (!ready) {
-    ready = init({ module_or_path: module || new URL('./pkg/wingbeat_bg.wasm', import.meta.url) });
+    const files =
+      variant === 'live'
+        ? ['./pkg/wingbeat_live.js', './pkg/wingbeat_live_bg.wasm']
+        : ['./pkg/wingbeat.js', './pkg/wingbeat_bg.wasm'];
+    ready = import(files[0]).then(async (m) => {
+      await m.default({ module_or_path: module || new URL(files[1], import.meta.url) });
+      wb = m;
+    });
     // Tells the engine that the wasm is loaded (the live worker is used once it is).
     ready.then(
       () => scope.postMessage(readyMessage()),
@@ -123,7 +137,7 @@ const scope =
 scope.onmessage = async (ev) => {
   const req = readRequest(ev.data);
   if ('wasmModule' in req) {
-    start(req.wasmModule);
+    start(req.wasmModule, req.variant);
     return;
   }
   const { id, kind } = req;

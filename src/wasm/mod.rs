@@ -1,5 +1,10 @@
 //! The browser lab's WebAssembly API (feature `web`), built with wasm-bindgen.
 //!
+//! Feature `web-live` alone compiles the live analysis ([`sim`], [`analysis`]) and the wing's
+//! outlines, parameter tables and FE inputs ([`wing`]): the small module the lab loads first and paints its
+//! first plot from, while the full module (`web`: also the FE wing's strains and modes files, [`fe`],
+//! [`sensing`], [`classify`], `reproduce` and, with `render`, the renderer) loads behind it.
+//!
 //! It exposes the same inputs as the CLI — [`SimConfig`](crate::config::SimConfig),
 //! [`WelchOptions`](crate::analysis::psd::WelchOptions),
 //! [`SweepOptions`](crate::analysis::sweep::SweepOptions),
@@ -33,28 +38,40 @@
 //! cannot leave the page's module dead.
 
 pub mod analysis;
+#[cfg(feature = "web")]
 pub mod classify;
+#[cfg(feature = "web")]
 pub mod fe;
+// Some readers and checks serve only the full module's exports.
+#[cfg_attr(not(feature = "web"), allow(dead_code))]
 pub mod helpers;
+#[cfg_attr(not(feature = "web"), allow(dead_code))]
 pub mod marshal;
+#[cfg(feature = "web")]
 pub mod sensing;
 pub mod sim;
 pub mod types;
 #[cfg(all(feature = "render", target_arch = "wasm32"))]
 pub mod view;
+#[cfg_attr(not(feature = "web"), allow(dead_code, unused_imports))]
 pub mod wing;
 
 pub use analysis::{analyze, envelope, ic_map, psd, resonance_map, spectra, sweep};
+#[cfg(feature = "web")]
 pub use classify::classify_rotation;
+#[cfg(feature = "web")]
 pub use fe::fe_modes;
 pub use sim::{
     angles_at, apply_overrides, default_config, force_series, kinematics_from_csv, limits,
-    parameters, reproduce, reproduce_text, simulate, validate_config,
+    parameters, simulate, validate_config,
 };
+#[cfg(feature = "web")]
+pub use sim::{reproduce, reproduce_text};
 pub use wing::{
-    check_planform, material_presets, modal_strain_at, modes_from_json, parse_planform, planforms,
-    strain_field, wing_input, wing_parameters,
+    check_planform, material_presets, parse_planform, planforms, wing_input, wing_parameters,
 };
+#[cfg(feature = "web")]
+pub use wing::{modal_strain_at, modes_from_json, strain_field};
 
 use wasm_bindgen::prelude::*;
 

@@ -130,13 +130,16 @@ pub fn angles_at(
     Ok(Float64Array::from(&out[..]))
 }
 
-/// The paper's claims next to what wingbeat computes, each with a verdict (a JS object).
+/// The paper's claims next to what wingbeat computes, each with a verdict (a JS object). Full
+/// module only (it solves the shell FE modes).
+#[cfg(feature = "web")]
 #[wasm_bindgen]
 pub fn reproduce() -> Result<JsValue, JsError> {
     to_js(&crate::reproduce::reproduce().map_err(err)?)
 }
 
 /// The same report as plain text.
+#[cfg(feature = "web")]
 #[wasm_bindgen(js_name = reproduceText)]
 pub fn reproduce_text() -> Result<String, JsError> {
     Ok(crate::reproduce::reproduce().map_err(err)?.to_text())

@@ -203,6 +203,7 @@ fn flat_strain(s: &[f64], n_nodes: usize) -> impl Fn(usize, usize) -> [f64; 3] +
 /// point by the core function the FE modes use for their strain point
 /// (`analysis::strain::modal_strains_at`). Throws naming `point` (with the mesh's extent) for
 /// a point outside the meshed planform, and naming the array for inconsistent arrays.
+#[cfg(feature = "web")]
 #[wasm_bindgen(js_name = modalStrainAt, unchecked_return_type = "ModalStrainValues[]")]
 pub fn modal_strain_at(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] nodes: JsValue,
@@ -290,6 +291,7 @@ fn series_list(qs: &JsValue, n_modes: usize) -> Result<Vec<Vec<f64>>, JsError> {
 /// "peak" }`. RMS is exact from the modal covariance; the peak visits every sample and is
 /// capped (`limits().max_strain_field_work` = nodes × samples × modes; over it, throws: pass
 /// every m-th sample). Returns a `Float64Array` of one value per node (strain, dimensionless).
+#[cfg(feature = "web")]
 #[wasm_bindgen(js_name = strainField)]
 pub fn strain_field(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] strain_nodes: JsValue,
@@ -328,6 +330,7 @@ pub fn strain_field(
 /// layout as `feModes`' result (`freq_hz`, `a`, `b`, `kinds`, `mesh_size_mm`, `nodes`,
 /// `triangles`, `shapes`, `strain_nodes` as flat typed arrays, …) but no `modes`. Throws
 /// naming the document's part for malformed or inconsistent content.
+#[cfg(feature = "web")]
 #[wasm_bindgen(js_name = modesFromJson, unchecked_return_type = "ModesDocument")]
 pub fn modes_from_json(
     #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,

@@ -631,6 +631,10 @@ test("sandbox: allow-scripts allow-same-origin works from plain static hosting; 
         notice: notice ? notice.textContent : '',
       };
     });
+    // The height message follows the first layout (a ResizeObserver in the frame): give it a moment.
+    await page
+      .waitForFunction(() => document.getElementById('lab').style.height !== '', null, { timeout: 5000 })
+      .catch(() => {});
     const heightSet = await page.evaluate(() => document.getElementById('lab').style.height);
     let feReply = null;
     if (rendered) feReply = await api(page, 'set', { modes: 'fe' });

@@ -72,6 +72,8 @@ test('the tarball holds the element, worker, styles, wasm, types, licences and n
     'pkg/wingbeat.js',
     'pkg/wingbeat.d.ts',
     'pkg/wingbeat_bg.wasm',
+    'pkg/wingbeat_live.js',
+    'pkg/wingbeat_live_bg.wasm',
     'vendor/uPlot.esm.js',
     'vendor/uPlot.min.css',
     'vendor/uPlot.LICENSE',
@@ -107,7 +109,8 @@ test('package.json: name, version, licence, exports that exist, no dependencies'
   targets.push(pkg.types, pkg.main);
   for (const t of targets)
     assert.ok(fs.existsSync(path.join(dir, 'node_modules/wingbeat-lab', t)), `export target ${t} missing`);
-  for (const k of ['.', './worker.js', './style.css', './wasm', './api']) assert.ok(k in pkg.exports, `export ${k}`);
+  for (const k of ['.', './worker.js', './style.css', './wasm', './wasm-live', './api'])
+    assert.ok(k in pkg.exports, `export ${k}`);
 });
 
 test('its types check in a TypeScript project that imports the package', () => {
@@ -160,6 +163,10 @@ async function checkLab(url, sel, { gamma0, shot, allow = /^$/ } = {}) {
   await p.waitForFunction((s) => Number(document.querySelector(s)?.getAttribute('data-renders') || 0) >= 1, sel, {
     timeout: 30000,
   });
+  // The full wasm build loads behind the live one (docs/lab.md, "Two modules, one crate").
+  await p.waitForFunction((s) => /** @type {any} */ (document.querySelector(s))?.engine?.fullReady, sel, {
+    timeout: 30000,
+  });
   const info = await p.evaluate((s) => {
     const lab = /** @type {any} */ (document.querySelector(s));
     const root = lab.shadowRoot || lab;
@@ -179,6 +186,7 @@ async function checkLab(url, sel, { gamma0, shot, allow = /^$/ } = {}) {
   assert.ok(lab.length > 5);
   for (const u of lab)
     assert.ok(u.pathname.startsWith('/node_modules/wingbeat-lab/'), `${u.pathname} loaded from outside the package`);
+  assert.ok(lab.some((u) => u.pathname.endsWith('/pkg/wingbeat_live_bg.wasm')));
   assert.ok(lab.some((u) => u.pathname.endsWith('/pkg/wingbeat_bg.wasm')));
   assert.deepEqual(problems, []);
   if (shot) await p.screenshot({ path: path.join(OUT, shot), fullPage: true });

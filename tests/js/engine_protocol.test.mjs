@@ -46,7 +46,14 @@ test('what the engine writes is read by the worker as the job and its inputs', (
   assert.equal(got.kind, 'sweep');
   assert.deepEqual(got.job.opts, { points: 3 });
   const mod = { fake: 'module' };
-  assert.deepEqual(readRequest(wasmModuleMessage(/** @type {any} */ (mod))), { wasmModule: mod });
+  // The page's compiled module names its build (the live worker gets the small live one);
+  // anything but 'live' is the full build.
+  assert.deepEqual(readRequest(wasmModuleMessage(/** @type {any} */ (mod))), { wasmModule: mod, variant: 'full' });
+  assert.deepEqual(readRequest(wasmModuleMessage(/** @type {any} */ (mod), 'live')), {
+    wasmModule: mod,
+    variant: 'live',
+  });
+  assert.deepEqual(readRequest({ wasmModule: mod, variant: 'other' }), { wasmModule: mod, variant: 'full' });
   assert.deepEqual(readRequest(undefined), { id: undefined, kind: undefined, job: {} });
 });
 

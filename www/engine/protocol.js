@@ -3,7 +3,7 @@
 // both sides build and read them with these functions, so a message's shape and the job kinds
 // are written once. Pure (no DOM, no wasm); tested in tests/js/engine_protocol.test.mjs.
 //
-//   page → worker   { wasmModule }                   first: the page's compiled wasm module
+//   page → worker   { wasmModule, variant }          first: the page's compiled wasm module ('live' or 'full' build)
 //                   { id, kind, ...payload }         a job; kind ∈ JOB_KINDS
 //   worker → page   { ready: true }                  once, when the wasm has loaded
 //                   { id, progress: [done, total] }  any number of times
@@ -26,7 +26,12 @@ export const JOB = Object.freeze({
 export const JOB_KINDS = Object.freeze(Object.values(JOB));
 
 /** Hands the page's compiled wasm module to a new worker (no second download or compile). */
-export const wasmModuleMessage = (/** @type {WebAssembly.Module} */ module) => ({ wasmModule: module });
+/**
+ * The page's compiled module for a worker, and which build it is ('live' or 'full').
+ * @param {WebAssembly.Module} module
+ * @param {'live' | 'full'} [variant]
+ */
+export const wasmModuleMessage = (module, variant = 'full') => ({ wasmModule: module, variant });
 
 /**
  * A job for the worker.
@@ -40,11 +45,11 @@ export const jobMessage = (id, kind, payload = {}) => ({ id, kind, ...payload })
  * What the worker received: the wasm module, or a job (its id, kind and the whole message as
  * the job's inputs).
  * @param {unknown} data
- * @returns {{ wasmModule: WebAssembly.Module } | { id: unknown, kind: unknown, job: Record<string, any> }}
+ * @returns {{ wasmModule: WebAssembly.Module, variant: 'live' | 'full' } | { id: unknown, kind: unknown, job: Record<string, any> }}
  */
 export function readRequest(data) {
   const d = /** @type {Record<string, any>} */ (data && typeof data === 'object' ? data : {});
-  if (d.wasmModule) return { wasmModule: d.wasmModule };
+  if (d.wasmModule) return { wasmModule: d.wasmModule, variant: d.variant === 'live' ? 'live' : 'full' };
   return { id: d.id, kind: d.kind, job: d };
 }
 

@@ -10,10 +10,22 @@ import { wasmModuleMessage } from './protocol.js';
 /** The lab's folder (www/): pkg/ and worker.js are there. */
 const WWW = new URL('../', import.meta.url);
 
-/** @type {Promise<Wasm> | null} */
-let shared = null;
-/** @type {WebAssembly.Module | null} the compiled wasm, handed to the workers (no second download or compile) */
-let compiled = null;
+/**
+ * The two builds of the module (scripts/build-web.sh): `live`, the live analysis alone (small:
+ * the first plot is painted from it), and `full`, the whole API with the shell FE, sensing and
+ * the renderer, loaded behind it. Both are stateless; each is loaded and compiled once per page.
+ * @typedef {'live' | 'full'} Variant
+ */
+/** The glue and the module of each build, under pkg/. */
+export const VARIANT_FILES = Object.freeze({
+  live: Object.freeze({ glue: 'pkg/wingbeat_live.js', wasm: 'pkg/wingbeat_live_bg.wasm' }),
+  full: Object.freeze({ glue: 'pkg/wingbeat.js', wasm: 'pkg/wingbeat_bg.wasm' }),
+});
+
+/** @type {Record<Variant, Promise<Wasm> | null>} */
+const shared = { live: null, full: null };
+/** @type {Record<Variant, WebAssembly.Module | null>} the compiled wasm, handed to the workers (no second download or compile) */
+const compiled = { live: null, full: null };
 
 /** Compiles the wasm (streaming when the server sends application/wasm, else from its bytes). */
 async function compileWasm(/** @type {URL} */ url) {
@@ -28,27 +40,73 @@ async function compileWasm(/** @type {URL} */ url) {
   return WebAssembly.compile(await res.arrayBuffer());
 }
 
-/** Loads and instantiates the wasm module once per page (the module is stateless). */
-export function loadWasm() {
-  if (!shared) {
-    /** @type {Promise<Wasm>} */
-    const p = import(new URL('pkg/wingbeat.js', WWW).href).then(async (/** @type {Wasm} */ m) => {
-      const mod = await compileWasm(new URL('pkg/wingbeat_bg.wasm', WWW));
+/**
+ * Loads and instantiates one build of the module once per page.
+ * @param {Variant} variant
+ */
+function loadVariant(variant) {
+  const files = VARIANT_FILES[variant];
+  let p = shared[variant];
+  if (!p) {
+    p = import(new URL(files.glue, WWW).href).then(async (/** @type {Wasm} */ m) => {
+      const mod = await compileWasm(new URL(files.wasm, WWW));
       await m.default({ module_or_path: mod });
-      compiled = mod;
+      compiled[variant] = mod;
       return m;
     });
-    shared = p;
+    shared[variant] = p;
     p.catch(() => {
-      shared = null;
+      shared[variant] = null;
     });
-    return p;
   }
-  return shared;
+  return p;
 }
 
-/** The page's compiled wasm module once loadWasm has loaded it, else null. */
-export const compiledWasm = () => compiled;
+/** Loads and instantiates the full module once per page. */
+export const loadWasm = () => loadVariant('full');
+
+/**
+ * Loads and instantiates the live module once per page (its exports are a subset of the full
+ * module's: www/pkg/wingbeat_live.d.ts).
+ */
+export const loadLive = () => loadVariant('live');
+
+/** The page's compiled full wasm module once loadWasm has loaded it, else null. */
+export const compiledWasm = () => compiled.full;
+/** The page's compiled live wasm module once loadLive has loaded it, else null. */
+export const compiledLive = () => compiled.live;
+
+/**
+ * One engine's view of the two builds: `first()` loads the live build (the first plot's), `full()`
+ * the full one (once; again after a failure), `loaded` is the full build's exports once there,
+ * and the compiled modules to hand to new workers (null with a test's fake loaders).
+ * @param {() => Promise<Wasm>} [load] the full build (default loadWasm)
+ * @param {() => Promise<Wasm>} [loadFirst] the live build (default loadLive with the default
+ *   `load`, else `load` itself: a test's fake is one object)
+ */
+export function createBuilds(load = loadWasm, loadFirst = load === loadWasm ? loadLive : load) {
+  /** @type {Wasm | null} */
+  let loaded = null;
+  /** @type {Promise<Wasm> | null} */
+  let loading = null;
+  return {
+    first: loadFirst,
+    full() {
+      if (!loading) {
+        loading = load().then((m) => (loaded = m));
+        loading.catch(() => {
+          loading = null;
+        });
+      }
+      return loading;
+    },
+    get loaded() {
+      return loaded;
+    },
+    fullModule: () => (load === loadWasm ? compiledWasm() : null),
+    liveModule: () => (loadFirst === loadLive ? compiledLive() : null),
+  };
+}
 
 /** @type {string | null} the same-origin Blob URL that imports worker.js (made once) */
 let bootstrapUrl = null;
@@ -70,13 +128,15 @@ export function defaultWorker() {
 }
 
 /**
- * A new worker from `make`, given the compiled wasm module first when there is one.
+ * A new worker from `make`, given the compiled wasm module first when there is one (`variant`
+ * says which build it is; without a module the worker loads the full one itself).
  * @param {() => Worker} make
  * @param {WebAssembly.Module | null} module
+ * @param {Variant} [variant]
  */
-export function startWorker(make, module) {
+export function startWorker(make, module, variant = 'full') {
   const w = make();
-  if (module) w.postMessage(wasmModuleMessage(module));
+  if (module) w.postMessage(wasmModuleMessage(module, variant));
   return w;
 }
 

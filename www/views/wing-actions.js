@@ -129,8 +129,12 @@ export function wingActions(ctx, form, on) {
     on.reset();
   });
 
-  /** A `wingbeat modes` document → the wing in use (mesh and modes as computed by the CLI). */
-  const importModes = (/** @type {string} */ text, /** @type {string} */ name) => {
+  /**
+   * A `wingbeat modes` document → the wing in use (mesh and modes as computed by the CLI). The
+   * full wasm module reads it (loaded behind the live one; at once when it is there).
+   */
+  const importModes = async (/** @type {string} */ text, /** @type {string} */ name) => {
+    await engine.loadFull();
     const r = engine.modesFromJson(text);
     const fe = feFromModesDocument(r, text);
     engine.useFe(fe, `import:${name}:${text.length}`);

@@ -109,7 +109,7 @@ export function mount(ctx) {
     try {
       if (f.size > 20e6) throw new Error(`${f.name} is larger than 20 MB`);
       const text = await f.text();
-      if (looksLikeModes(text)) actions.importModes(text, f.name);
+      if (looksLikeModes(text)) await actions.importModes(text, f.name);
       else {
         const format = /\.json$/i.test(f.name) || text.trimStart().startsWith('[') ? 'json' : 'csv';
         const pts = engine.parsePlanform(text, format);

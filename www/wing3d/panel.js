@@ -230,6 +230,14 @@ export class Wing3dPanel {
   async start() {
     if (this.started) return;
     this.started = true;
+    // The renderer is in the full wasm build, which loads behind the live one.
+    this.dom.status.textContent = 'Loading the 3-D renderer…';
+    try {
+      await this.engine.loadFull();
+    } catch (e) {
+      this.unavailable(`the renderer could not be loaded: ${errorText(e)}`);
+      return;
+    }
     if (!this.engine.hasRenderer) {
       this.unavailable('this build of the lab has no renderer (built without the `render` feature)');
       return;

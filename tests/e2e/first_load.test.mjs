@@ -1,0 +1,123 @@
+// The lab's first load (issue 25): the first plot comes from the small live build of the wasm
+// module (pkg/wingbeat_live_bg.wasm) and the full build (shell FE, sensing, renderer) loads
+// behind it. With the full build unreachable, the paper case is still computed, drawn and
+// re-computed on a slider press (in the live worker, which was given the live build), and the
+// 3-D view says why it is missing; with both, each module is downloaded once (the workers get
+// the page's compiled modules), the live one first, and the 3-D wing is drawn.
+//   node --test --test-concurrency=1 tests/e2e/first_load.test.mjs   (after scripts/build-web.sh www)
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { setup, openPage, waitRenders, renders } from './helpers.mjs';
+
+let env;
+before(async () => {
+  env = await setup();
+});
+after(async () => {
+  if (env) await env.close();
+});
+
+const cell = (page, field) => page.textContent(`wing-lab [data-field="${field}"]`);
+/** Sum of |y| of every plotted series per plot (changes when the plotted data change). */
+const plotPrint = (page) =>
+  page.evaluate(() => {
+    const lab = /** @type {any} */ (document.querySelector('wing-lab'));
+    /** @type {Record<string, number>} */
+    const out = {};
+    for (const [name, u] of Object.entries(lab.plots)) {
+      let sum = 0;
+      for (const series of /** @type {any} */ (u).data.slice(1))
+        for (const v of series) if (v != null) sum += Math.abs(v);
+      out[name] = sum;
+    }
+    return out;
+  });
+/** A wasm request of the page or its dedicated workers (the service worker's precache is left out). */
+const pageWasm = (/** @type {import('playwright-core').Request} */ r) =>
+  new URL(r.url()).pathname.endsWith('.wasm') && !r.serviceWorker();
+
+test('without the full build: the paper case from the live build, a slider recomputes, the 3-D view says why it is missing', async () => {
+  const { page, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  const asked = [];
+  context.on('request', (r) => {
+    if (pageWasm(r)) asked.push(new URL(r.url()).pathname);
+  });
+  await context.route(/\/pkg\/wingbeat(_bg\.wasm|\.js)$/, (route) => route.abort());
+  try {
+    await page.goto(env.url);
+    await waitRenders(page, 1);
+    // The paper's numbers (tests/e2e/lab.test.mjs has the same case with the full build).
+    assert.equal(await cell(page, 'feff-0'), '60.3064');
+    assert.equal(await cell(page, 'freq-0'), '62.5');
+    assert.match(await cell(page, 'beat2-0'), /^0\.0970/);
+    const state = await page.evaluate(() => {
+      const e = /** @type {any} */ (document.querySelector('wing-lab')).engine;
+      return { ready: e.ready, full: e.fullReady };
+    });
+    assert.deepEqual(state, { ready: true, full: false });
+    // A slider press: recomputed (in the live worker once it is warm, else here).
+    const print0 = await plotPrint(page);
+    const n0 = await renders(page);
+    await page.focus('wing-lab input[type=range][data-key="gamma0"]');
+    await page.keyboard.press('ArrowRight');
+    await waitRenders(page, n0 + 1);
+    assert.notDeepEqual(await plotPrint(page), print0, 'γ0 changed the plotted responses');
+    const lab = await page.evaluate(() => {
+      const e = /** @type {any} */ (document.querySelector('wing-lab')).engine;
+      return { inWorker: e.liveInWorker, stats: { ...e.liveStats } };
+    });
+    // The 3-D view: a clear sentence, not a blank box.
+    await page.waitForFunction(() => __wl.q('[data-wing3d]')?.dataset.state === 'unavailable', null, {
+      timeout: 30000,
+    });
+    assert.match(
+      await page.evaluate(() => __wl.q('[data-wing3d]').textContent),
+      /3-D view unavailable: the renderer could not be loaded/,
+    );
+    assert.ok(asked.includes('/pkg/wingbeat_live_bg.wasm'), asked.join(' '));
+    // Only the blocked full build was refused: the live one loaded once.
+    assert.equal(asked.filter((p) => p === '/pkg/wingbeat_live_bg.wasm').length, 1, JSON.stringify(lab));
+  } finally {
+    await context.close();
+  }
+});
+
+test('with both builds: the live one is asked for first, each is downloaded once, the 3-D wing is drawn', async () => {
+  const { page, context, problems } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  /** @type {string[]} */
+  const wasm = [];
+  context.on('request', (r) => {
+    if (pageWasm(r)) wasm.push(new URL(r.url()).pathname);
+  });
+  try {
+    await page.goto(env.url);
+    await waitRenders(page, 1);
+    await page.waitForFunction(
+      () => {
+        const b = __wl.q('[data-wing3d]');
+        return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
+      },
+      null,
+      { timeout: 60000 },
+    );
+    // The live worker runs a slider's recompute with the live build it was handed.
+    await page.focus('wing-lab input[type=range][data-key="beta0"]');
+    for (let i = 0; i < 3; i++) {
+      const n = await renders(page);
+      await page.keyboard.press('ArrowRight');
+      await waitRenders(page, n + 1);
+    }
+    const e = await page.evaluate(() => {
+      const en = /** @type {any} */ (document.querySelector('wing-lab')).engine;
+      return { full: en.fullReady, renderer: en.hasRenderer, inWorker: en.liveInWorker, stats: { ...en.liveStats } };
+    });
+    assert.equal(e.full, true);
+    assert.equal(e.renderer, true);
+    assert.equal(wasm[0], '/pkg/wingbeat_live_bg.wasm', wasm.join(' '));
+    assert.deepEqual([...wasm].sort(), ['/pkg/wingbeat_bg.wasm', '/pkg/wingbeat_live_bg.wasm'], wasm.join(' '));
+    if (e.inWorker) assert.ok(e.stats.posted >= 1, JSON.stringify(e.stats));
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});
