@@ -35,9 +35,36 @@ impl Contributions {
     }
 }
 
-/// Σ x².
+/// Σ x², summed in eight interleaved partial sums (x_0 + x_8 + …, x_1 + x_9 + …, …, then
+/// added together), so the sum is not one long chain of dependent additions; the result differs
+/// from the left-to-right sum only in rounding (≤ n ε relative either way).
 pub fn sum_sq(x: &[f64]) -> f64 {
-    x.iter().map(|v| v * v).sum()
+    max_abs_and_sum_sq(x).1
+}
+
+/// (max |x_i|, Σ x_i²) in one pass with eight interleaved lanes each (see [`sum_sq`]). NaNs are
+/// skipped by the maximum (as `f64::max` does) and propagate into the sum.
+pub fn max_abs_and_sum_sq(x: &[f64]) -> (f64, f64) {
+    const L: usize = 8;
+    let mut m = [0.0_f64; L];
+    let mut s = [0.0_f64; L];
+    let chunks = x.chunks_exact(L);
+    let rest = chunks.remainder();
+    for c in chunks {
+        for k in 0..L {
+            // `a > m` is false for a NaN: skipped, as f64::max skips it (and this form vectorises).
+            let a = c[k].abs();
+            m[k] = if a > m[k] { a } else { m[k] };
+            s[k] += c[k] * c[k];
+        }
+    }
+    for (k, v) in rest.iter().enumerate() {
+        m[k] = m[k].max(v.abs());
+        s[k] += v * v;
+    }
+    let max = m.iter().fold(0.0_f64, |a, &b| a.max(b));
+    let sum = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
+    (max, sum)
 }
 
 /// Shares of the three partial responses in the total (paper's definition), percent.
@@ -50,20 +77,20 @@ pub fn contributions(
 ) -> Contributions {
     // A growing (unstable) response can reach 1e200 and more: its squares would overflow, so
     // every series is scaled by one power of two (exact) chosen from the largest magnitude.
-    let all = [euler, centrifugal, coriolis, total];
-    let m = all
-        .iter()
-        .flat_map(|x| x.iter())
-        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    // One pass per series gives its largest magnitude and its unscaled Σx²; only when a scale is
+    // needed (magnitudes beyond 1e±100) are the sums taken again on the scaled values.
+    let all = [euler, centrifugal, coriolis, total].map(max_abs_and_sum_sq);
+    let m = all.iter().fold(0.0_f64, |m, v| m.max(v.0));
     let s = crate::analysis::beat::safe_scale(&[m]);
-    let ss = |x: &[f64]| {
+    let series = [euler, centrifugal, coriolis, total];
+    let ss = |i: usize| {
         if s == 1.0 {
-            sum_sq(x)
+            all[i].1
         } else {
-            x.iter().map(|v| (v * s) * (v * s)).sum()
+            series[i].iter().map(|v| (v * s) * (v * s)).sum()
         }
     };
-    let den = ss(total);
+    let den = ss(3);
     if den <= 0.0 || !den.is_finite() {
         return Contributions {
             euler: 0.0,
@@ -73,9 +100,9 @@ pub fn contributions(
         };
     }
     Contributions {
-        euler: 100.0 * ss(euler) / den,
-        centrifugal: 100.0 * ss(centrifugal) / den,
-        coriolis: 100.0 * ss(coriolis) / den,
+        euler: 100.0 * ss(0) / den,
+        centrifugal: 100.0 * ss(1) / den,
+        coriolis: 100.0 * ss(2) / den,
         aerodynamic: None,
     }
 }
@@ -96,5 +123,55 @@ pub fn contributions_with_aero(
     Contributions {
         aerodynamic: Some(if zero { 0.0 } else { aero }),
         ..base
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lane sums against the plain left-to-right sum and maximum, for every remainder length.
+    #[test]
+    fn lanes_agree_with_the_plain_sum_and_maximum() {
+        for n in 0..40 {
+            let x: Vec<f64> = (0..n)
+                .map(|i| ((i * 37 % 11) as f64 - 5.0) * 0.37)
+                .collect();
+            let plain: f64 = x.iter().map(|v| v * v).sum();
+            let max = x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let (m, s) = max_abs_and_sum_sq(&x);
+            assert_eq!(m, max, "n = {n}");
+            assert!(
+                (s - plain).abs() <= 1e-14 * plain.max(1e-300),
+                "n = {n}: {s} vs {plain}"
+            );
+        }
+        // The maximum skips a NaN (as f64::max does); the sum carries it.
+        let (m, s) = max_abs_and_sum_sq(&[1.0, f64::NAN, -3.0]);
+        assert_eq!(m, 3.0);
+        assert!(s.is_nan());
+    }
+
+    /// Shares do not depend on the units: the same responses at 1e150 and 1e-150 (scaled out by
+    /// a power of two) give the same percentages as at 1.
+    #[test]
+    fn shares_are_scale_free_and_match_the_definition() {
+        let t: Vec<f64> = (0..1001).map(|i| i as f64 * 1e-3).collect();
+        let e: Vec<f64> = t.iter().map(|t| (7.0 * t).sin()).collect();
+        let c: Vec<f64> = t.iter().map(|t| 0.3 * (3.0 * t).cos()).collect();
+        let k: Vec<f64> = t.iter().map(|t| 0.1 * t).collect();
+        let tot: Vec<f64> = (0..t.len()).map(|i| e[i] + c[i] + k[i]).collect();
+        let r = contributions(&e, &c, &k, &tot);
+        let sq = |x: &[f64]| x.iter().map(|v| v * v).sum::<f64>();
+        let den = sq(&tot);
+        assert!((r.euler - 100.0 * sq(&e) / den).abs() < 1e-12);
+        assert!((r.centrifugal - 100.0 * sq(&c) / den).abs() < 1e-12);
+        assert!((r.coriolis - 100.0 * sq(&k) / den).abs() < 1e-12);
+        for f in [1e150, 1e-150] {
+            let sc = |x: &[f64]| x.iter().map(|v| v * f).collect::<Vec<_>>();
+            let q = contributions(&sc(&e), &sc(&c), &sc(&k), &sc(&tot));
+            assert!((q.euler - r.euler).abs() < 1e-12 * r.euler, "{f}");
+            assert!((q.coriolis - r.coriolis).abs() < 1e-12 * r.coriolis, "{f}");
+        }
     }
 }
