@@ -58,6 +58,10 @@ mkdir -p "$dest/vendor"
 cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css "$dest/vendor/"
 cp node_modules/uplot/LICENSE "$dest/vendor/uPlot.LICENSE" 2>/dev/null || true
 
+# The lab's modules in one minified file, lab.bundle.js, which index.html's main.js imports
+# (scripts/bundle.mjs; the modules stay for embedding and the npm package).
+node scripts/bundle.mjs "$dest"
+
 # Brotli and gzip copies of the wasm, its glue and the vendor files, which scripts/serve.mjs sends
 # to browsers that accept them (the first visit's bytes, issue 25).
 node scripts/precompress.mjs "$dest"

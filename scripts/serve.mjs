@@ -9,7 +9,8 @@
 // is compressed in the background when the server starts). Every response has an ETag and
 // Last-Modified (Cache-Control: no-cache), so a second visit revalidates with 304s instead of
 // downloading again (the service worker, www/sw.js, serves it from its cache before that).
-//   node scripts/serve.mjs [root=www] [port=$PORT|8080] [--cors]   (port 0 = any free port)
+//   node scripts/serve.mjs [root=www] [port=$PORT|8080] [--cors] [--rebundle]   (port 0 = any free port)
+// --rebundle (`npm start`): lab.bundle.js is rebuilt before it is sent when a module is newer.
 // --cors (or startServer(root, port, { cors: true })) adds `Access-Control-Allow-Origin: *`,
 // what a lab host must send when course pages on other origins load lab.js, its modules, the
 // worker, the wasm and the stylesheets (docs/embedding.md, the element section).
@@ -135,6 +136,28 @@ function acceptedSet(/** @type {string | undefined} */ accept) {
   return accepted;
 }
 
+/** @type {Map<string, Promise<void>>} a rebuild of a root's bundle in progress */
+const rebuilding = new Map();
+/**
+ * Rebuilds `root`/lab.bundle.js when a module of `root` is newer (scripts/bundle.mjs, next to
+ * this file; a copy of this server without it serves the bundle as it is).
+ * @param {string} root
+ */
+async function rebundled(root) {
+  let mod;
+  try {
+    mod = await import(new URL('./bundle.mjs', import.meta.url).href);
+  } catch {
+    return;
+  }
+  if (!rebuilding.has(root) && mod.bundleStale(root)) {
+    const p = mod.bundle(root).then(() => undefined);
+    rebuilding.set(root, p);
+    p.finally(() => rebuilding.delete(root)).catch(() => {});
+  }
+  await rebuilding.get(root);
+}
+
 /** Compresses every text file under `dir` in the background (one at a time), for the first visit. */
 function warm(/** @type {string} */ dir) {
   const files = [];
@@ -169,8 +192,10 @@ function warm(/** @type {string} */ dir) {
  * Starts a server for `root` on 127.0.0.1:`port`; resolves to { server, url }.
  * @param {string} root
  * @param {number} [port]
- * @param {{ cors?: boolean, warm?: boolean }} [opts] cors: every response allows any origin
- *   (GET/HEAD); warm (default true): compress the root's text files in the background now
+ * @param {{ cors?: boolean, warm?: boolean, rebundle?: boolean }} [opts] cors: every response
+ *   allows any origin (GET/HEAD); warm (default true): compress the root's text files in the
+ *   background now; rebundle: before sending lab.bundle.js, rebuild it when a module of the root
+ *   is newer (scripts/bundle.mjs; `npm start`, so an edited module shows on reload)
  */
 export function startServer(root, port = 0, opts = {}) {
   /** @type {Record<string, string>} */
@@ -188,9 +213,27 @@ export function startServer(root, port = 0, opts = {}) {
       res.end();
       return;
     }
+    if (opts.rebundle && req.url && new URL(req.url, 'http://x').pathname === '/lab.bundle.js') {
+      rebundled(base).then(
+        () => handle(req, res),
+        (e) => {
+          res.writeHead(500, { 'Content-Type': 'text/plain; charset=utf-8', ...cors });
+          res.end(`lab.bundle.js could not be rebuilt: ${e && e.message ? e.message : e}`);
+        },
+      );
+      return;
+    }
+    handle(req, res);
+  });
+  /**
+   * Answers one GET or HEAD request.
+   * @param {http.IncomingMessage} req
+   * @param {http.ServerResponse} res
+   */
+  function handle(req, res) {
     let rel;
     try {
-      rel = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+      rel = decodeURIComponent(new URL(String(req.url), 'http://x').pathname);
     } catch {
       res.writeHead(400, cors);
       res.end('bad request');
@@ -250,7 +293,7 @@ export function startServer(root, port = 0, opts = {}) {
         );
       else send(body.size, body.encoding, () => fs.createReadStream(body.path).pipe(res));
     });
-  });
+  }
   return new Promise((resolve, reject) => {
     server.once('error', reject);
     server.listen(port, '127.0.0.1', () => {
@@ -263,6 +306,7 @@ export function startServer(root, port = 0, opts = {}) {
 if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
   const args = process.argv.slice(2);
   const cors = args.includes('--cors');
+  const rebundle = args.includes('--rebundle');
   const pos = args.filter((a) => !a.startsWith('--'));
   const root = pos[0] || 'www';
   const port = Number(pos[1] ?? process.env.PORT ?? 8080);
@@ -270,8 +314,8 @@ if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.me
     console.error(`serve: ${root}/pkg/wingbeat.js is missing; run "npm start" (or scripts/build-web.sh ${root}) first`);
     process.exit(1);
   }
-  startServer(root, port, { cors })
-    .catch(() => startServer(root, 0, { cors }))
+  startServer(root, port, { cors, rebundle })
+    .catch(() => startServer(root, 0, { cors, rebundle }))
     .then(({ url }) => {
       console.log(
         `wingbeat lab: ${url}  (embed demo: ${url}embed-demo.html${cors ? '; CORS: any origin' : ''}; Ctrl-C stops)`,

@@ -3,8 +3,7 @@
 // www/format.js markup), the shadow root's stylesheets, the focused element inside a shadow
 // root, input-kind detection and visually hidden text.
 import { parseRich } from './format.js';
-
-const HERE = new URL('.', import.meta.url);
+import { WWW as HERE } from './base.js';
 
 /**
  * el('button', { class: 'x', text: 'Run', onclick, 'aria-label': '…' }, ...children).

@@ -47,7 +47,12 @@
   const start = async () => {
     const lab = document.getElementById('lab');
     if (embed && lab) lab.setAttribute('embed', '');
-    await import(here('lab.js'));
+    // The bundle of lab.js, embed-api.js and their modules (scripts/bundle.mjs; built with the
+    // wasm): one request, and the embedding API is there as soon as the element is.
+    const bundle =
+      /** @type {{ embedApi: typeof import('./embed-api.js'), offline: typeof import('./offline.js') }} */ (
+        await import(here('lab.bundle.js'))
+      );
     let framed = true;
     try {
       framed = window.parent !== window;
@@ -55,14 +60,17 @@
       framed = true;
     }
     if (framed && lab) {
-      const api = /** @type {typeof import('./embed-api.js')} */ (await import(here('embed-api.js')));
+      const api = bundle.embedApi;
       // A malformed parent_origin keeps the API silent (nothing answered, no height posted)
       // rather than falling back to "any parent": the host asked for a restriction.
       api.startEmbedApi(lab, { parentOrigin: parentOriginError ? 'invalid:' : parentOrigin });
       if (parentOriginError) console.warn(`wingbeat lab: ${parentOriginError}; the embedding API stays silent.`);
     }
-    // offline.js may be missing (a trimmed copy of the site): the page works without it.
-    import(here('offline.js')).then((m) => m.registerOffline()).catch(() => {});
+    // Registering the service worker may fail (no support, opted out, a trimmed copy of the
+    // site): the page works without it.
+    Promise.resolve()
+      .then(() => bundle.offline.registerOffline())
+      .catch(() => {});
   };
   if (document.readyState === 'loading')
     document.addEventListener(

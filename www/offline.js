@@ -11,6 +11,7 @@
 //   - the user or host opted out (offlineOptOut below).
 // Opting out also unregisters a service worker this lab registered earlier for the same scope
 // and deletes its caches, so `?offline=0` is also the way to clear the offline copy.
+import { WWW } from './base.js';
 
 /** localStorage key: 'off' keeps the lab from registering its service worker in this browser. */
 export const OFFLINE_STORAGE_KEY = 'wingbeat-offline';
@@ -77,7 +78,7 @@ export async function registerOffline() {
   try {
     if (typeof navigator === 'undefined' || !('serviceWorker' in navigator)) return;
     if (!/^https?:$/.test(location.protocol) || !window.isSecureContext) return;
-    const swUrl = new URL('./sw.js', import.meta.url);
+    const swUrl = new URL('sw.js', WWW);
     if (swUrl.origin !== location.origin) return;
     const scope = new URL('./', swUrl).href;
     const nav = /** @type {PerformanceNavigationTiming | undefined} */ (

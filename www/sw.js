@@ -46,6 +46,7 @@
     'index.html',
     'main.js',
     'lab.js',
+    'lab.bundle.js',
     'worker.js',
     'style.css',
     'pkg/wingbeat_live.js',

@@ -3,7 +3,8 @@
 // behind it. With the full build unreachable, the paper case is still computed, drawn and
 // re-computed on a slider press (in the live worker, which was given the live build), and the
 // 3-D view says why it is missing; with both, each module is downloaded once (the workers get
-// the page's compiled modules), the live one first, and the 3-D wing is drawn.
+// the page's compiled modules), the live one first, the page runs the bundle of the lab's modules
+// (not the modules one by one), and the 3-D wing is drawn.
 //   node --test --test-concurrency=1 tests/e2e/first_load.test.mjs   (after scripts/build-web.sh www)
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -86,8 +87,11 @@ test('with both builds: the live one is asked for first, each is downloaded once
   const { page, context, problems } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
   /** @type {string[]} */
   const wasm = [];
+  /** @type {string[]} script requests of the page and its workers (not the service worker's precache) */
+  const scripts = [];
   context.on('request', (r) => {
     if (pageWasm(r)) wasm.push(new URL(r.url()).pathname);
+    if (!r.serviceWorker() && new URL(r.url()).pathname.endsWith('.js')) scripts.push(new URL(r.url()).pathname);
   });
   try {
     await page.goto(env.url);
@@ -111,6 +115,10 @@ test('with both builds: the live one is asked for first, each is downloaded once
       const en = /** @type {any} */ (document.querySelector('wing-lab')).engine;
       return { full: en.fullReady, renderer: en.hasRenderer, inWorker: en.liveInWorker, stats: { ...en.liveStats } };
     });
+    // The page runs the bundle of the lab's modules (scripts/bundle.mjs), not the modules.
+    assert.ok(scripts.includes('/lab.bundle.js'), scripts.join(' '));
+    for (const m of ['/lab.js', '/state.js', '/engine.js', '/views/numbers.js'])
+      assert.ok(!scripts.includes(m), `${m} fetched: ${scripts.join(' ')}`);
     assert.equal(e.full, true);
     assert.equal(e.renderer, true);
     assert.equal(wasm[0], '/pkg/wingbeat_live_bg.wasm', wasm.join(' '));

@@ -7,8 +7,7 @@ import { wasmModuleMessage } from './protocol.js';
 
 /** @typedef {typeof import('../pkg/wingbeat.js')} Wasm the wasm module's exports (www/pkg/wingbeat.d.ts) */
 
-/** The lab's folder (www/): pkg/ and worker.js are there. */
-const WWW = new URL('../', import.meta.url);
+import { WWW } from '../base.js';
 
 /**
  * The two builds of the module (scripts/build-web.sh): `live`, the live analysis alone (small:

@@ -5,6 +5,7 @@
 // Experiments that need a study (γ_0 sweep, initial-condition map) run it through the engine's
 // worker; the prediction fills in when it arrives. Reads the store; writes only `exp` and the
 // experiment's parameters (ctx.setParams).
+import { WWW } from '../base.js';
 import { el } from '../dom.js';
 import { plain, errorText } from '../format.js';
 import { LIVE_SEGMENT_LEN } from '../engine/requests.js';
@@ -16,7 +17,7 @@ export const title = 'Guided experiments';
 
 /** An absolute link to the lab page (index.html next to lab.js) with `query`. */
 export function experimentHref(id) {
-  return new URL(`../index.html?${experimentQuery(id)}`, import.meta.url).href;
+  return new URL(`index.html?${experimentQuery(id)}`, WWW).href;
 }
 
 /** @param {import('../lab.js').ViewContext} ctx */

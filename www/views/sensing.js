@@ -10,6 +10,7 @@
 // This file wires the panel and draws the map; its pieces: the analysis job (sensing-job.js),
 // the controls (sensing-controls.js), the plots (sensing-plots.js), the map's markers and legend
 // (sensing-map.js), and the pure words and data (www/sensemap.js).
+import { WWW } from '../base.js';
 import { el, rich, isTouch } from '../dom.js';
 import { fmt } from '../format.js';
 import { viridis } from '../plot.js';
@@ -40,10 +41,7 @@ function intro(ctx) {
   );
   const expLink = el('a', {
     class: 'wl-sense-exp',
-    href: new URL(
-      `../index.html?${experimentQuery('sensing', { panels: 'controls,experiments,sensing' })}`,
-      import.meta.url,
-    ).href,
+    href: new URL(`index.html?${experimentQuery('sensing', { panels: 'controls,experiments,sensing' })}`, WWW).href,
     text: 'Guided experiment: how many sensors does it take?',
   });
   expLink.addEventListener('click', (ev) => {
