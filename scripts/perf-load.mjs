@@ -4,10 +4,11 @@
 // Chromium's network emulation (DevTools protocol Network.emulateNetworkConditions) or none, and
 // we record
 //   * first_plot_ms: navigation → the first complete render (the beat's numbers and the plots
-//     drawn: the lab's `lastTiming.end`, on the page's clock from navigation start);
+//     drawn: the lab's `lastTiming.end`, on the page's clock from navigation start), once the
+//     lab is visible (its stylesheets applied; the first animation frame that sees both);
 //   * wing3d_ms: navigation → the 3-D view's first drawn frame (data-frames > 0);
 //   * bytes_first_plot: bytes over the wire (Playwright's encoded body + headers sizes, page and
-//     its workers) of the requests that finished before the first plot, and their count;
+//     its workers) of the requests that finished before the first plot was seen, and their count;
 //   * bytes_total: the same for everything loaded by the time the 3-D wing is drawn.
 // Medians over RUNS cold loads per profile. Used by scripts/perf.mjs (its `load` section) and
 // runnable alone:   node scripts/perf-load.mjs [--runs 5]   (after scripts/build-web.sh www)
@@ -52,26 +53,23 @@ export async function coldLoad(browser, url, conditions) {
   /** @type {{ at: number, req: import('playwright-core').Request }[]} */
   const finished = [];
   context.on('requestfinished', (req) => finished.push({ at: Date.now(), req }));
-  /** @type {number | null} wall time (node) of the first plot */
+  /** @type {number | null} wall time (node) when the first plot was seen */
   let firstAt = null;
-  await page.exposeFunction('__perfFirstPlot', () => {
-    if (firstAt === null) firstAt = Date.now();
-  });
-  await context.addInitScript(() => {
-    document.addEventListener('wl-rendered', () => /** @type {any} */ (window).__perfFirstPlot(), {
-      once: true,
-      capture: true,
-    });
-  });
   await page.goto(url, { waitUntil: 'commit' });
+  // The first plot counts once it can be seen: rendered, and the lab's root visible (it stays
+  // hidden until its stylesheets apply). The later of the render's end and the first animation
+  // frame that finds both.
   const firstPlot = await page.waitForFunction(
     () => {
       const lab = /** @type {any} */ (document.querySelector('wing-lab'));
-      return lab && lab.lastTiming ? lab.lastTiming.end : null;
+      const root = lab && lab.shadowRoot && lab.shadowRoot.querySelector('.wl-root');
+      if (!lab || !lab.lastTiming || !root || getComputedStyle(root).visibility !== 'visible') return null;
+      return Math.max(lab.lastTiming.end, performance.now());
     },
     null,
     { timeout: 120000, polling: 'raf' },
   );
+  firstAt = Date.now();
   const first_plot_ms = /** @type {number} */ (await firstPlot.jsonValue());
   const wing = await page.waitForFunction(
     () => {

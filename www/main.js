@@ -44,6 +44,24 @@
     history.replaceState(history.state, '', `${location.pathname}${rest ? '?' + rest : ''}${location.hash}`);
   }
 
+  /**
+   * Resolves when `lab` has rendered and loaded its full module, or after 20 s (at once without
+   * a lab element).
+   * @param {HTMLElement | null} lab
+   */
+  const settled = (lab) =>
+    new Promise((resolve) => {
+      const engine = () => /** @type {any} */ (lab)?.engine;
+      const full = () => {
+        const e = engine();
+        Promise.resolve(e && typeof e.loadFull === 'function' ? e.loadFull() : null).then(resolve, resolve);
+      };
+      setTimeout(resolve, 20000);
+      if (!lab) resolve(undefined);
+      else if (engine()?.ready) full();
+      else lab.addEventListener('wl-ready', full, { once: true });
+    });
+
   const start = async () => {
     const lab = document.getElementById('lab');
     if (embed && lab) lab.setAttribute('embed', '');
@@ -66,9 +84,11 @@
       api.startEmbedApi(lab, { parentOrigin: parentOriginError ? 'invalid:' : parentOrigin });
       if (parentOriginError) console.warn(`wingbeat lab: ${parentOriginError}; the embedding API stays silent.`);
     }
-    // Registering the service worker may fail (no support, opted out, a trimmed copy of the
-    // site): the page works without it.
-    Promise.resolve()
+    // The service worker's first install copies the whole site for offline use: it starts once
+    // the lab has drawn and its full wasm module has loaded (or after 20 s), so it never competes
+    // with the first plot or the 3-D wing for the connection. Registering may fail (no support,
+    // opted out, a trimmed copy of the site): the page works without it.
+    settled(lab)
       .then(() => bundle.offline.registerOffline())
       .catch(() => {});
   };

@@ -93,7 +93,9 @@
       while (next < all.length) {
         const url = all[next++];
         try {
-          const res = await fetch(new Request(url, { cache: 'reload', credentials: 'same-origin' }));
+          // Revalidated against the browser's HTTP cache (the server's ETags): what the page has
+          // just downloaded (the wasm modules above all) is not downloaded a second time.
+          const res = await fetch(new Request(url, { cache: 'no-cache', credentials: 'same-origin' }));
           if (!res.ok || res.redirected || res.type !== 'basic') throw new Error(`HTTP ${res.status}`);
           await cache.put(url, res);
         } catch (e) {
