@@ -1,8 +1,9 @@
 // @ts-check
 // Offline use in a classroom: registers the lab's service worker (www/sw.js), which keeps a copy
 // of the site's own files so that after one visit the lab works with the network off. Called by
-// the page (main.js: `import('./offline.js').then((m) => m.registerOffline())`); the <wing-lab>
-// element itself never registers a service worker (a host page decides that for its origin).
+// the page (main.js, from the bundle lab.bundle.js, once the lab has drawn and loaded its full
+// wasm module); the <wing-lab> element itself never registers a service worker (a host page
+// decides that for its origin).
 //
 // registerOffline() does nothing when:
 //   - the browser has no service workers, or the page is not a secure context (https:, or http:
