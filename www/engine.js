@@ -41,7 +41,7 @@
 // only when the page has the full module too, so the modal strains of a wing in use are always
 // at hand; the 3-D view awaits loadFull() before it asks for the renderer.
 import { FE_LAB_INPUT, SAMPLE_RATE_HZ, WING, customWing } from './state.js';
-import { createBuilds, loadWasm, defaultWorker, startWorker, splitAngles } from './engine/wasm.js';
+import { createBuilds, loadWasm, defaultWorker, startWorker, startFullWorker, splitAngles } from './engine/wasm.js';
 import { JOB } from './engine/protocol.js';
 import { liveAsk, liveOverrides, createLiveQueue } from './engine/requests.js';
 import { createJobs } from './engine/jobs.js';
@@ -146,7 +146,9 @@ export function createEngine(deps = {}) {
     return liveResult(ask, a, now() - t0);
   };
 
-  const jobs = createJobs(() => startWorker(deps.createWorker || defaultWorker, builds.fullModule(), 'full'));
+  const jobs = createJobs(() =>
+    startFullWorker(deps.createWorker || defaultWorker, builds.fullModule(), builds.fullComing),
+  );
   const live = createLiveQueue({
     start: () => startWorker(deps.createLiveWorker || defaultWorker, builds.liveModule(), 'live'),
     here: analyzeHere,

@@ -30,6 +30,15 @@ import {
  */
 let ready = null;
 /**
+ * While the page has said its compiled module follows ({ wasmPending: true }): resolves to it,
+ * or to undefined when the page says it will not come after all.
+ * @type {Promise<{ module: WebAssembly.Module, variant: 'live' | 'full' } | undefined> | null}
+ */
+let pending = null;
+/** @type {((m: { module: WebAssembly.Module, variant: 'live' | 'full' } | undefined) => void) | null} */
+let deliver = null;
+
+/**
  * The loaded module's exports, set before `ready` resolves (typed as the full build; the live
  * build has a subset, and the live worker is only given `analyze` jobs).
  * @type {typeof import('./pkg/wingbeat.js')}
@@ -136,13 +145,20 @@ const scope =
 
 scope.onmessage = async (ev) => {
   const req = readRequest(ev.data);
+  if ('wasmPending' in req) {
+    if (req.wasmPending && !ready && !pending) pending = new Promise((resolve) => (deliver = resolve));
+    else if (!req.wasmPending && deliver) deliver(undefined);
+    return;
+  }
   if ('wasmModule' in req) {
+    if (deliver) deliver({ module: req.wasmModule, variant: req.variant });
     start(req.wasmModule, req.variant);
     return;
   }
   const { id, kind } = req;
   try {
-    await start(undefined);
+    // The page's module when it said one follows, else the full build fetched here.
+    await (pending ? pending.then((m) => start(m && m.module, m ? m.variant : 'full')) : start(undefined));
     const job = Object.hasOwn(jobs, String(kind)) ? jobs[String(kind)] : null;
     if (!job) throw new Error(`unknown job ${String(kind).slice(0, 40)}`);
     const t0 = performance.now();

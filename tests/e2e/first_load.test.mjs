@@ -129,3 +129,27 @@ test('with both builds: the live one is asked for first, each is downloaded once
     await context.close();
   }
 });
+
+test('a study at startup (modes=fe: the FE wing in the study worker) waits for the page’s full module: one download, and the worker is handed it', async () => {
+  const { page, context, problems } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  /** @type {string[]} */
+  const wasm = [];
+  context.on('request', (r) => {
+    if (pageWasm(r)) wasm.push(new URL(r.url()).pathname);
+  });
+  try {
+    await page.goto(`${env.url}?modes=fe`);
+    // The FE wing's first mode (the shell FE, not the paper table's 62.5 Hz).
+    await page.waitForFunction(() => __wl.q('[data-field="freq-0"]')?.textContent === '62.49', null, {
+      timeout: 60000,
+    });
+    assert.deepEqual(
+      wasm.filter((p) => p === '/pkg/wingbeat_bg.wasm'),
+      ['/pkg/wingbeat_bg.wasm'],
+      `the full module is fetched once (the page's), not again by the worker: ${wasm.join(' ')}`,
+    );
+    assert.deepEqual(problems, []);
+  } finally {
+    await context.close();
+  }
+});

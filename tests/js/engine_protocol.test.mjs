@@ -16,6 +16,7 @@ import {
   resultMessage,
   errorMessage,
   wasmModuleMessage,
+  wasmPendingMessage,
   transferList,
 } from '../../www/engine/protocol.js';
 
@@ -54,6 +55,10 @@ test('what the engine writes is read by the worker as the job and its inputs', (
     variant: 'live',
   });
   assert.deepEqual(readRequest({ wasmModule: mod, variant: 'other' }), { wasmModule: mod, variant: 'full' });
+  // "The module follows" and "it will not": only a strict true waits.
+  assert.deepEqual(readRequest(wasmPendingMessage(true)), { wasmPending: true });
+  assert.deepEqual(readRequest(wasmPendingMessage(false)), { wasmPending: false });
+  assert.deepEqual(readRequest({ wasmPending: 'yes' }), { wasmPending: false });
   assert.deepEqual(readRequest(undefined), { id: undefined, kind: undefined, job: {} });
 });
 

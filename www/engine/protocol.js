@@ -4,6 +4,7 @@
 // are written once. Pure (no DOM, no wasm); tested in tests/js/engine_protocol.test.mjs.
 //
 //   page → worker   { wasmModule, variant }          first: the page's compiled wasm module ('live' or 'full' build)
+//                   { wasmPending: true | false }    or first: the module follows (wait for it) / will not (load it)
 //                   { id, kind, ...payload }         a job; kind ∈ JOB_KINDS
 //   worker → page   { ready: true }                  once, when the wasm has loaded
 //                   { id, progress: [done, total] }  any number of times
@@ -25,13 +26,20 @@ export const JOB = Object.freeze({
 /** @type {readonly string[]} */
 export const JOB_KINDS = Object.freeze(Object.values(JOB));
 
-/** Hands the page's compiled wasm module to a new worker (no second download or compile). */
 /**
- * The page's compiled module for a worker, and which build it is ('live' or 'full').
+ * Hands the page's compiled wasm module to a new worker (no second download or compile), and
+ * says which build it is ('live' or 'full').
  * @param {WebAssembly.Module} module
  * @param {'live' | 'full'} [variant]
  */
 export const wasmModuleMessage = (module, variant = 'full') => ({ wasmModule: module, variant });
+
+/**
+ * Tells a new worker that the page's compiled module is on its way (`true`: wait for it before
+ * the first job) or will not come after all (`false`: load it yourself).
+ * @param {boolean} coming
+ */
+export const wasmPendingMessage = (coming) => ({ wasmPending: coming });
 
 /**
  * A job for the worker.
@@ -45,10 +53,11 @@ export const jobMessage = (id, kind, payload = {}) => ({ id, kind, ...payload })
  * What the worker received: the wasm module, or a job (its id, kind and the whole message as
  * the job's inputs).
  * @param {unknown} data
- * @returns {{ wasmModule: WebAssembly.Module, variant: 'live' | 'full' } | { id: unknown, kind: unknown, job: Record<string, any> }}
+ * @returns {{ wasmModule: WebAssembly.Module, variant: 'live' | 'full' } | { wasmPending: boolean } | { id: unknown, kind: unknown, job: Record<string, any> }}
  */
 export function readRequest(data) {
   const d = /** @type {Record<string, any>} */ (data && typeof data === 'object' ? data : {});
+  if ('wasmPending' in d && !('id' in d)) return { wasmPending: d.wasmPending === true };
   if (d.wasmModule) return { wasmModule: d.wasmModule, variant: d.variant === 'live' ? 'live' : 'full' };
   return { id: d.id, kind: d.kind, job: d };
 }

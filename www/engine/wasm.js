@@ -3,7 +3,7 @@
 // module is stateless) and the workers (www/worker.js, given the page's compiled module first),
 // and the one reader of anglesAt's interleaved output. Paths resolve next to www/engine.js, also
 // when the lab is loaded from another origin.
-import { wasmModuleMessage } from './protocol.js';
+import { wasmModuleMessage, wasmPendingMessage } from './protocol.js';
 
 /** @typedef {typeof import('../pkg/wingbeat.js')} Wasm the wasm module's exports (www/pkg/wingbeat.d.ts) */
 
@@ -88,22 +88,25 @@ export function createBuilds(load = loadWasm, loadFirst = load === loadWasm ? lo
   let loaded = null;
   /** @type {Promise<Wasm> | null} */
   let loading = null;
+  const full = () => {
+    if (!loading) {
+      loading = load().then((m) => (loaded = m));
+      loading.catch(() => {
+        loading = null;
+      });
+    }
+    return loading;
+  };
   return {
     first: loadFirst,
-    full() {
-      if (!loading) {
-        loading = load().then((m) => (loaded = m));
-        loading.catch(() => {
-          loading = null;
-        });
-      }
-      return loading;
-    },
+    full,
     get loaded() {
       return loaded;
     },
     fullModule: () => (load === loadWasm ? compiledWasm() : null),
     liveModule: () => (loadFirst === loadLive ? compiledLive() : null),
+    /** The page's own loading of the full build, for startFullWorker (null with fakes). */
+    fullComing: load === loadWasm ? full : null,
   };
 }
 
@@ -136,6 +139,29 @@ export function defaultWorker() {
 export function startWorker(make, module, variant = 'full') {
   const w = make();
   if (module) w.postMessage(wasmModuleMessage(module, variant));
+  return w;
+}
+
+/**
+ * A new worker for the full build: given the page's compiled module at once when it has it;
+ * while the page is still loading it (`coming`, from createBuilds().full()), told that it
+ * follows and then given it, so the worker neither downloads nor compiles the 4.6 MB module a
+ * second time (a guided experiment in the address starts a study before the full build is in).
+ * @param {() => Worker} make
+ * @param {WebAssembly.Module | null} module
+ * @param {(() => Promise<unknown>) | null} coming null with a test's fake loaders
+ */
+export function startFullWorker(make, module, coming) {
+  if (module || !coming) return startWorker(make, module, 'full');
+  const w = make();
+  w.postMessage(wasmPendingMessage(true));
+  coming().then(
+    () => {
+      const m = compiledWasm();
+      w.postMessage(m ? wasmModuleMessage(m, 'full') : wasmPendingMessage(false));
+    },
+    () => w.postMessage(wasmPendingMessage(false)),
+  );
   return w;
 }
 
