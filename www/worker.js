@@ -10,6 +10,8 @@
 // studies (and `fe`), one for the live `analyze` of the sliders (www/engine/requests.js), so
 // neither waits for the other.
 import { decimate } from './decimate.js';
+import { WWW } from './base.js';
+import { VARIANT_FILES } from './engine/wasm.js';
 import { errorText } from './format.js';
 import {
   JOB,
@@ -46,12 +48,9 @@ let deliver = null;
 let wb = /** @type {any} */ (null);
 function start(/** @type {WebAssembly.Module | undefined} */ module, variant = 'full') {
   if (!ready) {
-    const files =
-      variant === 'live'
-        ? ['./pkg/wingbeat_live.js', './pkg/wingbeat_live_bg.wasm']
-        : ['./pkg/wingbeat.js', './pkg/wingbeat_bg.wasm'];
-    ready = import(files[0]).then(async (m) => {
-      await m.default({ module_or_path: module || new URL(files[1], import.meta.url) });
+    const files = VARIANT_FILES[variant === 'live' ? 'live' : 'full'];
+    ready = import(new URL(files.glue, WWW).href).then(async (m) => {
+      await m.default({ module_or_path: module || new URL(files.wasm, WWW) });
       wb = m;
     });
     // Tells the engine that the wasm is loaded (the live worker is used once it is).

@@ -8,7 +8,7 @@
 //   node --test --test-concurrency=1 tests/e2e/first_load.test.mjs   (after scripts/build-web.sh www)
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { setup, openPage, waitRenders, renders } from './helpers.mjs';
+import { setup, openPage, waitRenders, renders, plotPrint, waitWing3d } from './helpers.mjs';
 
 let env;
 before(async () => {
@@ -19,20 +19,6 @@ after(async () => {
 });
 
 const cell = (page, field) => page.textContent(`wing-lab [data-field="${field}"]`);
-/** Sum of |y| of every plotted series per plot (changes when the plotted data change). */
-const plotPrint = (page) =>
-  page.evaluate(() => {
-    const lab = /** @type {any} */ (document.querySelector('wing-lab'));
-    /** @type {Record<string, number>} */
-    const out = {};
-    for (const [name, u] of Object.entries(lab.plots)) {
-      let sum = 0;
-      for (const series of /** @type {any} */ (u).data.slice(1))
-        for (const v of series) if (v != null) sum += Math.abs(v);
-      out[name] = sum;
-    }
-    return out;
-  });
 /** A wasm request of the page or its dedicated workers (the service worker's precache is left out). */
 const pageWasm = (/** @type {import('playwright-core').Request} */ r) =>
   new URL(r.url()).pathname.endsWith('.wasm') && !r.serviceWorker();
@@ -96,14 +82,7 @@ test('with both builds: the live one is asked for first, each is downloaded once
   try {
     await page.goto(env.url);
     await waitRenders(page, 1);
-    await page.waitForFunction(
-      () => {
-        const b = __wl.q('[data-wing3d]');
-        return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
-      },
-      null,
-      { timeout: 60000 },
-    );
+    await waitWing3d(page);
     // The live worker runs a slider's recompute with the live build it was handed.
     await page.focus('wing-lab input[type=range][data-key="beta0"]');
     for (let i = 0; i < 3; i++) {

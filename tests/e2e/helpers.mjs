@@ -239,3 +239,28 @@ export async function pngHasColours(page, buf, colours, region = [0, 0, 1, 1]) {
     [b64, colours, region],
   );
 }
+
+/** A cheap fingerprint of what the lab `sel`'s plots show: the sum of |y| of every series, per plot. */
+export const plotPrint = (page, sel = 'wing-lab') =>
+  page.evaluate((s) => {
+    const lab = document.querySelector(s);
+    const out = {};
+    for (const [name, u] of Object.entries(lab.plots)) {
+      let sum = 0;
+      for (const series of u.data.slice(1)) for (const v of series) if (v != null) sum += Math.abs(v);
+      out[name] = sum;
+    }
+    return out;
+  }, sel);
+
+/** Waits until the 3-D view is ready and has drawn at least one frame of the wing. */
+export async function waitWing3d(page, timeout = 60000) {
+  await page.waitForFunction(
+    () => {
+      const b = __wl.q('[data-wing3d]');
+      return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
+    },
+    null,
+    { timeout },
+  );
+}

@@ -5,7 +5,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { setup, openPage, waitRenders, renders, pngStats, OUT } from './helpers.mjs';
+import { setup, openPage, waitRenders, renders, pngStats, plotPrint, OUT } from './helpers.mjs';
 
 let env;
 before(async () => {
@@ -40,19 +40,6 @@ const peakHz = (page, term, sel = 'wing-lab') =>
     },
     [term, sel],
   );
-
-/** A cheap fingerprint of what the plots currently show. */
-const plotPrint = (page, sel = 'wing-lab') =>
-  page.evaluate((s) => {
-    const lab = document.querySelector(s);
-    const out = {};
-    for (const [name, u] of Object.entries(lab.plots)) {
-      let sum = 0;
-      for (const series of u.data.slice(1)) for (const v of series) if (v != null) sum += Math.abs(v);
-      out[name] = sum;
-    }
-    return out;
-  }, sel);
 
 async function press(page, key, selector, sel = 'wing-lab') {
   const before = await renders(page, sel);

@@ -10,7 +10,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { createRequire } from 'node:module';
-import { setup, openPage, waitRenders, OUT } from './helpers.mjs';
+import { setup, openPage, waitRenders, waitWing3d, OUT } from './helpers.mjs';
 import { experimentQuery } from '../../www/experiments.js';
 
 const require = createRequire(import.meta.url);
@@ -299,14 +299,7 @@ test('the 3-D wing coloured by detectability, with the K best sensors as numbere
   await waitRenders(page, 1);
   const w3 = 'section.wl-wing3d';
   await page.locator(`wing-lab ${w3}`).scrollIntoViewIfNeeded();
-  await page.waitForFunction(
-    () => {
-      const b = __wl.q('[data-wing3d]');
-      return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
-    },
-    null,
-    { timeout: 90000 },
-  );
+  await waitWing3d(page, 90000);
   const colourSel = 'select[id$="w3-colour"]';
   const setColour = (v) =>
     page.evaluate(

@@ -6,7 +6,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { setup, openPage, waitRenders, pngStats, pngForeground, pngHasColours, OUT } from './helpers.mjs';
+import { setup, openPage, waitRenders, pngStats, pngForeground, pngHasColours, waitWing3d, OUT } from './helpers.mjs';
 
 const SIZES = [
   { name: 'desktop', width: 1280, height: 800 },
@@ -33,14 +33,7 @@ async function open(viewport, query = '') {
 
 /** Waits for the 3-D view without scrolling (it must start by itself when on screen). */
 async function ready3d(page) {
-  await page.waitForFunction(
-    () => {
-      const b = __wl.q('[data-wing3d]');
-      return b && b.dataset.state === 'ready' && Number(b.dataset.frames || 0) > 0;
-    },
-    null,
-    { timeout: 90000 },
-  );
+  await waitWing3d(page, 90000);
   await page.waitForTimeout(150);
 }
 
