@@ -24,6 +24,7 @@ const out = resolve(outArg);
 /** Files the lab loads by URL (not by import): engine.js and dom.js resolve them next to themselves. */
 const ASSETS = [
   'worker.js',
+  'render-worker.js',
   'style.css',
   'vendor/uPlot.esm.js',
   'vendor/uPlot.min.css',
@@ -68,7 +69,7 @@ function graph(entries) {
   return seen;
 }
 
-const files = new Set([...graph(['lab.js', 'worker.js']), ...ASSETS]);
+const files = new Set([...graph(['lab.js', 'worker.js', 'render-worker.js']), ...ASSETS]);
 for (const f of files) if (!existsSync(join(www, f))) throw new Error(`assemble: ${f} missing in ${www} (run scripts/build-web.sh www)`);
 
 const cargo = readFileSync(join(root, 'Cargo.toml'), 'utf8');
@@ -101,6 +102,7 @@ const pkg = {
     '.': { types: './lab.d.ts', default: './lab.js' },
     './lab.js': { types: './lab.d.ts', default: './lab.js' },
     './worker.js': './worker.js',
+    './render-worker.js': './render-worker.js',
     './style.css': './style.css',
     './wasm': './pkg/wingbeat_bg.wasm',
     './wasm-live': './pkg/wingbeat_live_bg.wasm',

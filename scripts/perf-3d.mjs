@@ -84,7 +84,9 @@ export function cpuByProcess(rootPid) {
  * Plays the lab's 3-D view for `seconds` and measures it. `target`: a Playwright Browser (a page
  * is opened at `url` with `viewport`) or a Page already showing the lab.
  * @param {any} target
- * @param {{ url?: string, seconds?: number, viewport?: {width: number, height: number}, sliders?: number, setup?: string, pid?: number }} [opts]
+ * @param {{ url?: string, seconds?: number, viewport?: {width: number, height: number}, sliders?: number, setup?: string, pid?: number, render?: string }} [opts]
+ *   `render: 'main'` draws the view on the page's main thread (the lab's `render` attribute), else
+ *   in its worker where the browser can.
  */
 export async function measure3d(target, opts = {}) {
   // Chromium runs as a child of this node process (Playwright's launch); other browsers of the
@@ -98,6 +100,13 @@ export async function measure3d(target, opts = {}) {
   let context = null;
   if (own) {
     ({ page, context } = await openPage(target, opts.url, viewport));
+    if (opts.render === 'main')
+      await page.addInitScript(() =>
+        document.addEventListener('DOMContentLoaded', () => {
+          const lab = document.querySelector('wing-lab');
+          if (lab) lab.setAttribute('render', 'main');
+        }),
+      );
   }
   const consoleLog = [];
   const onConsole = (m) => consoleLog.push({ type: m.type(), text: m.text() });
@@ -124,8 +133,9 @@ export async function measure3d(target, opts = {}) {
       return {
         state: b.dataset.state,
         backend: b.dataset.backend || null,
+        thread: b.dataset.thread || null,
         css: r ? [Math.round(r.width), Math.round(r.height)] : null,
-        backing: c ? [c.width, c.height] : null,
+        backing: b.dataset.backing ? b.dataset.backing.split('x').map(Number) : null,
         dpr: devicePixelRatio,
         onScreen: !!r && r.bottom > 0 && r.top < innerHeight,
       };
@@ -228,7 +238,7 @@ export async function measure3d(target, opts = {}) {
 
 function table(rows) {
   const head =
-    '| backend | canvas CSS px → backing px (DPR) | rAF interval median / p90 (ms) | fps (median) | wing frames/s | JS per frame median / p90 (ms) | CPU ms per frame: renderer / GPU process / browser | ReadPixels warnings | load |';
+    '| backend (drawn on) | canvas CSS px → backing px (DPR) | rAF interval median / p90 (ms) | fps (median) | wing frames/s | JS per frame median / p90 (ms) | CPU ms per frame: renderer / GPU process / browser | ReadPixels warnings | load |';
   const lines = [head, '|---|---|---|---|---|---|---|---|---|'];
   for (const r of rows) {
     if (!r.raf_interval_ms) {
@@ -236,7 +246,7 @@ function table(rows) {
       continue;
     }
     lines.push(
-      `| ${r.backend} | ${r.css.join('×')} → ${r.backing.join('×')} (${r.dpr}) | ${r.raf_interval_ms.median} / ${r.raf_interval_ms.p90} | ${r.fps_median} | ${r.wing_frames_per_s} | ${r.js_per_frame_ms.median} / ${r.js_per_frame_ms.p90} | ${r.cpu_ms_per_frame.renderer} / ${r.cpu_ms_per_frame['gpu-process']} / ${r.cpu_ms_per_frame.browser} | ${r.readpixels_warnings} | ${r.load} |`,
+      `| ${r.backend} (${r.thread || '?'}) | ${r.css.join('×')} → ${r.backing.join('×')} (${r.dpr}) | ${r.raf_interval_ms.median} / ${r.raf_interval_ms.p90} | ${r.fps_median} | ${r.wing_frames_per_s} | ${r.js_per_frame_ms.median} / ${r.js_per_frame_ms.p90} | ${r.cpu_ms_per_frame.renderer} / ${r.cpu_ms_per_frame['gpu-process']} / ${r.cpu_ms_per_frame.browser} | ${r.readpixels_warnings} | ${r.load} |`,
     );
   }
   return lines.join('\n');
@@ -254,36 +264,41 @@ async function main() {
   const sliders = Number(arg('--sliders', '0'));
   const setupJs = arg('--setup', undefined);
   const query = arg('--query', '');
+  const renders = arg('--render', 'worker') === 'both' ? ['worker', 'main'] : [arg('--render', 'worker')];
   const env = await setup();
   const rows = [];
   try {
-    if (!only || only === 'webgl2') {
-      rows.push({
-        flags: 'default',
-        ...(await measure3d(env.browser, {
-          url: env.url + query,
-          setup: setupJs,
-          seconds,
-          viewport: { width: vw, height: vh },
-          sliders,
-        })),
-      });
-    }
-    if (!only || only === 'webgpu') {
-      const b = await chromium.launch({ executablePath: CHROMIUM, args: [...ARGS, ...WEBGPU_FLAGS], headless: true });
-      try {
+    for (const render of renders) {
+      if (!only || only === 'webgl2') {
         rows.push({
-          flags: 'webgpu',
-          ...(await measure3d(b, {
+          flags: 'default',
+          ...(await measure3d(env.browser, {
             url: env.url + query,
             setup: setupJs,
             seconds,
             viewport: { width: vw, height: vh },
             sliders,
+            render,
           })),
         });
-      } finally {
-        await b.close();
+      }
+      if (!only || only === 'webgpu') {
+        const b = await chromium.launch({ executablePath: CHROMIUM, args: [...ARGS, ...WEBGPU_FLAGS], headless: true });
+        try {
+          rows.push({
+            flags: 'webgpu',
+            ...(await measure3d(b, {
+              url: env.url + query,
+              setup: setupJs,
+              seconds,
+              viewport: { width: vw, height: vh },
+              sliders,
+              render,
+            })),
+          });
+        } finally {
+          await b.close();
+        }
       }
     }
   } finally {

@@ -290,10 +290,25 @@ async function sliderLatency(env) {
   const scenarios = [
     { name: 'paper case, 2 s, 3-D view shown (paused)', query: '', play: false },
     { name: 'f_d 25.5 Hz, 10 s (longest), 3-D view playing', query: '?flap_hz=25.5&duration=10', play: true },
-  ];
+    {
+      name: '6 FE modes, f_d 25.5 Hz, 10 s, 3-D view playing',
+      query: '?modes=fe&n_modes=6&flap_hz=25.5&duration=10',
+      play: true,
+    },
+  ].filter((_, i) => !process.env.LATENCY_SCENARIOS || process.env.LATENCY_SCENARIOS.split(',').includes(String(i)));
+  // LATENCY_RENDER=main: the 3-D view drawn on the page's main thread (the lab's render="main"),
+  // for the side-by-side with the worker (the default)
+  const render = process.env.LATENCY_RENDER || 'worker';
   const out = [];
   for (const sc of scenarios) {
     const { page, context } = await openPage(env.browser, env.url + sc.query, { width: 1280, height: 800 });
+    if (render === 'main')
+      await page.addInitScript(() =>
+        document.addEventListener('DOMContentLoaded', () => {
+          const lab = document.querySelector('wing-lab');
+          if (lab) lab.setAttribute('render', 'main');
+        }),
+      );
     await page.goto(env.url + sc.query);
     await waitRenders(page, 1);
     await page
@@ -365,8 +380,9 @@ async function sliderLatency(env) {
       const compute = fresh.map((p) => p.render.compute);
       const plots = fresh.map((p) => p.render.end - p.down);
       const long = lat.long.filter((x) => x.start >= t0);
+      const thread = await page.evaluate(() => __wl.q('[data-wing3d]').dataset.thread || null);
       out.push({
-        scenario: sc.name,
+        scenario: `${sc.name} (3-D drawn on the ${thread === 'worker' ? 'worker' : 'main thread'})`,
         slider: key,
         presses: perPress.length,
         keydown_to_paint_ms: {

@@ -41,7 +41,15 @@
 // only when the page has the full module too, so the modal strains of a wing in use are always
 // at hand; the 3-D view awaits loadFull() before it asks for the renderer.
 import { FE_LAB_INPUT, SAMPLE_RATE_HZ, WING, customWing } from './state.js';
-import { createBuilds, loadWasm, defaultWorker, startWorker, startFullWorker, splitAngles } from './engine/wasm.js';
+import {
+  createBuilds,
+  loadWasm,
+  defaultWorker,
+  renderWorker,
+  startWorker,
+  startFullWorker,
+  splitAngles,
+} from './engine/wasm.js';
 import { JOB } from './engine/protocol.js';
 import { liveAsk, liveOverrides, createLiveQueue } from './engine/requests.js';
 import { createJobs } from './engine/jobs.js';
@@ -102,7 +110,7 @@ function liveResult(
 }
 
 /**
- * @param {{ load?: () => Promise<Wasm>, loadLive?: () => Promise<Wasm>, createWorker?: () => Worker, createLiveWorker?: () => Worker, feInput?: FemInput }} [deps]
+ * @param {{ load?: () => Promise<Wasm>, loadLive?: () => Promise<Wasm>, createWorker?: () => Worker, createLiveWorker?: () => Worker, createRenderWorker?: () => Worker, feInput?: FemInput }} [deps]
  *   `load` resolves to the full wasm module's exports (default: loadWasm), `loadLive` to the
  *   live build's (default: loadLive with the default `load`, else `load` itself);
  *   `createWorker` makes the study worker, `createLiveWorker` the live worker (default for
@@ -206,6 +214,23 @@ export function createEngine(deps = {}) {
     get renderer() {
       const wf = builds.loaded;
       return wf && wf.WingView;
+    },
+    /**
+     * What the 3-D view needs to draw from a worker (www/render-worker.js): a new render worker,
+     * the page's compiled full module for it, and the renderer's camera fit (WingView.fitCamera,
+     * run on the page). Null while the full build is not loaded, or with a test's fake loaders.
+     * @returns {{ worker: Worker, module: WebAssembly.Module, fitCamera: (cam: number[], xyz: Float32Array, margin: number, aspect: number) => ArrayLike<number> } | null}
+     */
+    renderWorker() {
+      const module = builds.fullModule();
+      const wf = builds.loaded;
+      if (!module || !wf || typeof wf.WingView !== 'function' || typeof wf.WingView.fitCamera !== 'function')
+        return null;
+      return {
+        worker: (deps.createRenderWorker || renderWorker)(),
+        module,
+        fitCamera: (cam, xyz, margin, aspect) => wf.WingView.fitCamera(cam, xyz, margin, aspect),
+      };
     },
     limits() {
       return need().limits();

@@ -42,8 +42,10 @@
 // Attributes: every URL parameter of www/state.js (alpha0, beta0, gamma0, flap_hz, zeta,
 // alpha_phase, beta_phase, gamma_phase, duration, modes, mode, detrend, panels), plus
 // `sync-url` (state read from and written to the page's query string), `embed` (compact, one
-// column) and `layout` (wide | medium | narrow: a fixed layout instead of the width's). They are
-// read when the element connects; later changes apply too (observedAttributes).
+// column), `layout` (wide | medium | narrow: a fixed layout instead of the width's) and `render`
+// (`main`: the 3-D view draws on the page's main thread instead of its worker, e.g. to compare;
+// read when the view is made). They are read when the element connects; later changes apply too
+// (observedAttributes).
 // Several labs on one page are independent: each has its own store, engine and worker; they
 // share the (stateless) wasm module. Assets resolve relative to this file, also when it is
 // loaded from another origin (the lab's host must then send CORS headers; the worker starts

@@ -48,6 +48,7 @@
     'lab.js',
     'lab.bundle.js',
     'worker.js',
+    'render-worker.js',
     'style.css',
     'pkg/wingbeat_live.js',
     'pkg/wingbeat_live_bg.wasm',

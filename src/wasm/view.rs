@@ -20,7 +20,7 @@
 use super::marshal::{bool_arg, f64_array_arg, finite_arg, int_arg, kind, number_arg, text_arg};
 use crate::render::gpu::{open_device, Renderer};
 use crate::render::mesh::WingMesh;
-use crate::render::scene::{ColourMode, FrameParams, Legend, OrbitKey};
+use crate::render::scene::{ColourMode, FrameParams, Legend, OrbitCamera, OrbitKey};
 use crate::render::RenderError;
 use wasm_bindgen::prelude::*;
 
@@ -50,18 +50,57 @@ const MAX_CAMERA: f64 = 1e6;
 /// Largest canvas side `resize` takes, device pixels (browsers cap canvases near 32 767).
 const MAX_CANVAS_PX: usize = 32_768;
 
-/// The canvas argument of the constructors: an `HTMLCanvasElement`, else an error naming it.
-fn canvas_arg(canvas: JsValue) -> Result<web_sys::HtmlCanvasElement, JsError> {
+/// The canvas argument of the constructors: an `HTMLCanvasElement` (the page's canvas) or an
+/// `OffscreenCanvas` (one handed to a worker with `transferControlToOffscreen`, so the view
+/// draws off the main thread: www/render-worker.js), else an error naming it. Returns the wgpu
+/// target and the drawing buffer's size.
+fn canvas_arg(canvas: JsValue) -> Result<(wgpu::SurfaceTarget<'static>, u32, u32), JsError> {
     let what = kind(&canvas);
-    canvas
-        .dyn_into::<web_sys::HtmlCanvasElement>()
-        .map_err(|_| {
-            super::marshal::err(crate::WingbeatError::invalid(
-                "canvas",
-                what,
-                "an HTMLCanvasElement",
-            ))
-        })
+    let canvas = match canvas.dyn_into::<web_sys::HtmlCanvasElement>() {
+        Ok(c) => {
+            let (w, h) = (c.width(), c.height());
+            return Ok((wgpu::SurfaceTarget::Canvas(c), w, h));
+        }
+        Err(v) => v,
+    };
+    match canvas.dyn_into::<web_sys::OffscreenCanvas>() {
+        Ok(c) => {
+            let (w, h) = (c.width(), c.height());
+            Ok((wgpu::SurfaceTarget::OffscreenCanvas(c), w, h))
+        }
+        Err(_) => Err(super::marshal::err(crate::WingbeatError::invalid(
+            "canvas",
+            what,
+            "an HTMLCanvasElement or an OffscreenCanvas",
+        ))),
+    }
+}
+
+/// The points of `fitPoints` / `fitCamera`: x, y, z triples as f32.
+fn fit_points_arg(xyz: &JsValue) -> Result<Vec<[f32; 3]>, JsError> {
+    let xyz: Vec<f32> = f64_array_arg(xyz, "xyz", 0, MAX_FIT_VALUES)?
+        .into_iter()
+        .map(|v| v as f32)
+        .collect();
+    if xyz.len() % 3 != 0 {
+        return Err(JsError::new(&format!(
+            "fitPoints: {} values is not a list of x, y, z triples",
+            xyz.len()
+        )));
+    }
+    Ok(xyz.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect())
+}
+
+/// The camera `[tx, ty, tz, yaw, pitch, distance]` of `camera()`.
+fn camera_vec(c: &OrbitCamera) -> Vec<f64> {
+    vec![
+        c.target[0] as f64,
+        c.target[1] as f64,
+        c.target[2] as f64,
+        c.yaw as f64,
+        c.pitch as f64,
+        c.distance as f64,
+    ]
 }
 
 /// The pose arguments of `set_frame` and `setPose`: three numbers (non-finite ones are drawn as
@@ -117,7 +156,8 @@ impl WingView {
     /// synthetic wing. Rejects with a clear reason when neither WebGPU nor WebGL2 works, the
     /// canvas is zero-sized, or the mesh is invalid.
     pub async fn create(
-        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement")] canvas: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement | OffscreenCanvas")]
+        canvas: JsValue,
         mesh_json: JsValue,
     ) -> Result<WingView, JsError> {
         let mesh = parse_mesh(&mesh_json)?;
@@ -130,7 +170,8 @@ impl WingView {
     /// not JSON. An empty `strain_nodes` draws without strain colours.
     #[wasm_bindgen(js_name = createFromArrays)]
     pub async fn create_from_arrays(
-        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement")] canvas: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement | OffscreenCanvas")]
+        canvas: JsValue,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] nodes: JsValue,
         #[wasm_bindgen(unchecked_param_type = "Uint32Array | number[]")] triangles: JsValue,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] shapes: JsValue,
@@ -153,7 +194,8 @@ impl WingView {
     /// to 1..=1000; `2·n_span·n_chord − n_chord` triangles), e.g. for frame-time benchmarks.
     #[wasm_bindgen(js_name = createSynthetic)]
     pub async fn create_synthetic(
-        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement")] canvas: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "HTMLCanvasElement | OffscreenCanvas")]
+        canvas: JsValue,
         #[wasm_bindgen(unchecked_param_type = "number")] n_span: JsValue,
         #[wasm_bindgen(unchecked_param_type = "number")] n_chord: JsValue,
     ) -> Result<WingView, JsError> {
@@ -172,23 +214,20 @@ impl WingView {
 
 impl WingView {
     async fn with_mesh(
-        canvas: web_sys::HtmlCanvasElement,
+        (target, width, height): (wgpu::SurfaceTarget<'static>, u32, u32),
         mesh: WingMesh,
     ) -> Result<WingView, JsError> {
-        let (width, height) = (canvas.width(), canvas.height());
         if width == 0 || height == 0 {
             return Err(js_err(RenderError::ZeroSize { width, height }));
         }
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
         desc.backends = wgpu::Backends::BROWSER_WEBGPU | wgpu::Backends::GL;
         let instance = wgpu::util::new_instance_with_webgpu_detection(desc).await;
-        let surface = instance
-            .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
-            .map_err(|e| {
-                js_err(RenderError::Surface(format!(
-                    "{e} (the canvas may already have a 2d context, or WebGL2 is disabled)"
-                )))
-            })?;
+        let surface = instance.create_surface(target).map_err(|e| {
+            js_err(RenderError::Surface(format!(
+                "{e} (the canvas may already have a 2d context, or WebGL2 is disabled)"
+            )))
+        })?;
         let ctx = open_device(
             &instance,
             Some(&surface),
@@ -421,15 +460,7 @@ impl WingView {
 
     /// The camera as `[tx, ty, tz, yaw, pitch, distance]` (m, rad, m).
     pub fn camera(&self) -> Vec<f64> {
-        let c = &self.renderer.camera;
-        vec![
-            c.target[0] as f64,
-            c.target[1] as f64,
-            c.target[2] as f64,
-            c.yaw as f64,
-            c.pitch as f64,
-            c.distance as f64,
-        ]
+        camera_vec(&self.renderer.camera)
     }
 
     /// Frames the points `xyz` (flat x, y, z triples, m, fixed frame; e.g. the wing's outline
@@ -446,23 +477,52 @@ impl WingView {
         #[wasm_bindgen(unchecked_param_type = "number")] margin: JsValue,
     ) -> Result<Vec<f64>, JsError> {
         let margin = finite_arg(&margin, "margin", 0.0, 0.45)? as f32;
-        let xyz: Vec<f32> = f64_array_arg(&xyz, "xyz", 0, MAX_FIT_VALUES)?
-            .into_iter()
-            .map(|v| v as f32)
-            .collect();
-        if xyz.len() % 3 != 0 {
-            return Err(JsError::new(&format!(
-                "fitPoints: {} values is not a list of x, y, z triples",
-                xyz.len()
-            )));
-        }
-        let pts: Vec<[f32; 3]> = xyz.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
+        let pts = fit_points_arg(&xyz)?;
         let aspect = self.config.width as f32 / self.config.height.max(1) as f32;
         if !self.renderer.camera.fit_points(&pts, aspect, margin) {
             return Err(JsError::new("fitPoints: no finite point to frame"));
         }
         self.update();
         Ok(self.camera())
+    }
+
+    /// `fitPoints` without a view: the camera `camera` (`[tx, ty, tz, yaw, pitch, distance]`, as
+    /// `camera()` returns it) fitted to the points `xyz` with `margin` for a canvas of aspect
+    /// `aspect` (width / height, 1e-3…1e3). No GPU: the page calls it while a worker owns the
+    /// view (www/wing3d/remote-view.js), so one fit serves both. Rejects what `setCamera` and
+    /// `fitPoints` reject.
+    #[wasm_bindgen(js_name = fitCamera)]
+    pub fn fit_camera(
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] camera: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float32Array | Float64Array | number[]")]
+        xyz: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] margin: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] aspect: JsValue,
+    ) -> Result<Vec<f64>, JsError> {
+        let c = f64_array_arg(&camera, "camera", 6, 6)?;
+        let margin = finite_arg(&margin, "margin", 0.0, 0.45)? as f32;
+        let aspect = finite_arg(&aspect, "aspect", 1e-3, 1e3)? as f32;
+        let pts = fit_points_arg(&xyz)?;
+        let mut cam = OrbitCamera::for_span(1.0);
+        let ok = c.iter().all(|v| v.is_finite() && v.abs() <= MAX_CAMERA)
+            && c[5] > 0.0
+            && cam.set(
+                [c[0] as f32, c[1] as f32, c[2] as f32],
+                c[3] as f32,
+                c[4] as f32,
+                c[5] as f32,
+            );
+        if !ok {
+            return Err(super::marshal::err(crate::WingbeatError::invalid(
+                "camera",
+                format!("{c:?}"),
+                format!("[tx, ty, tz, yaw, pitch, distance]: finite numbers within ±{MAX_CAMERA}, distance > 0 (m, rad)"),
+            )));
+        }
+        if !cam.fit_points(&pts, aspect, margin) {
+            return Err(JsError::new("fitPoints: no finite point to frame"));
+        }
+        Ok(camera_vec(&cam))
     }
 
     fn update(&mut self) -> JsValue {

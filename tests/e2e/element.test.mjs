@@ -206,7 +206,7 @@ test("cross-origin: the element defines, computes, runs the FE wing in its worke
     'ready',
   );
   await page.evaluate(() => /** @type {any} */ (document.querySelector('wing-lab')).wing3d.setTime(0.5));
-  await page.waitForTimeout(300);
+  await page.evaluate(() => /** @type {any} */ (document.querySelector('wing-lab')).wing3d.settled());
   const shot = await page
     .locator('wing-lab canvas.wl-w3-canvas')
     .screenshot({ path: path.join(OUT, 'element-wing3d.png') });

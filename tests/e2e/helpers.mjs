@@ -166,6 +166,55 @@ export async function pngStats(page, buf) {
 }
 
 /**
+ * How two PNG screenshots of the same size differ, decoded in the page: the mean absolute
+ * difference per channel (0–255) and the share of pixels differing by more than `tol` in summed
+ * RGB, at the best of the shifts of up to `shift` px each way (an element screenshot can land a
+ * pixel apart from one page to another: its box sits at a fraction of a pixel). Compared over
+ * the interior that every shift covers. { width, height, mean, share, dx, dy } (share 1 and mean
+ * 255 when the sizes differ).
+ */
+export async function pngDiff(page, a, b, { tol = 48, shift = 0 } = {}) {
+  return page.evaluate(
+    async ([x, y, tol, shift]) => {
+      const pixels = async (data) => {
+        const img = new Image();
+        img.src = `data:image/png;base64,${data}`;
+        await img.decode();
+        const c = document.createElement('canvas');
+        c.width = img.width;
+        c.height = img.height;
+        const ctx = c.getContext('2d');
+        ctx.drawImage(img, 0, 0);
+        return { w: c.width, h: c.height, d: ctx.getImageData(0, 0, c.width, c.height).data };
+      };
+      const [p, q] = [await pixels(x), await pixels(y)];
+      if (p.w !== q.w || p.h !== q.h) return { width: p.w, height: p.h, mean: 255, share: 1, dx: 0, dy: 0 };
+      let best = null;
+      for (let dy = -shift; dy <= shift; dy++)
+        for (let dx = -shift; dx <= shift; dx++) {
+          let sum = 0,
+            off = 0,
+            n = 0;
+          for (let j = shift; j < p.h - shift; j++)
+            for (let i = shift; i < p.w - shift; i++) {
+              const u = 4 * ((j + dy) * p.w + i + dx),
+                v = 4 * (j * p.w + i);
+              const e =
+                Math.abs(p.d[u] - q.d[v]) + Math.abs(p.d[u + 1] - q.d[v + 1]) + Math.abs(p.d[u + 2] - q.d[v + 2]);
+              sum += e;
+              if (e > tol) off++;
+              n++;
+            }
+          const r = { width: p.w, height: p.h, mean: sum / (3 * n), share: off / n, dx, dy };
+          if (!best || r.mean < best.mean) best = r;
+        }
+      return best;
+    },
+    [a.toString('base64'), b.toString('base64'), tol, shift],
+  );
+}
+
+/**
  * Bounding box of the foreground (pixels unlike the most common colour by more than `tol` in
  * summed RGB) of a PNG, decoded in the page: { x0, y0, x1, y1, width, height, share }.
  */

@@ -279,10 +279,13 @@ test('whole-wing strain map colours the planform canvas and the 3-D wing', async
   // The 3-D wing with colour 5 shows the same map.
   await ready3d(page);
   const canvas = 'wing-lab [data-wing3d] canvas.wl-w3-canvas';
+  const settled = () => page.evaluate(() => document.querySelector('wing-lab').wing3d.settled());
   await page.selectOption('section.wl-wing3d select[aria-label="Colour the wing by"]', '0');
+  await settled();
   const plain = await page.locator(canvas).screenshot();
   await page.selectOption('section.wl-wing3d select[aria-label="Colour the wing by"]', '5');
   await page.waitForFunction(() => /peak/.test(__wl.q('.wl-w3-legend-text').textContent));
+  await settled();
   const mapped = await page.locator(canvas).screenshot({ path: path.join(OUT, 'nmodes-wing3d-strainmap.png') });
   const wp = await warmth(page, plain),
     wm = await warmth(page, mapped);

@@ -5,7 +5,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { setup, openPage, waitRenders, pngStats, labHelpers, OUT, CHROMIUM, ARGS } from './helpers.mjs';
+import { setup, openPage, waitRenders, pngStats, pngDiff, labHelpers, OUT, CHROMIUM, ARGS } from './helpers.mjs';
 
 const WEBGPU_FLAGS = [
   '--enable-unsafe-webgpu',
@@ -41,9 +41,12 @@ async function ready3d(page, timeout = 90000) {
 }
 
 const frames = (page) => page.evaluate(() => Number(__wl.q('[data-wing3d]').dataset.frames || 0));
+/** Waits until every frame asked for is on screen (the view draws in a worker: asynchronously). */
+const settled = (page) => page.evaluate(() => document.querySelector('wing-lab').wing3d.settled());
 
 /** Screenshot of the 3-D canvas with its pixel statistics (pngStats) and the PNG bytes. */
 async function canvasStats(page, name) {
+  await settled(page);
   const buf = await page
     .locator('wing-lab [data-wing3d] canvas.wl-w3-canvas')
     .screenshot({ path: path.join(OUT, name) });
@@ -84,6 +87,7 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   const ds = await ready3d(page);
   assert.equal(ds.state, 'ready', await page.textContent('wing-lab [data-wing3d]'));
   assert.equal(ds.backend, 'webgl2');
+  assert.equal(ds.thread, 'worker', 'drawn off the main thread where the browser can');
   assert.match(await page.textContent('.wl-w3-status'), /WebGL2 · \d+ triangles/);
   // Paper mode set: the paper's q on the FE shapes, said so.
   assert.match(await page.textContent('section.wl-wing3d .wl-note'), /Table 4 units, not SI/);
@@ -151,7 +155,7 @@ test('WebGL2 (default flags): the wing flaps, bends and is coloured by strain', 
   const f1 = await frames(page);
   await page.focus('wing-lab [data-wing3d] canvas');
   await page.keyboard.press('ArrowLeft');
-  assert.ok((await frames(page)) > f1);
+  await page.waitForFunction((n) => Number(__wl.q('[data-wing3d]').dataset.frames) > n, f1, { timeout: 5000 });
   assert.deepEqual(problems, []);
   await context.close();
 });
@@ -190,6 +194,7 @@ test('play pauses off screen and in a hidden tab, resumes when seen; phone backi
   await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'paused-offscreen', null, {
     timeout: 5000,
   });
+  await settled(page); // (the frame in flight when it stopped)
   const f1 = await frames(page);
   await page.waitForTimeout(600);
   assert.equal(await frames(page), f1, 'no frames drawn off screen');
@@ -206,6 +211,7 @@ test('play pauses off screen and in a hidden tab, resumes when seen; phone backi
     document.dispatchEvent(new Event('visibilitychange'));
   });
   await page.waitForFunction(() => __wl.q('[data-wing3d]').dataset.loop === 'paused-hidden', null, { timeout: 5000 });
+  await settled(page);
   const f2 = await frames(page);
   await page.waitForTimeout(400);
   assert.equal(await frames(page), f2, 'no frames drawn in a hidden tab');
@@ -245,6 +251,7 @@ test('FE wing mode set: SI responses drive the 3-D wing; numbers come from the s
   const ds = await ready3d(page);
   assert.equal(ds.state, 'ready');
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.5));
+  await settled(page); // (the worker draws the frame; its texts follow)
   assert.match(await page.textContent('.wl-w3-status'), /true largest deflection [\d.e+-]+ mm/);
   assert.match(await page.textContent('wing-lab .wl-strain .wl-note'), /SI/);
   const st = await canvasStats(page, 'wing3d-fe.png');
@@ -280,6 +287,8 @@ test('no WebGPU and no WebGL2: the panel says why and the rest of the lab works'
       if (/webgl|webgpu/.test(String(kind))) return null;
       return orig.call(this, kind, ...rest);
     };
+    // and no OffscreenCanvas: the view is made on the page (the fallback), where the above applies
+    globalThis.OffscreenCanvas = undefined;
   });
   await page.goto(env.url + '?screen=full'); // every panel, the view options open
   await waitRenders(page, 1);
@@ -297,4 +306,71 @@ test('no WebGPU and no WebGL2: the panel says why and the rest of the lab works'
   await waitRenders(page, before + 1);
   assert.notEqual(await page.textContent('wing-lab [data-field="coriolis-0"]'), '53.79');
   await context.close();
+});
+
+test('the worker draws the pixels the page draws; a worker that cannot start falls back to the page', async () => {
+  /** The 3-D canvas at t = 0.013 s, ε_x colours, drawn by the worker or (render="main") the page. */
+  const shoot = async (main, name, route = null) => {
+    const { page, problems, context } = await openPage(env.browser, env.url);
+    if (main)
+      await page.addInitScript(() =>
+        document.addEventListener('DOMContentLoaded', () =>
+          document.querySelector('wing-lab').setAttribute('render', 'main'),
+        ),
+      );
+    if (route) await context.route('**/render-worker.js', route);
+    await page.goto(env.url + '?panels=controls,wing3d');
+    const ds = await ready3d(page);
+    assert.equal(ds.state, 'ready', await page.textContent('wing-lab [data-wing3d]'));
+    await page.evaluate(() => {
+      // (the view options are folded on this screen: set the colour as its select would)
+      const sel = __wl.q('[data-wing3d] ~ .wl-w3-controls select[aria-label="Colour the wing by"]');
+      sel.value = '1';
+      sel.dispatchEvent(new Event('change', { bubbles: true }));
+      document.querySelector('wing-lab').wing3d.setTime(0.013);
+      // (the HTML labels over the canvas are placed by the page alike in both: compare the GPU's pixels)
+      __wl.q('.wl-w3-overlay').style.visibility = 'hidden';
+    });
+    await page.waitForTimeout(300); // (a page-drawn WebGL frame can reach the screen a moment later)
+    const st = await canvasStats(page, name);
+    const legend = await page.textContent('.wl-w3-legend-text');
+    const camera = await page.evaluate(() => document.querySelector('wing-lab').wing3d.camera);
+    await context.close();
+    return { ds, st, legend, camera, problems };
+  };
+  const w = await shoot(false, 'wing3d-thread-worker.png');
+  const m = await shoot(true, 'wing3d-thread-main.png');
+  assert.equal(w.ds.thread, 'worker');
+  assert.equal(m.ds.thread, 'main');
+  assert.deepEqual(w.problems, []);
+  assert.ok(w.st.foreground > 0.03 && w.st.colours > 40, JSON.stringify({ ...w.st, buf: undefined }));
+  // the same camera (the renderer's fit, run on the page for the worker) and the same legend
+  for (const k of ['yaw', 'pitch', 'distance'])
+    assert.ok(
+      Math.abs(w.camera[k] - m.camera[k]) < 1e-4 * Math.max(1, Math.abs(m.camera[k])),
+      `${k}: ${w.camera[k]} vs ${m.camera[k]}`,
+    );
+  assert.equal(w.legend, m.legend);
+  const page = await (await env.browser.newContext()).newPage();
+  const diff = await pngDiff(page, w.st.buf, m.st.buf, { shift: 1 });
+  await page.context().close();
+  // the same picture: one GPU rasteriser draws both (seen: identical, the element a pixel lower)
+  assert.ok(diff.mean < 0.5 && diff.share < 0.002, `worker vs page: ${JSON.stringify(diff)}`);
+
+  // A render worker that cannot make the view (here: it says so at once) → drawn on the page.
+  const f = await shoot(false, 'wing3d-thread-fallback.png', (r) =>
+    r.fulfill({
+      contentType: 'text/javascript',
+      body: "onmessage = () => postMessage({ op: 'failed', message: 'test: no GPU in this worker' });",
+    }),
+  );
+  assert.equal(f.ds.thread, 'main');
+  assert.match(f.ds.workerProblem || '', /test: no GPU in this worker/);
+  const fd = await (async () => {
+    const p2 = await (await env.browser.newContext()).newPage();
+    const d = await pngDiff(p2, f.st.buf, m.st.buf, { shift: 1 });
+    await p2.context().close();
+    return d;
+  })();
+  assert.ok(fd.mean < 0.5 && fd.share < 0.002, `fallback vs page: ${JSON.stringify(fd)}`);
 });

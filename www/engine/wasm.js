@@ -110,8 +110,8 @@ export function createBuilds(load = loadWasm, loadFirst = load === loadWasm ? lo
   };
 }
 
-/** @type {string | null} the same-origin Blob URL that imports worker.js (made once) */
-let bootstrapUrl = null;
+/** @type {Record<string, string>} per worker file, the same-origin Blob URL that imports it (made once) */
+const bootstrapUrls = {};
 /**
  * A worker of www/worker.js. Same origin: worker.js itself. When the lab was loaded from another
  * origin (a course page using the lab's files from the lab's host, which must send CORS
@@ -119,15 +119,18 @@ let bootstrapUrl = null;
  * whose only line imports worker.js by its absolute URL; worker.js then loads the wasm relative
  * to its own URL (import.meta.url), i.e. from the lab's host.
  */
-export function defaultWorker() {
-  const url = new URL('worker.js', WWW);
+export function defaultWorker(file = 'worker.js') {
+  const url = new URL(file, WWW);
   if (typeof location === 'undefined' || url.origin === location.origin) return new Worker(url, { type: 'module' });
-  if (!bootstrapUrl)
-    bootstrapUrl = URL.createObjectURL(
+  if (!bootstrapUrls[file])
+    bootstrapUrls[file] = URL.createObjectURL(
       new Blob([`import ${JSON.stringify(url.href)};\n`], { type: 'text/javascript' }),
     );
-  return new Worker(bootstrapUrl, { type: 'module' });
+  return new Worker(bootstrapUrls[file], { type: 'module' });
 }
+
+/** A worker of www/render-worker.js (the 3-D view drawn off the main thread), as defaultWorker makes it. */
+export const renderWorker = () => defaultWorker('render-worker.js');
 
 /**
  * A new worker from `make`, given the compiled wasm module first when there is one (`variant`

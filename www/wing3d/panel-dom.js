@@ -36,6 +36,44 @@ export function makeCanvas(summaryId, touch) {
 }
 
 /**
+ * A canvas as makeCanvas's, with a drawing buffer of `w` × `h` device px (640 × 480 when 0) and
+ * the CSS height `cssHeight`: a new view is made on it before it replaces the panel's canvas.
+ * @param {string} summaryId
+ * @param {boolean} touch
+ * @param {number} w
+ * @param {number} h
+ * @param {string} cssHeight
+ */
+export function sizedCanvas(summaryId, touch, w, h, cssHeight) {
+  const c = /** @type {HTMLCanvasElement} */ (makeCanvas(summaryId, touch));
+  c.width = w || 640;
+  c.height = h || 480;
+  c.style.height = cssHeight;
+  return c;
+}
+
+/**
+ * The panel when there is no 3-D view: the reason in the box (and the rest of the lab works),
+ * the summary says it, the controls hidden.
+ * @param {{ box: HTMLElement, summary: HTMLElement, status: HTMLElement, controls: HTMLElement, options: HTMLElement }} dom
+ * @param {string} why
+ */
+export function showUnavailable(dom, why) {
+  const { box, summary, status, controls, options } = dom;
+  box.dataset.state = 'unavailable';
+  box.replaceChildren(
+    el('p', {
+      class: 'wl-w3-fallback',
+      text: `3-D view unavailable: ${why}. Everything else in the lab works without it.`,
+    }),
+  );
+  summary.textContent = `3-D view unavailable: ${why}.`;
+  status.textContent = '';
+  controls.hidden = true;
+  options.hidden = true;
+}
+
+/**
  * The panel's elements. `overlay` goes over the canvas; `on` holds the controls' handlers.
  * @param {string} uid
  * @param {boolean} touch

@@ -5,11 +5,11 @@
 // marks.js places the labels, the strain point's ring and the sensors on the drawn wing (with
 // picking.js and overlays.js), canvas.js sizes the canvas, legend.js draws the colour bar and its
 // words, fields.js uploads colours 5 and 6, texts.js words the status lines.
-import { el, rich, isTouch } from '../dom.js';
-import { fmt, errorText } from '../format.js';
+import { isTouch } from '../dom.js';
+import { errorText } from '../format.js';
 import * as S from '../scene3d.js';
-import { buildPanel, makeCanvas } from './panel-dom.js';
-import { canvasSize, prepareContext } from './canvas.js';
+import { buildPanel, sizedCanvas, showUnavailable } from './panel-dom.js';
+import { canvasSize } from './canvas.js';
 import { createCameraRig, bindCamera, strokePoses, fitLift, refitKey } from './camera.js';
 import { createFrameLoop, PUSH_MS } from './frame-loop.js';
 import * as P from './picking.js';
@@ -18,6 +18,10 @@ import { createWingMarks } from './marks.js';
 import { createStrainLegend } from './legend.js';
 import { createFields, FIELD_COLOUR, SENSE_COLOUR } from './fields.js';
 import * as T from './texts.js';
+import { RemoteWingView } from './remote-view.js';
+import { createWingView, wantWorker } from './make-view.js';
+import { panelApi } from './panel-api.js';
+import { writeFrameTexts, setText } from './frame-texts.js';
 
 /**
  * States of the run (evenly spaced samples plus each mode's extremes) over which the colour
@@ -29,11 +33,6 @@ const RANGE_SAMPLES = 1000;
 /** While playing, the status, summary, legend and deflection texts change at most this often (ms). */
 const TEXT_MS = 250;
 
-/** Sets `e`'s text only when it differs (an unchanged text costs no layout or paint). */
-function setText(/** @type {HTMLElement} */ e, /** @type {string} */ t) {
-  if (e.textContent !== t) e.textContent = t;
-}
-
 /** One mounted 3-D panel (views/wing3d.js mounts it): its state, and the wiring of its parts. */
 export class Wing3dPanel {
   /** @param {import('../lab.js').ViewContext} ctx */
@@ -42,8 +41,21 @@ export class Wing3dPanel {
     this.store = store;
     this.engine = engine;
     this.touch = isTouch();
-    /** @type {import('../pkg/wingbeat.js').WingView | null} */
+    /**
+     * The view: the wasm WingView on this thread, or a RemoteWingView whose worker owns it
+     * (data-thread on the box says which).
+     * @type {any}
+     */
     this.view = null;
+    /** the drawing buffer (device px); the canvas's own size is the worker's once transferred */
+    this.bw = 0;
+    this.bh = 0;
+    /** why the view is drawn on this thread although the browser could draw it in a worker */
+    this.workerProblem = '';
+    /** the newest frame whose legend (texts) is awaited from the worker */
+    this.textToken = 0;
+    /** @type {Promise<boolean>} the view's making under way (makeView runs one at a time) */
+    this.making = Promise.resolve(true);
     /** @type {import('../pkg/wingbeat.js').FeModesResult | null} */
     this.fe = null;
     this.started = false;
@@ -213,18 +225,7 @@ export class Wing3dPanel {
   }
 
   unavailable(/** @type {string} */ why) {
-    const { box, summary, status, controls, options } = this.dom;
-    box.dataset.state = 'unavailable';
-    box.replaceChildren(
-      el('p', {
-        class: 'wl-w3-fallback',
-        text: `3-D view unavailable: ${why}. Everything else in the lab works without it.`,
-      }),
-    );
-    summary.textContent = `3-D view unavailable: ${why}.`;
-    status.textContent = '';
-    controls.hidden = true;
-    options.hidden = true;
+    showUnavailable(this.dom, why);
   }
 
   async start() {
@@ -264,27 +265,60 @@ export class Wing3dPanel {
     this.onResult();
   }
 
-  /** (Re)creates the WingView for the FE wing `w` (a new wing gets a fresh canvas). */
-  async makeView(/** @type {any} */ w) {
+  /** A new canvas sized as the panel's, not yet in the page (a new view is made on it, then shown). */
+  newCanvas() {
+    return sizedCanvas(this.dom.summaryId, this.touch, this.bw, this.bh, this.canvas.style.height);
+  }
+
+  /** (Re)creates the view for the FE wing `w` once any making under way is done (one canvas, one making). */
+  makeView(/** @type {any} */ w) {
+    const run = this.making.then(() => this.makeViewNow(w));
+    this.making = run.catch(() => false);
+    return run;
+  }
+
+  async makeViewNow(/** @type {any} */ w) {
     const renderer = this.engine.renderer;
     if (!renderer) return false;
-    if (this.view) {
-      this.view.free();
-      this.view = null;
-      const fresh = makeCanvas(this.dom.summaryId, this.touch);
-      this.canvas.replaceWith(fresh);
-      this.canvas = fresh;
+    const old = this.view;
+    // The first view is made on the panel's canvas; a new wing's on a new canvas, shown once
+    // ready (the old wing stays drawn meanwhile). A canvas handed to a worker that then failed
+    // is spent: the view is made on the page, on another new canvas.
+    if (!old) this.fitCanvas();
+    let target = old ? this.newCanvas() : this.canvas;
+    target.dataset.size = `${this.bw}x${this.bh}`;
+    const made = await createWingView(w, {
+      canvas: () => target,
+      renderer,
+      remote: wantWorker(this.dom.box, target) ? this.engine.renderWorker() : null,
+      freshCanvas: () => {
+        target = this.newCanvas();
+        target.dataset.size = `${this.bw}x${this.bh}`;
+      },
+      onError: (/** @type {string} */ m) => {
+        this.dom.status.textContent = m;
+      },
+      onDrawn: () => {
+        this.frames += 1;
+        this.dom.box.dataset.frames = String(this.frames);
+      },
+    });
+    const show = () => {
+      if (old) old.free();
+      if (target === this.canvas) return;
+      this.canvas.replaceWith(target);
+      this.canvas = target;
       this.bindCanvas();
-    }
-    this.fitCanvas();
-    await prepareContext(this.canvas);
-    try {
-      this.view = await renderer.createFromArrays(this.canvas, w.nodes, w.triangles, w.shapes, w.strain_nodes);
-    } catch (e) {
-      this.unavailable(errorText(e));
+    };
+    if (!made.view) {
+      this.view = null;
+      show();
+      this.unavailable(made.problem);
       return false;
     }
-    const view = /** @type {import('../pkg/wingbeat.js').WingView} */ (this.view);
+    const view = made.view;
+    this.view = view;
+    this.workerProblem = made.workerProblem;
     this.fe = w;
     this.rig.reset(S.spanOf(w.nodes));
     this.fields.invalidate();
@@ -292,8 +326,26 @@ export class Wing3dPanel {
     const box = this.dom.box;
     box.dataset.state = 'ready';
     box.dataset.backend = view.backend();
+    box.dataset.thread = made.thread;
+    if (this.workerProblem) box.dataset.workerProblem = this.workerProblem;
     box.dataset.nodes = String(w.nodes.length / 3);
-    this.onScene();
+    // A worker's view draws its first frame before its canvas replaces the old wing's (no blank
+    // canvas in between); a view on this thread draws once shown.
+    if (typeof view.idle === 'function') {
+      this.onScene();
+      await view.idle();
+      show();
+      this.draw(); // (again once shown: a canvas out of the page may not keep a frame)
+    } else {
+      show();
+      this.onScene();
+    }
+    // (the stage may have been resized while the view was made)
+    if (target.dataset.size !== `${this.bw}x${this.bh}`) {
+      this.bw = 0;
+      this.fitCanvas();
+      this.draw();
+    }
     return true;
   }
 
@@ -341,9 +393,14 @@ export class Wing3dPanel {
     const { cssH: h, width: W, height: H } = canvasSize(dom.stage.clientWidth, globalThis.devicePixelRatio || 1);
     dom.box.dataset.backing = `${W}x${H}`;
     canvas.style.height = `${h}px`;
-    if (canvas.width === W && canvas.height === H) return false;
-    canvas.width = W;
-    canvas.height = H;
+    if (this.bw === W && this.bh === H) return false;
+    this.bw = W;
+    this.bh = H;
+    // (a canvas handed to the worker is sized there, by resize)
+    if (!(this.view instanceof RemoteWingView)) {
+      canvas.width = W;
+      canvas.height = H;
+    }
     if (this.view) {
       try {
         this.view.resize(W, H);
@@ -359,14 +416,7 @@ export class Wing3dPanel {
     const fe = this.fe;
     if (!fe) return;
     const lift = fitLift(this.runDeflection, this.exaggeration(), S.spanOf(fe.nodes));
-    const coverage = this.rig.fit(
-      search,
-      fe,
-      strokePoses(this.store.get().result),
-      lift,
-      this.canvas.width,
-      this.canvas.height,
-    );
+    const coverage = this.rig.fit(search, fe, strokePoses(this.store.get().result), lift, this.bw, this.bh);
     if (coverage != null) this.dom.box.dataset.coverage = coverage.toFixed(3);
   }
 
@@ -431,7 +481,7 @@ export class Wing3dPanel {
     this.runDeflection = deflection;
     this.applyRange();
     // Refit when the stroke, the canvas or the drawn deflection (true × exaggeration) changes.
-    const key = refitKey(s, this.canvas.width, this.canvas.height, this.runDeflection * this.exaggeration());
+    const key = refitKey(s, this.bw, this.bh, this.runDeflection * this.exaggeration());
     if (key !== this.rig.fitKey) {
       this.fit(!this.rig.fitKey);
       this.rig.fitKey = key;
@@ -480,46 +530,34 @@ export class Wing3dPanel {
       this.dom.status.textContent = `render: ${errorText(e)}`;
       return;
     }
-    this.frames += 1;
-    this.dom.box.dataset.frames = String(this.frames);
+    if (!(view instanceof RemoteWingView)) {
+      this.frames += 1;
+      this.dom.box.dataset.frames = String(this.frames);
+    }
     this.marks.placeOverlays(ang, q, tNow, texts);
     if (!lg) return;
     this.lastText = now;
-    this.dom.box.dataset.modes = String(q.length);
-    this.writeTexts(lg, ang, ex, tNow, modes.length);
+    const nModes = modes.length;
+    if (typeof lg.then !== 'function') {
+      this.frameTexts(lg, ang, ex, tNow, nModes);
+      return;
+    }
+    // drawn by the worker: the texts follow its legend, unless a newer frame's is awaited by then
+    const token = ++this.textToken;
+    lg.then((/** @type {any} */ l) => {
+      if (l && token === this.textToken && this.view === view) this.frameTexts(l, ang, ex, tNow, nModes);
+    });
   }
 
-  /** The status, deflection, legend, note and summary texts of a frame (WingView.set_frame's legend `lg`). */
-  writeTexts(
+  /** The texts of a drawn frame (its legend `lg`): frame-texts.js. */
+  frameTexts(
     /** @type {any} */ lg,
     /** @type {number[]} */ ang,
     /** @type {number} */ ex,
     /** @type {number} */ t,
     /** @type {number} */ nModes,
   ) {
-    const s = this.store.get();
-    const { dom } = this;
-    const view = /** @type {import('../pkg/wingbeat.js').WingView} */ (this.view);
-    const fe = /** @type {any} */ (this.fe);
-    const isFe = s.modes === 'fe';
-    const d = lg.max_deflection_m;
-    setText(dom.exagText, `×${fmt(ex, 3)}`);
-    dom.exag.setAttribute('aria-valuetext', `deflection drawn ${fmt(ex, 3)} times true scale`);
-    setText(dom.status, T.statusLine(view.backend(), view.triangles(), ang, isFe, d, ex));
-    const deflText = T.deflectionText(this.runDeflection, isFe, fe.nodes);
-    if (dom.defl.dataset.text !== deflText) {
-      dom.defl.dataset.text = deflText;
-      if (isFe) dom.defl.textContent = deflText;
-      else dom.defl.replaceChildren(rich(deflText));
-    }
-    this.drawLegend(lg, isFe, () => view.legend_stops(), this.fields.legendInfo());
-    const wingName = s.wing && s.wing.label ? s.wing.label : 'synthetic Manduca-like outline, not digitised';
-    const noteText = T.noteText(isFe, wingName, fe.n_nodes, nModes);
-    if (dom.note.dataset.text !== noteText) {
-      dom.note.dataset.text = noteText;
-      dom.note.replaceChildren(rich(noteText));
-    }
-    setText(dom.summary, T.summaryText(t, ang, d, isFe, this.runDeflection, dom.legendText.textContent || ''));
+    writeFrameTexts(this, lg, ang, ex, t, nModes);
   }
 
   setPlaying(/** @type {boolean} */ on) {
@@ -554,47 +592,8 @@ export class Wing3dPanel {
     this.view = null;
   }
 
-  /** What the lab (and its tests) see of the panel. */
+  /** What the lab (and its tests) see of the panel (panel-api.js). */
   api() {
-    const p = this;
-    return {
-      startWhenVisible: () => p.startWhenVisible(),
-      start: () => p.start(),
-      get view() {
-        return p.view;
-      },
-      get t() {
-        return p.tNow();
-      },
-      get camera() {
-        return p.rig.cam;
-      },
-      get ranges() {
-        return p.ranges;
-      },
-      get frames() {
-        return p.frames;
-      },
-      get fe() {
-        return p.fe;
-      },
-      pickAt: (/** @type {number} */ x, /** @type {number} */ y) => p.marks.pickAt(x, y),
-      /** Where the strain point is drawn (CSS px in the canvas), or null when hidden. */
-      pointOnScreen: () => p.overlays.pointOnScreen(),
-      /** CSS px of the planform point (x, y) mm on the drawn wing at the current instant (tests). */
-      screenOf: (/** @type {number} */ x, /** @type {number} */ y, /** @type {number | undefined} */ t = undefined) =>
-        p.marks.drawnPoint(x, y, t),
-      setTime(/** @type {number} */ t) {
-        const r = p.store.get().result;
-        const dur = r ? r.analysis.sim.t[r.analysis.sim.t.length - 1] : 2;
-        p.store.set({ playing: false, t3d: Math.min(dur, Math.max(0, Number.isFinite(t) ? t : 0)) });
-      },
-      setPlaying(/** @type {boolean} */ on) {
-        p.store.set({ playing: !!on });
-      },
-      setLayout: (/** @type {string} */ mode) => p.setLayout(mode),
-      setScreen: (/** @type {string} */ screen) => p.setScreen(screen),
-      destroy: () => p.destroy(),
-    };
+    return panelApi(this);
   }
 }
