@@ -9,6 +9,7 @@ import { VARIANT_FILES } from './engine/wasm.js';
 import { errorText } from './format.js';
 import { WEBGL_ATTRIBUTES } from './wing3d/canvas.js';
 import { readToWorker } from './wing3d/render-protocol.js';
+import { rangesOfStates } from './strainmap.js';
 
 const scope = /** @type {any} */ (globalThis);
 /** @type {any} the WingView, once made */
@@ -17,6 +18,8 @@ let view = null;
 let canvas = null;
 /** @type {Promise<void> | null} */
 let starting = null;
+/** @type {{ nodes: ArrayLike<number>, strain_nodes: ArrayLike<number>, shapes: ArrayLike<number> } | null} the wing, for `ranges` */
+let wing = null;
 
 /** @param {import('./wing3d/render-protocol.js').FromWorker} m */
 const post = (m) => scope.postMessage(m);
@@ -32,6 +35,7 @@ async function init(m) {
   const glue = await import(new URL(VARIANT_FILES.full.glue, WWW).href);
   await glue.default({ module_or_path: m.module });
   canvas = m.canvas;
+  wing = { nodes: m.nodes, strain_nodes: m.strain_nodes, shapes: m.shapes };
   let webgpu = false;
   try {
     const gpu = scope.navigator && scope.navigator.gpu;
@@ -99,7 +103,14 @@ scope.onmessage = (/** @type {MessageEvent} */ e) => {
   }
   if (!view) return;
   if (m.op === 'draw') draw(m);
-  else if (m.op === 'call') call(m);
+  else if (m.op === 'ranges') {
+    try {
+      const r = rangesOfStates(/** @type {any} */ (wing), m);
+      post({ op: 'ranges', seq: m.seq, ranges: r.ranges, deflection: r.deflection });
+    } catch {
+      post({ op: 'ranges', seq: m.seq, ranges: null, deflection: 0 });
+    }
+  } else if (m.op === 'call') call(m);
   else if (m.op === 'free') {
     view.free();
     view = null;

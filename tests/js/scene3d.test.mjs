@@ -280,3 +280,52 @@ test('backingSize: CSS size × devicePixelRatio, the ratio capped, the area capp
   assert.ok(Math.abs(big.width / big.height - 1243 / 520) < 0.01);
   assert.deepEqual(S.backingSize(100, 50, NaN, 2, 2e6), { width: 100, height: 50, scale: 1 });
 });
+
+test('strainRangesAt and maxDeflectionAt: the same numbers as a strain sum per node and state, for 6 modes', async () => {
+  const { strainRangesAt, maxDeflectionAt, RANGE_QUANTILE } = await import('../../www/strainmap.js');
+  // a seeded wing: 57 nodes, 6 modes, 240 states of mixed signs and scales
+  let seed = 12345;
+  const rnd = () => {
+    seed = (seed * 1103515245 + 12345) % 2147483648;
+    return seed / 2147483648 - 0.5;
+  };
+  const n = 57,
+    m = 6;
+  const strainNodes = Float64Array.from({ length: 3 * n * m }, () => rnd() * 1e-3);
+  const shapes = Float64Array.from({ length: n * m }, () => rnd());
+  const states = Array.from({ length: 240 }, (_, s) =>
+    Array.from({ length: m }, (_, k) => rnd() * 10 ** (k - (s % 3))),
+  );
+  // the reference: each node and state summed on its own, the magnitude by its square root
+  const mx = [0, 1, 2, 3].map(() => new Float64Array(n));
+  let defl = 0;
+  for (let i = 0; i < n; i++)
+    for (const q of states) {
+      const e = [0, 0, 0];
+      let w = 0;
+      for (let k = 0; k < m; k++) {
+        for (let c = 0; c < 3; c++) e[c] += strainNodes[(k * n + i) * 3 + c] * q[k];
+        w += shapes[k * n + i] * q[k];
+      }
+      const mag = Math.sqrt(e[0] * e[0] + e[1] * e[1] + 0.5 * e[2] * e[2]);
+      [Math.abs(e[0]), Math.abs(e[1]), Math.abs(e[2]), mag].forEach((v, c) => {
+        if (v > mx[c][i]) mx[c][i] = v;
+      });
+      defl = Math.max(defl, Math.abs(w));
+    }
+  const quantile = (a) => {
+    const s = Array.from(a).sort((x, y) => x - y);
+    return s;
+  };
+  const got = strainRangesAt(strainNodes, n, states, RANGE_QUANTILE);
+  // the robust maximum picks a node's value: each limit is exactly one of the reference maxima
+  for (let c = 0; c < 4; c++) assert.ok(quantile(mx[c]).includes(got[c + 1]), `component ${c + 1}: ${got[c + 1]}`);
+  // and the same one the reference picks with every node's maximum exact
+  const all = strainRangesAt(strainNodes, n, states, 1);
+  for (let c = 0; c < 4; c++) assert.equal(all[c + 1], Math.max(...mx[c]));
+  assert.equal(maxDeflectionAt(shapes, n, states), defl);
+  // first m modes only when the states carry more values than the wing has modes
+  const wide = states.map((q) => [...q, 5, -7]);
+  assert.deepEqual(strainRangesAt(strainNodes, n, wide, RANGE_QUANTILE), got);
+  assert.equal(maxDeflectionAt(shapes, n, wide), defl);
+});

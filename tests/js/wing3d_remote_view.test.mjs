@@ -265,3 +265,38 @@ test('WingView.fitCamera (the real wasm, no GPU) frames every point and matches 
   assert.throws(() => wb.WingView.fitCamera(cam, [1, 2], 0.04, 1), /triples/);
   assert.throws(() => wb.WingView.fitCamera(cam, [Number.NaN, 0, 0], 0.04, 1), /no finite point/);
 });
+
+test('runRanges asks the worker for the run ranges over flat states; idle waits for the answer and what it asks for', async () => {
+  const { view, worker } = await started();
+  const Q = Float64Array.of(1, 2, 3, 4);
+  const p = view.runRanges({ Q, S: 2, m: 2 });
+  const m = worker.sent.at(-1);
+  assert.deepEqual([m.op, m.S, m.m, Array.from(m.Q)], ['ranges', 2, 2, [1, 2, 3, 4]]);
+  assert.ok(readToWorker(m), 'the worker reads it');
+  let idle = false;
+  const done = view.idle().then(() => {
+    idle = true;
+  });
+  await new Promise((r) => setTimeout(r, 5));
+  assert.equal(idle, false, 'not idle while the ranges are awaited');
+  // the answer's handler asks for a frame: idle waits for that frame too
+  p.then(() => {
+    view.setPose(0, 0, 0, [0]);
+    view.render();
+  });
+  worker.answer({ op: 'ranges', seq: m.seq, ranges: { 1: 1e-4, 2: 2e-4, 3: 3e-4, 4: 4e-4 }, deflection: 1e-3 });
+  assert.deepEqual(await p, { ranges: { 1: 1e-4, 2: 2e-4, 3: 3e-4, 4: 4e-4 }, deflection: 1e-3 });
+  await new Promise((r) => setTimeout(r, 5));
+  assert.equal(idle, false, 'the frame asked for is still in flight');
+  const d = worker.draws().at(-1);
+  worker.answer({ op: 'drawn', seq: d.seq, legend: null, stops: null, error: null });
+  await done;
+  assert.equal(idle, true);
+  // a worker that could not work them out: null; a freed view answers null at once
+  const p2 = view.runRanges({ Q: new Float64Array(0), S: 0, m: 2 });
+  worker.answer({ op: 'ranges', seq: worker.sent.at(-1).seq, ranges: null, deflection: 0 });
+  assert.equal(await p2, null);
+  view.free();
+  assert.equal(await view.runRanges({ Q: new Float64Array(0), S: 0, m: 0 }), null);
+  assert.equal(readToWorker({ op: 'ranges', seq: 1, Q: new Float64Array(3), S: 2, m: 2 }), null, 'length checked');
+});

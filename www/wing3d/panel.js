@@ -19,7 +19,7 @@ import { createStrainLegend } from './legend.js';
 import { createFields, FIELD_COLOUR, SENSE_COLOUR } from './fields.js';
 import * as T from './texts.js';
 import { RemoteWingView } from './remote-view.js';
-import { createWingView, wantWorker } from './make-view.js';
+import { makePanelView } from './make-view.js';
 import { panelApi } from './panel-api.js';
 import { writeFrameTexts, setText } from './frame-texts.js';
 
@@ -277,76 +277,9 @@ export class Wing3dPanel {
     return run;
   }
 
-  async makeViewNow(/** @type {any} */ w) {
-    const renderer = this.engine.renderer;
-    if (!renderer) return false;
-    const old = this.view;
-    // The first view is made on the panel's canvas; a new wing's on a new canvas, shown once
-    // ready (the old wing stays drawn meanwhile). A canvas handed to a worker that then failed
-    // is spent: the view is made on the page, on another new canvas.
-    if (!old) this.fitCanvas();
-    let target = old ? this.newCanvas() : this.canvas;
-    target.dataset.size = `${this.bw}x${this.bh}`;
-    const made = await createWingView(w, {
-      canvas: () => target,
-      renderer,
-      remote: wantWorker(this.dom.box, target) ? this.engine.renderWorker() : null,
-      freshCanvas: () => {
-        target = this.newCanvas();
-        target.dataset.size = `${this.bw}x${this.bh}`;
-      },
-      onError: (/** @type {string} */ m) => {
-        this.dom.status.textContent = m;
-      },
-      onDrawn: () => {
-        this.frames += 1;
-        this.dom.box.dataset.frames = String(this.frames);
-      },
-    });
-    const show = () => {
-      if (old) old.free();
-      if (target === this.canvas) return;
-      this.canvas.replaceWith(target);
-      this.canvas = target;
-      this.bindCanvas();
-    };
-    if (!made.view) {
-      this.view = null;
-      show();
-      this.unavailable(made.problem);
-      return false;
-    }
-    const view = made.view;
-    this.view = view;
-    this.workerProblem = made.workerProblem;
-    this.fe = w;
-    this.rig.reset(S.spanOf(w.nodes));
-    this.fields.invalidate();
-    this.dirty = true;
-    const box = this.dom.box;
-    box.dataset.state = 'ready';
-    box.dataset.backend = view.backend();
-    box.dataset.thread = made.thread;
-    if (this.workerProblem) box.dataset.workerProblem = this.workerProblem;
-    box.dataset.nodes = String(w.nodes.length / 3);
-    // A worker's view draws its first frame before its canvas replaces the old wing's (no blank
-    // canvas in between); a view on this thread draws once shown.
-    if (typeof view.idle === 'function') {
-      this.onScene();
-      await view.idle();
-      show();
-      this.draw(); // (again once shown: a canvas out of the page may not keep a frame)
-    } else {
-      show();
-      this.onScene();
-    }
-    // (the stage may have been resized while the view was made)
-    if (target.dataset.size !== `${this.bw}x${this.bh}`) {
-      this.bw = 0;
-      this.fitCanvas();
-      this.draw();
-    }
-    return true;
+  /** makeView's one making: make-view.js. */
+  makeViewNow(/** @type {any} */ w) {
+    return makePanelView(this, w);
   }
 
   /** A new FE wing in the store (the user's own wing, or another mode count): redraw with it. */
@@ -473,15 +406,28 @@ export class Wing3dPanel {
     this.dirty = false;
     const s = this.store.get();
     if (!s.result) return;
-    // Display ranges: with 3+ modes over RANGE_SAMPLES states (exact hull vertices for 1–2).
-    // The core lists those states' samples (Analysis.extreme_samples, computed in the live
-    // worker), so this redraw costs (states × nodes), not a pass over every sample.
-    const { ranges, deflection } = S.runRanges(fe, s.result.analysis, RANGE_SAMPLES);
-    this.ranges = ranges;
-    this.runDeflection = deflection;
+    // Display ranges: with 3+ modes over RANGE_SAMPLES states (exact hull vertices for 1–2),
+    // the core's Analysis.extreme_samples. A view in a worker works them out there (for a
+    // 6-mode wing a long task), except for the first fit, which needs them before the first frame.
+    const view = this.view;
+    const result = s.result;
+    if (typeof view.runRanges === 'function' && this.rig.fitKey) {
+      view.runRanges(S.runStates(result.analysis, RANGE_SAMPLES)).then((/** @type {any} */ r) => {
+        if (!r || this.view !== view || this.store.get().result !== result) return;
+        this.useRanges(r);
+        this.draw();
+      });
+      return;
+    }
+    this.useRanges(S.runRanges(fe, result.analysis, RANGE_SAMPLES));
+  }
+
+  /** A run's colour ranges and largest deflection: applied, and the camera refitted when the stroke or the drawn deflection changed. */
+  useRanges(/** @type {{ ranges: Record<number, number>, deflection: number }} */ r) {
+    this.ranges = r.ranges;
+    this.runDeflection = r.deflection;
     this.applyRange();
-    // Refit when the stroke, the canvas or the drawn deflection (true × exaggeration) changes.
-    const key = refitKey(s, this.bw, this.bh, this.runDeflection * this.exaggeration());
+    const key = refitKey(this.store.get(), this.bw, this.bh, this.runDeflection * this.exaggeration());
     if (key !== this.rig.fitKey) {
       this.fit(!this.rig.fitKey);
       this.rig.fitKey = key;

@@ -137,6 +137,8 @@ export class RemoteWingView {
     this.nNodes = 0;
     /** @type {(() => void)[]} waiting for idle() */
     this.idlers = [];
+    /** @type {Map<number, (r: any) => void>} runRanges answers awaited, by seq */
+    this.rangeWaiters = new Map();
     /** @type {(frames: number) => void} told the count after each drawn frame */
     this.onDrawn = () => {};
     worker.onmessage = (e) => this.receive(e.data);
@@ -155,6 +157,13 @@ export class RemoteWingView {
       this.onError(`${m.name}: ${m.message}`);
       return;
     }
+    if (m.op === 'ranges') {
+      const f = this.rangeWaiters.get(m.seq);
+      this.rangeWaiters.delete(m.seq);
+      if (f) f(m.ranges ? { ranges: m.ranges, deflection: m.deflection } : null);
+      this.notifyIdle();
+      return;
+    }
     const d = this.inFlight;
     this.inFlight = null;
     if (m.error) this.onError(`render: ${m.error}`);
@@ -165,13 +174,43 @@ export class RemoteWingView {
     if (m.stops) this.stops = m.stops;
     if (d) for (const f of d.waiters) f(m.error ? null : m.legend);
     this.pump();
-    if (!this.inFlight) for (const f of this.idlers.splice(0)) f();
+    this.notifyIdle();
   }
 
-  /** Resolves once every frame asked for is drawn (at once when none is awaited). */
-  idle() {
-    if (!this.inFlight && !this.wantDraw) return Promise.resolve();
-    return new Promise((resolve) => this.idlers.push(() => resolve(undefined)));
+  busy() {
+    return !!this.inFlight || this.wantDraw || this.rangeWaiters.size > 0;
+  }
+
+  notifyIdle() {
+    if (!this.busy()) for (const f of this.idlers.splice(0)) f();
+  }
+
+  /**
+   * Resolves once every frame and range asked for is done, and what their answers asked for in
+   * turn (a frame drawn with new ranges): at once when nothing is awaited.
+   */
+  async idle() {
+    for (;;) {
+      if (!this.busy()) {
+        // (answers resolve promises whose handlers may ask for more: let them run first)
+        await new Promise((r) => setTimeout(r, 0));
+        if (!this.busy() || this.freed) return;
+      }
+      await new Promise((resolve) => this.idlers.push(() => resolve(undefined)));
+    }
+  }
+
+  /**
+   * The run's colour ranges and largest deflection (strainmap.js runRanges), worked out by the
+   * worker over the flat states `st` (runStates): resolves to { ranges, deflection }, or null.
+   * @param {{ Q: Float64Array, S: number, m: number }} st
+   * @returns {Promise<{ ranges: Record<number, number>, deflection: number } | null>}
+   */
+  runRanges(st) {
+    if (this.freed) return Promise.resolve(null);
+    const seq = ++this.seq;
+    this.worker.postMessage({ op: 'ranges', seq, Q: st.Q, S: st.S, m: st.m }, [st.Q.buffer]);
+    return new Promise((resolve) => this.rangeWaiters.set(seq, resolve));
   }
 
   /** Sends the newest state when nothing is in flight. */
@@ -333,6 +372,8 @@ export class RemoteWingView {
   free() {
     if (this.freed) return;
     this.freed = true;
+    for (const f of this.rangeWaiters.values()) f(null);
+    this.rangeWaiters.clear();
     for (const f of this.idlers.splice(0)) f();
     this.worker.postMessage({ op: 'free' });
     // the worker closes itself; terminate in case it is stuck in a long frame

@@ -8,11 +8,14 @@
 //   draw  { seq, frame: [exaggeration, colour] | null, pose: [α, β, γ], q }: WingView.set_frame
 //         (with frame) or setPose, then render; answered by `drawn`
 //   call  { name, args }: one of CALLS (state changes with no answer but a failure's `error`)
+//   ranges { seq, Q, S, m }: the run's colour ranges and largest deflection over S modal states
+//         (strainmap.js rangesOfStates on the worker's wing), answered by `ranges`
 //   free  {}
 // worker → page
 //   ready  { backend, triangles, camera }  or  failed { message }
 //   drawn  { seq, legend, stops, error }   (legend and stops only for a draw with frame)
 //   error  { name, message }               (a call the view refused)
+//   ranges { seq, ranges, deflection }     (ranges null when they could not be worked out)
 
 /** The WingView methods a `call` may name: the view's state setters, nothing else. */
 export const CALLS = Object.freeze([
@@ -31,13 +34,15 @@ export const CALLS = Object.freeze([
  *   triangles: ArrayLike<number>, shapes: ArrayLike<number>, strain_nodes: ArrayLike<number> }} InitMsg
  * @typedef {{ op: 'draw', seq: number, frame: number[] | null, pose: number[], q: Float64Array }} DrawMsg
  * @typedef {{ op: 'call', name: string, args: unknown[] }} CallMsg
+ * @typedef {{ op: 'ranges', seq: number, Q: Float64Array, S: number, m: number }} RangesMsg
  * @typedef {{ op: 'free' }} FreeMsg
- * @typedef {InitMsg | DrawMsg | CallMsg | FreeMsg} ToWorker
+ * @typedef {InitMsg | DrawMsg | CallMsg | RangesMsg | FreeMsg} ToWorker
  * @typedef {{ op: 'ready', backend: string, triangles: number, camera: number[] }} ReadyMsg
  * @typedef {{ op: 'failed', message: string }} FailedMsg
  * @typedef {{ op: 'drawn', seq: number, legend: any, stops: number[] | null, error: string | null }} DrawnMsg
  * @typedef {{ op: 'error', name: string, message: string }} ErrorMsg
- * @typedef {ReadyMsg | FailedMsg | DrawnMsg | ErrorMsg} FromWorker
+ * @typedef {{ op: 'ranges', seq: number, ranges: Record<number, number> | null, deflection: number }} RangesReply
+ * @typedef {ReadyMsg | FailedMsg | DrawnMsg | ErrorMsg | RangesReply} FromWorker
  */
 
 /**
@@ -56,6 +61,16 @@ export function readToWorker(d) {
         : null;
     case 'call':
       return CALLS.includes(d.name) && Array.isArray(d.args) ? d : null;
+    case 'ranges':
+      return Number.isInteger(d.seq) &&
+        d.Q instanceof Float64Array &&
+        Number.isInteger(d.S) &&
+        Number.isInteger(d.m) &&
+        d.S >= 0 &&
+        d.m >= 0 &&
+        d.Q.length === d.S * d.m
+        ? d
+        : null;
     case 'free':
       return d;
     default:
@@ -77,6 +92,7 @@ export function readFromWorker(d) {
     case 'error':
       return typeof d.message === 'string' ? d : null;
     case 'drawn':
+    case 'ranges':
       return Number.isInteger(d.seq) ? d : null;
     default:
       return null;
