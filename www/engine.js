@@ -128,6 +128,8 @@ export function createEngine(deps = {}) {
   let kin = null;
   /** @type {[number, number] | null} */
   let strainPoint = null;
+  /** @type {Worker | null} a render worker started ahead (prewarmRender) */
+  let spareRender = null;
 
   /** The wasm module, or a throw when it has not loaded yet. */
   const need = () => {
@@ -216,6 +218,14 @@ export function createEngine(deps = {}) {
       return wf && wf.WingView;
     },
     /**
+     * Starts a render worker now, for renderWorker() to hand out later: its scripts and the
+     * wasm glue load while the full build downloads, not after it (the 3-D view calls this when
+     * it starts, before it waits for the full build).
+     */
+    prewarmRender() {
+      if (!spareRender && typeof Worker === 'function') spareRender = (deps.createRenderWorker || renderWorker)();
+    },
+    /**
      * What the 3-D view needs to draw from a worker (www/render-worker.js): a new render worker,
      * the page's compiled full module for it, and the renderer's camera fit (WingView.fitCamera,
      * run on the page). Null while the full build is not loaded, or with a test's fake loaders.
@@ -226,8 +236,10 @@ export function createEngine(deps = {}) {
       const wf = builds.loaded;
       if (!module || !wf || typeof wf.WingView !== 'function' || typeof wf.WingView.fitCamera !== 'function')
         return null;
+      const worker = spareRender || (deps.createRenderWorker || renderWorker)();
+      spareRender = null;
       return {
-        worker: (deps.createRenderWorker || renderWorker)(),
+        worker,
         module,
         fitCamera: (cam, xyz, margin, aspect) => wf.WingView.fitCamera(cam, xyz, margin, aspect),
       };

@@ -23,6 +23,9 @@ let wing = null;
 
 /** @param {import('./wing3d/render-protocol.js').FromWorker} m */
 const post = (m) => scope.postMessage(m);
+/** The full build's glue, loading from the start (the page may start this worker ahead of its module). */
+const glueReady = import(new URL(VARIANT_FILES.full.glue, WWW).href);
+glueReady.catch(() => {});
 
 /**
  * Loads the full build from the page's compiled module and makes the view. Without a WebGPU
@@ -32,7 +35,7 @@ const post = (m) => scope.postMessage(m);
  * @param {import('./wing3d/render-protocol.js').InitMsg} m
  */
 async function init(m) {
-  const glue = await import(new URL(VARIANT_FILES.full.glue, WWW).href);
+  const glue = await glueReady;
   await glue.default({ module_or_path: m.module });
   canvas = m.canvas;
   wing = { nodes: m.nodes, strain_nodes: m.strain_nodes, shapes: m.shapes };

@@ -19,7 +19,7 @@ import { createStrainLegend } from './legend.js';
 import { createFields, FIELD_COLOUR, SENSE_COLOUR } from './fields.js';
 import * as T from './texts.js';
 import { RemoteWingView } from './remote-view.js';
-import { makePanelView } from './make-view.js';
+import { makePanelView, wantWorker } from './make-view.js';
 import { panelApi } from './panel-api.js';
 import { writeFrameTexts, setText } from './frame-texts.js';
 
@@ -231,8 +231,11 @@ export class Wing3dPanel {
   async start() {
     if (this.started) return;
     this.started = true;
-    // The renderer is in the full wasm build, which loads behind the live one.
+    // The renderer is in the full wasm build, which loads behind the live one; a worker to draw
+    // in starts loading meanwhile.
     this.dom.status.textContent = 'Loading the 3-D renderer…';
+    if (wantWorker(this.dom.box, this.canvas) && typeof this.engine.prewarmRender === 'function')
+      this.engine.prewarmRender();
     try {
       await this.engine.loadFull();
     } catch (e) {
