@@ -11,6 +11,7 @@
 // The lab opens at its default layout (the 3-D panel first) in a 1280×800 viewport.
 //
 // Usage: node scripts/perf-3d.mjs [--seconds 5] [--only webgl2|webgpu] [--viewport 1280x800]
+//        [--render worker|main|both] (the 3-D view drawn in its worker, the default, or on the page)
 //        (after scripts/build-web.sh www). Writes test-output/perf-3d.json and prints a table.
 // Library: `measure3d(browserOrPage, { url, seconds, viewport, sliders })` returns the same
 // record for one browser (the backend is whatever the browser gives the page).
@@ -269,33 +270,19 @@ async function main() {
   const rows = [];
   try {
     for (const render of renders) {
-      if (!only || only === 'webgl2') {
-        rows.push({
-          flags: 'default',
-          ...(await measure3d(env.browser, {
-            url: env.url + query,
-            setup: setupJs,
-            seconds,
-            viewport: { width: vw, height: vh },
-            sliders,
-            render,
-          })),
-        });
-      }
+      const opts = {
+        url: env.url + query,
+        setup: setupJs,
+        seconds,
+        viewport: { width: vw, height: vh },
+        sliders,
+        render,
+      };
+      if (!only || only === 'webgl2') rows.push({ flags: 'default', ...(await measure3d(env.browser, opts)) });
       if (!only || only === 'webgpu') {
         const b = await chromium.launch({ executablePath: CHROMIUM, args: [...ARGS, ...WEBGPU_FLAGS], headless: true });
         try {
-          rows.push({
-            flags: 'webgpu',
-            ...(await measure3d(b, {
-              url: env.url + query,
-              setup: setupJs,
-              seconds,
-              viewport: { width: vw, height: vh },
-              sliders,
-              render,
-            })),
-          });
+          rows.push({ flags: 'webgpu', ...(await measure3d(b, opts)) });
         } finally {
           await b.close();
         }
