@@ -179,3 +179,38 @@ test('WingView methods refuse hostile arguments by name, without trapping or lea
   );
   await page.close();
 });
+
+test('the constructors take an HTMLCanvasElement or an OffscreenCanvas, and refuse anything else by name', async () => {
+  const page = await env.browser.newPage();
+  await page.goto(`${env.url}/style.css`);
+  const out = await page.evaluate(async () => {
+    const wb = await import('/pkg/wingbeat.js');
+    await wb.default();
+    const refused = [];
+    for (const [label, c] of [
+      ['{}', {}],
+      ['null', null],
+      ['a div', document.createElement('div')],
+      ['a string', 'canvas'],
+    ]) {
+      try {
+        await wb.WingView.createSynthetic(c, 4, 2);
+        refused.push(`${label}: accepted`);
+      } catch (e) {
+        refused.push(`${label}: ${e instanceof WebAssembly.RuntimeError ? 'TRAP' : ''}${e.message}`);
+      }
+    }
+    // an OffscreenCanvas (as a worker gets one) draws like a canvas of the page
+    const off = new OffscreenCanvas(32, 24);
+    const view = await wb.WingView.createSynthetic(off, 4, 2);
+    view.set_frame(0.1, 0.2, 0.3, new Float64Array(2), 10, 4);
+    view.render();
+    const backend = view.backend();
+    view.free();
+    return { refused, backend };
+  });
+  for (const r of out.refused)
+    assert.match(r, /^[^:]+: invalid value for `canvas`: .*an HTMLCanvasElement or an OffscreenCanvas/, r);
+  assert.match(out.backend, /^(webgpu|webgl2)$/);
+  await page.close();
+});
