@@ -1,6 +1,6 @@
 // The 3-D view drawn by a worker, the page's side (www/wing3d/remote-view.js) and the messages
-// (www/wing3d/render-protocol.js): against a stand-in worker that records what it was sent and
-// answers as www/render-worker.js does. Latest-wins frames, legends to the frame that asked,
+// (www/wing3d/render-protocol.js): against the shared stand-in worker (fake_worker.mjs), answered as
+// www/render-worker.js would. Latest-wins frames, legends to the frame that asked,
 // the camera kept as the renderer keeps it, refusals at once, a failed start; and the
 // renderer's own fit (WingView.fitCamera) in the real wasm against the page's mirror.
 import { test } from 'node:test';
@@ -9,29 +9,10 @@ import { RemoteWingView, canRenderInWorker } from '../../www/wing3d/remote-view.
 import { CALLS, readToWorker, readFromWorker } from '../../www/wing3d/render-protocol.js';
 import * as S from '../../www/scene3d.js';
 import { loadReal } from './real_wasm.mjs';
+import { fakeWorker } from './fake_worker.mjs';
 
-/** A stand-in render worker: logs messages; `answer(m)` delivers a worker message to the page. */
-function fakeWorker() {
-  const w = {
-    sent: [],
-    terminated: false,
-    onmessage: null,
-    onerror: null,
-    postMessage(m) {
-      w.sent.push(m);
-    },
-    terminate() {
-      w.terminated = true;
-    },
-    answer(m) {
-      w.onmessage({ data: m });
-    },
-    draws() {
-      return w.sent.filter((m) => m.op === 'draw');
-    },
-  };
-  return w;
-}
+/** The draw messages posted to a stand-in worker (fake_worker.mjs, shared with the engine tests). */
+const draws = (w) => w.posted.filter((m) => m.op === 'draw');
 
 const WING = {
   nodes: Float64Array.of(0, 0, 0, 0.04, 0, 0, 0.04, -0.01, 0, 0, -0.01, 0),
@@ -51,15 +32,15 @@ async function started(o = {}) {
     fitCamera: o.fitCamera || ((c) => c),
     ...o,
   });
-  assert.equal(worker.sent[0].op, 'init');
-  worker.answer({ op: 'ready', backend: 'webgl2', triangles: 2, camera: CAM });
+  assert.equal(worker.posted[0].op, 'init');
+  worker.reply({ op: 'ready', backend: 'webgl2', triangles: 2, camera: CAM });
   const view = await p;
   return { view, worker };
 }
 
 test('create hands the canvas over and answers with the worker view', async () => {
   const { view, worker } = await started();
-  const init = worker.sent[0];
+  const init = worker.posted[0];
   assert.deepEqual(init.canvas, { offscreen: true });
   assert.equal(init.nodes, WING.nodes, 'the wing goes with init');
   assert.equal(view.backend(), 'webgl2');
@@ -70,7 +51,7 @@ test('create hands the canvas over and answers with the worker view', async () =
 test('a failed start rejects with the worker reason and ends the worker', async () => {
   const worker = fakeWorker();
   const p = RemoteWingView.create(canvas(), WING, { worker, module: /** @type {any} */ ({}), fitCamera: (c) => c });
-  worker.answer({ op: 'failed', message: 'this browser offers neither WebGPU nor WebGL2' });
+  worker.reply({ op: 'failed', message: 'this browser offers neither WebGPU nor WebGL2' });
   await assert.rejects(p, /neither WebGPU nor WebGL2/);
   assert.ok(worker.terminated);
 });
@@ -91,20 +72,20 @@ test('frames are latest-wins: one draw in flight, the newest pose sent next, non
   const { view, worker } = await started();
   view.setPose(0.1, 0, 0, [1]);
   view.render();
-  assert.equal(worker.draws().length, 1, 'the first frame goes at once');
+  assert.equal(draws(worker).length, 1, 'the first frame goes at once');
   for (let i = 2; i <= 10; i++) {
     view.setPose(0.1 * i, 0, 0, [i]);
     view.render();
   }
-  assert.equal(worker.draws().length, 1, 'nothing more while the first is in flight');
-  worker.answer({ op: 'drawn', seq: 1, legend: null, stops: null, error: null });
-  const d = worker.draws();
+  assert.equal(draws(worker).length, 1, 'nothing more while the first is in flight');
+  worker.reply({ op: 'drawn', seq: 1, legend: null, stops: null, error: null });
+  const d = draws(worker);
   assert.equal(d.length, 2);
   assert.deepEqual(d[1].pose, [1.0, 0, 0], 'the newest pose, not the second');
   assert.deepEqual(Array.from(d[1].q), [10]);
   assert.equal(d[1].frame, null);
-  worker.answer({ op: 'drawn', seq: 2, legend: null, stops: null, error: null });
-  assert.equal(worker.draws().length, 2, 'nothing new: nothing sent');
+  worker.reply({ op: 'drawn', seq: 2, legend: null, stops: null, error: null });
+  assert.equal(draws(worker).length, 2, 'nothing new: nothing sent');
   assert.equal(view.drawn, 2);
 });
 
@@ -116,12 +97,12 @@ test('set_frame resolves to the legend of the draw that carried it; merged frame
   const b = view.set_frame(0.3, 0, 0, [2], 20, 1);
   view.setPose(0.4, 0, 0, [3]);
   view.render();
-  worker.answer({ op: 'drawn', seq: 1, legend: null, stops: null, error: null });
-  const d = worker.draws()[1];
+  worker.reply({ op: 'drawn', seq: 1, legend: null, stops: null, error: null });
+  const d = draws(worker)[1];
   assert.deepEqual(d.frame, [20, 1], 'the newest exaggeration and colour');
   assert.deepEqual(d.pose, [0.4, 0, 0], 'with the newest pose');
   const legend = { component: 'ε_x', max_deflection_m: 1e-4 };
-  worker.answer({ op: 'drawn', seq: 2, legend, stops: [0, 1, 0, 0], error: null });
+  worker.reply({ op: 'drawn', seq: 2, legend, stops: [0, 1, 0, 0], error: null });
   assert.equal(await a, legend);
   assert.equal(await b, legend);
   assert.deepEqual(view.legend_stops(), [0, 1, 0, 0]);
@@ -134,11 +115,11 @@ test('a failed draw resolves null, reports, and the next frame still goes', asyn
   view.render();
   view.setPose(0.5, 0, 0, [0]);
   view.render();
-  worker.answer({ op: 'drawn', seq: 1, legend: null, stops: null, error: 'device lost' });
+  worker.reply({ op: 'drawn', seq: 1, legend: null, stops: null, error: 'device lost' });
   assert.equal(await p, null);
   assert.deepEqual(errors, ['render: device lost']);
-  assert.equal(worker.draws().length, 2);
-  worker.answer({ op: 'error', name: 'setNodeField', message: 'bad' });
+  assert.equal(draws(worker).length, 2);
+  worker.reply({ op: 'error', name: 'setNodeField', message: 'bad' });
   assert.deepEqual(errors.at(-1), 'setNodeField: bad');
 });
 
@@ -160,7 +141,7 @@ test('the camera is kept as the renderer keeps it, and every change is sent', as
   assert.ok(Math.abs(view.camera()[4] - (Math.PI / 2 - 0.01)) < 1e-12, 'pitch within its limit');
   assert.throws(() => view.setCamera(0, 0, 0, 0, 0, 0), /distance > 0/);
   assert.throws(() => view.setCamera(Number.NaN, 0, 0, 0, 0, 1), /finite/);
-  const calls = worker.sent.filter((x) => x.op === 'call').map((x) => x.name);
+  const calls = worker.posted.filter((x) => x.op === 'call').map((x) => x.name);
   assert.deepEqual(calls, ['orbit', 'zoom', 'key', 'setCamera'], 'refused calls are not sent');
 });
 
@@ -178,13 +159,13 @@ test('fitPoints runs the renderer fit on the page with the canvas aspect and sen
   assert.deepEqual(out, fitted);
   assert.deepEqual(seen, [{ c: CAM, n: 9, margin: 0.04, aspect: 2 }]);
   assert.deepEqual(view.camera(), fitted);
-  const last = worker.sent.at(-1);
+  const last = worker.posted.at(-1);
   assert.deepEqual([last.name, last.args], ['setCamera', fitted]);
 });
 
 test('refusals come at once, as the view refuses them: field length, canvas size', async () => {
   const { view, worker } = await started();
-  const before = worker.sent.length;
+  const before = worker.posted.length;
   assert.throws(() => view.setNodeField(new Float64Array(3), 1), /one per node, 4/);
   for (const [w, h] of [
     [0, 10],
@@ -193,20 +174,20 @@ test('refusals come at once, as the view refuses them: field length, canvas size
     [Number.NaN, 1],
   ])
     assert.throws(() => view.resize(w, h), /integers in \[1, 32768\]/);
-  assert.equal(worker.sent.length, before, 'nothing sent');
+  assert.equal(worker.posted.length, before, 'nothing sent');
   view.setNodeField([1, 2, 3, 4], null);
-  assert.ok(worker.sent.at(-1).args[0] instanceof Float64Array);
+  assert.ok(worker.posted.at(-1).args[0] instanceof Float64Array);
 });
 
 test('free ends the worker and sends nothing after', async () => {
   const { view, worker } = await started();
   view.free();
-  assert.equal(worker.sent.at(-1).op, 'free');
-  const n = worker.sent.length;
+  assert.equal(worker.posted.at(-1).op, 'free');
+  const n = worker.posted.length;
   view.setPose(0, 0, 0, []);
   view.render();
   view.orbit(1, 1);
-  assert.equal(worker.sent.length, n);
+  assert.equal(worker.posted.length, n);
 });
 
 test('the protocol readers take what the other side writes and nothing else', () => {
@@ -270,7 +251,7 @@ test('runRanges asks the worker for the run ranges over flat states; idle waits 
   const { view, worker } = await started();
   const Q = Float64Array.of(1, 2, 3, 4);
   const p = view.runRanges({ Q, S: 2, m: 2 });
-  const m = worker.sent.at(-1);
+  const m = worker.posted.at(-1);
   assert.deepEqual([m.op, m.S, m.m, Array.from(m.Q)], ['ranges', 2, 2, [1, 2, 3, 4]]);
   assert.ok(readToWorker(m), 'the worker reads it');
   let idle = false;
@@ -284,17 +265,17 @@ test('runRanges asks the worker for the run ranges over flat states; idle waits 
     view.setPose(0, 0, 0, [0]);
     view.render();
   });
-  worker.answer({ op: 'ranges', seq: m.seq, ranges: { 1: 1e-4, 2: 2e-4, 3: 3e-4, 4: 4e-4 }, deflection: 1e-3 });
+  worker.reply({ op: 'ranges', seq: m.seq, ranges: { 1: 1e-4, 2: 2e-4, 3: 3e-4, 4: 4e-4 }, deflection: 1e-3 });
   assert.deepEqual(await p, { ranges: { 1: 1e-4, 2: 2e-4, 3: 3e-4, 4: 4e-4 }, deflection: 1e-3 });
   await new Promise((r) => setTimeout(r, 5));
   assert.equal(idle, false, 'the frame asked for is still in flight');
-  const d = worker.draws().at(-1);
-  worker.answer({ op: 'drawn', seq: d.seq, legend: null, stops: null, error: null });
+  const d = draws(worker).at(-1);
+  worker.reply({ op: 'drawn', seq: d.seq, legend: null, stops: null, error: null });
   await done;
   assert.equal(idle, true);
   // a worker that could not work them out: null; a freed view answers null at once
   const p2 = view.runRanges({ Q: new Float64Array(0), S: 0, m: 2 });
-  worker.answer({ op: 'ranges', seq: worker.sent.at(-1).seq, ranges: null, deflection: 0 });
+  worker.reply({ op: 'ranges', seq: worker.posted.at(-1).seq, ranges: null, deflection: 0 });
   assert.equal(await p2, null);
   view.free();
   assert.equal(await view.runRanges({ Q: new Float64Array(0), S: 0, m: 0 }), null);
