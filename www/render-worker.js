@@ -7,7 +7,7 @@
 import { WWW } from './base.js';
 import { VARIANT_FILES } from './engine/wasm.js';
 import { errorText } from './format.js';
-import { WEBGL_ATTRIBUTES } from './wing3d/canvas.js';
+import { prepareContext } from './wing3d/canvas.js';
 import { readToWorker } from './wing3d/render-protocol.js';
 import { rangesOfStates } from './strainmap.js';
 
@@ -28,10 +28,9 @@ const glueReady = import(new URL(VARIANT_FILES.full.glue, WWW).href);
 glueReady.catch(() => {});
 
 /**
- * Loads the full build from the page's compiled module and makes the view. Without a WebGPU
- * adapter wgpu draws with WebGL2 into the canvas's "webgl2" context: made here first, it has
- * WEBGL_ATTRIBUTES instead of the defaults (as www/wing3d/canvas.js prepareContext does on
- * the page).
+ * Loads the full build from the page's compiled module and makes the view (the WebGL2 context
+ * attributes set first where there is no WebGPU adapter, as on the page: canvas.js
+ * prepareContext).
  * @param {import('./wing3d/render-protocol.js').InitMsg} m
  */
 async function init(m) {
@@ -39,20 +38,7 @@ async function init(m) {
   await glue.default({ module_or_path: m.module });
   canvas = m.canvas;
   wing = { nodes: m.nodes, strain_nodes: m.strain_nodes, shapes: m.shapes };
-  let webgpu = false;
-  try {
-    const gpu = scope.navigator && scope.navigator.gpu;
-    webgpu = !!(gpu && (await gpu.requestAdapter()));
-  } catch {
-    webgpu = false;
-  }
-  if (!webgpu) {
-    try {
-      canvas.getContext('webgl2', WEBGL_ATTRIBUTES);
-    } catch {
-      /* wgpu reports it */
-    }
-  }
+  await prepareContext(canvas);
   view = await glue.WingView.createFromArrays(canvas, m.nodes, m.triangles, m.shapes, m.strain_nodes);
   post({ op: 'ready', backend: view.backend(), triangles: view.triangles(), camera: Array.from(view.camera()) });
 }

@@ -44,8 +44,9 @@ export function canvasSize(stageWidth, dpr) {
 /**
  * Without a WebGPU adapter wgpu draws with WebGL2 into the canvas's "webgl2" context; made
  * here first, that context has WEBGL_ATTRIBUTES instead of the defaults (an alpha channel and
- * a depth buffer nobody uses, each paid per pixel per frame by a software rasteriser).
- * @param {HTMLCanvasElement} c
+ * a depth buffer nobody uses, each paid per pixel per frame by a software rasteriser). The
+ * page's canvas, or the OffscreenCanvas the render worker draws on.
+ * @param {HTMLCanvasElement | OffscreenCanvas} c
  */
 export async function prepareContext(c) {
   try {

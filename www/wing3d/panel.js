@@ -275,14 +275,9 @@ export class Wing3dPanel {
 
   /** (Re)creates the view for the FE wing `w` once any making under way is done (one canvas, one making). */
   makeView(/** @type {any} */ w) {
-    const run = this.making.then(() => this.makeViewNow(w));
+    const run = this.making.then(() => makePanelView(this, w));
     this.making = run.catch(() => false);
     return run;
-  }
-
-  /** makeView's one making: make-view.js. */
-  makeViewNow(/** @type {any} */ w) {
-    return makePanelView(this, w);
   }
 
   /** A new FE wing in the store (the user's own wing, or another mode count): redraw with it. */
