@@ -111,7 +111,8 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
     let tp = ode.homogeneous_period();
     let fp = 1.0 / tp;
     // Full-period monodromy.
-    let mt = monodromy.unwrap_or_else(|| period_map_with(ode, t, &[], false).monodromy);
+    let hom = crate::solve::Homogeneous(ode);
+    let mt = monodromy.unwrap_or_else(|| period_map_with(&hom, t, &[], false).monodromy);
     let lt = multipliers(&mt);
     let max_modulus = lt[0].norm().max(lt[1].norm());
 
@@ -122,7 +123,7 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
         .next_power_of_two()
         .clamp(32, 1 << 16);
     let phases: Vec<f64> = (0..nh).map(|j| j as f64 * tp / nh as f64).collect();
-    let pm = period_map_with(ode, tp, &phases, false);
+    let pm = period_map_with(&hom, tp, &phases, false);
     let mp = pm.monodromy.map(|x| C64::new(x, 0.0));
     let lp = multipliers(&pm.monodromy);
     let lam = if lp[0].im.abs() > 0.0 {

@@ -184,19 +184,53 @@ pub fn stiffness_force(coefficient: &[f64], q: &[f64]) -> Vec<f64> {
     coefficient.iter().zip(q).map(|(s, q)| s * q).collect()
 }
 
+/// The part of a rotation state that Eq. 13 reads, the same for every mode: Ω and Ω̇ in the
+/// wing frame (rad/s, rad/s²), the yaw γ (rad) and its rate γ̇ (rad/s). Worked out once per
+/// instant ([`Rotation::of`]) and shared by the modes ([`coefficients_of`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rotation {
+    /// Ω (rad/s).
+    pub omega: [f64; 3],
+    /// Ω̇ (rad/s²).
+    pub omega_dot: [f64; 3],
+    /// γ (rad).
+    pub gamma: f64,
+    /// γ̇ (rad/s).
+    pub gamma_dot: f64,
+}
+
+impl Rotation {
+    /// The rotation Eq. 13 reads from the state `s`.
+    pub fn of(s: &RateState) -> Self {
+        let (omega, omega_dot) = s.omega_and_dot();
+        Rotation {
+            omega,
+            omega_dot,
+            gamma: s.gamma,
+            gamma_dot: s.gamma_dot,
+        }
+    }
+}
+
 /// The Eq. 13 coefficients of `mode` for the rotation state `s` (angles and rates at one instant).
 pub fn coefficients(mode: &Mode, s: &RateState) -> Coefficients {
-    let (om, omd) = s.omega_and_dot();
+    coefficients_of(mode, &Rotation::of(s))
+}
+
+/// [`coefficients`] from the mode-independent [`Rotation`] (the same arithmetic, so the same
+/// bits): the solver works the rotation out once per instant for all modes.
+pub fn coefficients_of(mode: &Mode, r: &Rotation) -> Coefficients {
+    let (om, omd) = (r.omega, r.omega_dot);
     let a = mode.a;
     let b = mode.b();
-    let g = s.gamma;
+    let g = r.gamma;
     let w = mode.omega();
     // Euler: − Ω̇ · (γ a − b), in-plane components only (a, b have no K″ part).
     let euler = -(omd[0] * (g * a[0] - b[0]) + omd[1] * (g * a[1] - b[1]));
     // Centrifugal: − Ω_z [Ω · (a + γ b)].
     let centrifugal = -om[2] * (om[0] * (a[0] + g * b[0]) + om[1] * (a[1] + g * b[1]));
     // Coriolis: − 2 γ̇ Ω · a.
-    let coriolis = -2.0 * s.gamma_dot * (om[0] * a[0] + om[1] * a[1]);
+    let coriolis = -2.0 * r.gamma_dot * (om[0] * a[0] + om[1] * a[1]);
     Coefficients {
         // stiffness_coefficient(s), from the Ω already computed (same arithmetic).
         stiffness: w * w - (om[0] * om[0] + om[1] * om[1]),

@@ -149,16 +149,17 @@ pub(crate) fn assemble(
     air: Option<AirSummary>,
 ) -> SimResult {
     let totals: Vec<&[f64]> = modes.iter().map(|m| m.q.total.as_slice()).collect();
-    let strain_points = crate::analysis::strain::strain_series(&cfg.modes, &totals);
+    let mut strain_points = crate::analysis::strain::strain_series(&cfg.modes, &totals);
+    // One point: its series move into `strain` (no copy); several: `strain` is the first's copy.
+    let strain = match strain_points.len() {
+        1 => strain_points.pop(),
+        _ => strain_points.first().cloned(),
+    };
     SimResult {
         t,
         flap_freq_hz: cfg.kinematics.flap_freq_hz,
-        strain: strain_points.first().cloned(),
-        strain_points: if strain_points.len() > 1 {
-            strain_points
-        } else {
-            vec![]
-        },
+        strain,
+        strain_points,
         modes,
         warnings: cfg.warnings(),
         air,

@@ -12,7 +12,7 @@ pub use crate::run::{
     Accuracy, AirSummary, ModeAir, ModeResult, Responses, SimResult, StrainSeries, MAX_RUN_WORK,
 };
 use crate::solve::propagator::{propagate, propagate_responses, Propagated};
-use crate::solve::{LinearOde, ModalOde};
+use crate::solve::{LinearOde, ModalOde, RotationMemo};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -38,14 +38,24 @@ fn floquet_with(
     monodromy: Option<nalgebra::Matrix2<f64>>,
 ) -> FloquetResult {
     let ode = ModalOde::new(kin, mode);
+    floquet::analyse_with(
+        &ode,
+        kin.wd / (2.0 * PI),
+        averaged_freq_hz(mode, mean_stiffness_coefficient(kin)),
+        monodromy,
+    )
+}
+
+/// The mode's frequency with the period-mean softening `mean_s` = ⟨S⟩ (1/s²,
+/// [`mean_stiffness_coefficient`]), √(ω_k² − ⟨S⟩) / 2π (Hz; NaN when ⟨S⟩ ≥ ω_k²).
+fn averaged_freq_hz(mode: &Mode, mean_s: f64) -> f64 {
     let w = mode.omega();
-    let w2 = w * w - mean_stiffness_coefficient(kin);
-    let naive = if w2 > 0.0 {
+    let w2 = w * w - mean_s;
+    if w2 > 0.0 {
         w2.sqrt() / (2.0 * PI)
     } else {
         f64::NAN
-    };
-    floquet::analyse_with(&ode, kin.wd / (2.0 * PI), naive, monodromy)
+    }
 }
 
 /// Propagates one mode: returns the raw propagation.
@@ -192,8 +202,12 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     let dt = 1.0 / cfg.sample_rate_hz;
     let t: Vec<f64> = (0..n).map(|i| i as f64 * dt).collect();
     let mut modes = Vec::with_capacity(cfg.modes.len());
+    // One evaluation of the kinematics per solver time, shared by the modes that step alike.
+    let memo = RotationMemo::new();
+    let mean_s = mean_stiffness_coefficient(&kin);
     for (k, mode) in cfg.modes.iter().enumerate() {
-        let ode = ModalOde::new(&kin, mode);
+        memo.rewind();
+        let ode = ModalOde::sharing(&kin, mode, &memo);
         let mut p = propagate_responses(&ode, dt, n, ModalOde::TOTAL, cfg.ic(k))
             .map_err(|e| name_overflow(e, cfg, k))?;
         let q = Responses {
@@ -206,7 +220,12 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
         };
         let qdot_total = p.qdot_total;
         let contribution_percent = contributions(&q.euler, &q.centrifugal, &q.coriolis, &q.total);
-        let floquet = floquet_with(&kin, mode, Some(p.monodromy));
+        let floquet = floquet::analyse_with(
+            &ode,
+            kin.wd / (2.0 * PI),
+            averaged_freq_hz(mode, mean_s),
+            Some(p.monodromy),
+        );
         let accuracy = Accuracy {
             method: if p.dense {
                 "one-period Gauss–Legendre (order 8) propagator, dense output (Chebyshev degree 8) at the sample phases + exact period recursion"

@@ -42,9 +42,9 @@ pub fn strain_series(modes: &[Mode], totals: &[&[f64]]) -> Vec<StrainSeries> {
         .iter()
         .map(|name| StrainSeries {
             point: (*name).to_string(),
-            eps_x: vec![0.0; n],
-            eps_y: vec![0.0; n],
-            gamma_xy: vec![0.0; n],
+            eps_x: Vec::with_capacity(n),
+            eps_y: Vec::with_capacity(n),
+            gamma_xy: Vec::with_capacity(n),
         })
         .collect();
     for (m, q_total) in modes.iter().zip(totals) {
@@ -56,11 +56,26 @@ pub fn strain_series(modes: &[Mode], totals: &[&[f64]]) -> Vec<StrainSeries> {
                 continue;
             }
             let o = &mut out[j];
-            for (i, q) in q_total.iter().enumerate() {
-                o.eps_x[i] += s.eps_x * q;
-                o.eps_y[i] += s.eps_y * q;
-                o.gamma_xy[i] += s.gamma_xy * q;
+            for (series, c) in [
+                (&mut o.eps_x, s.eps_x),
+                (&mut o.eps_y, s.eps_y),
+                (&mut o.gamma_xy, s.gamma_xy),
+            ] {
+                if series.is_empty() {
+                    // The first mode at this point: 0 + c·q, written once (the same bits).
+                    series.extend(q_total.iter().map(|q| 0.0 + c * q));
+                } else {
+                    for (v, q) in series.iter_mut().zip(q_total.iter()) {
+                        *v += c * q;
+                    }
+                }
             }
+        }
+    }
+    // A point named only by modes without a response here stays at zero strain.
+    for o in &mut out {
+        for series in [&mut o.eps_x, &mut o.eps_y, &mut o.gamma_xy] {
+            series.resize(n, 0.0);
         }
     }
     out

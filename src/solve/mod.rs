@@ -46,6 +46,33 @@ pub trait LinearOde {
 /// Most forcing columns one solve carries.
 pub const MAX_FORCES: usize = 4;
 
+/// The homogeneous part of an equation alone (no forcing columns): for the state-transition
+/// matrix, whose steps then carry two columns instead of two plus the forcings. The
+/// equation's stiffness and damping are read unchanged, so Φ comes out the same bits.
+pub struct Homogeneous<'a, O: LinearOde + ?Sized>(pub &'a O);
+
+impl<O: LinearOde + ?Sized> LinearOde for Homogeneous<'_, O> {
+    fn n_forces(&self) -> usize {
+        0
+    }
+    fn damping(&self) -> f64 {
+        self.0.damping()
+    }
+    fn eval(&self, t: f64, _f: &mut [f64]) -> f64 {
+        let mut f = [0.0; MAX_FORCES];
+        self.0.eval(t, &mut f[..self.0.n_forces()])
+    }
+    fn period(&self) -> f64 {
+        self.0.period()
+    }
+    fn homogeneous_period(&self) -> f64 {
+        self.0.homogeneous_period()
+    }
+    fn freq_scale(&self) -> f64 {
+        self.0.freq_scale()
+    }
+}
+
 /// The modal equation (Eq. 13) of one mode as a [`LinearOde`], with forcing columns
 /// `[euler, centrifugal, coriolis, total]` in that order.
 pub struct ModalOde<'a> {
@@ -57,6 +84,70 @@ pub struct ModalOde<'a> {
     pub max_harmonic: f64,
     /// Whether the softening has period T/2.
     pub half_period: bool,
+    /// The rotations already worked out for another mode of the same run, when shared
+    /// ([`ModalOde::sharing`]).
+    pub memo: Option<&'a RotationMemo>,
+}
+
+/// The rotation ([`crate::model::Rotation`]) at each time the solver asked for, in the order
+/// asked, kept for the next mode of the same run: every mode whose step sizes are the same asks
+/// for the same times in the same order (the paper's two modes do; so do most FE modes below
+/// the kinematics' frequency scale), and then reads them here instead of evaluating the
+/// kinematics again. A time that differs from the recorded one at that position (a mode with
+/// other steps) is worked out afresh, so the results are the same bits either way.
+#[derive(Debug, Default)]
+pub struct RotationMemo {
+    times: std::cell::RefCell<Vec<(f64, crate::model::Rotation)>>,
+    next: std::cell::Cell<usize>,
+}
+
+impl RotationMemo {
+    /// Most rotations kept (≈ 80 B each: 8 MB); later ones are worked out every time.
+    pub const MAX_ENTRIES: usize = 100_000;
+
+    /// An empty memo.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Starts the next mode: reads from the first recorded time again.
+    pub fn rewind(&self) {
+        self.next.set(0);
+    }
+
+    /// Number of rotations recorded.
+    pub fn len(&self) -> usize {
+        self.times.borrow().len()
+    }
+
+    /// Whether nothing is recorded yet.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The rotation at `t`: the recorded one when the next recorded time is `t` (bit for bit),
+    /// else `work(t)`, recorded when the memo is at its end and has room.
+    fn get(
+        &self,
+        t: f64,
+        work: impl FnOnce(f64) -> crate::model::Rotation,
+    ) -> crate::model::Rotation {
+        let i = self.next.get();
+        let mut v = self.times.borrow_mut();
+        if let Some(&(ti, r)) = v.get(i) {
+            if ti.to_bits() == t.to_bits() {
+                self.next.set(i + 1);
+                return r;
+            }
+            return work(t);
+        }
+        let r = work(t);
+        if v.len() < Self::MAX_ENTRIES {
+            v.push((t, r));
+            self.next.set(i + 1);
+        }
+        r
+    }
 }
 
 impl<'a> ModalOde<'a> {
@@ -83,6 +174,29 @@ impl<'a> ModalOde<'a> {
             mode,
             max_harmonic,
             half_period: kin.stiffness_coefficient_has_half_period(),
+            memo: None,
+        }
+    }
+
+    /// [`ModalOde::new`] reading and recording the kinematics' rotations in `memo`, shared
+    /// with the run's other modes (rewind it before each mode's integration).
+    pub fn sharing(
+        kin: &'a crate::kinematics::Compiled,
+        mode: &'a crate::model::Mode,
+        memo: &'a RotationMemo,
+    ) -> Self {
+        ModalOde {
+            memo: Some(memo),
+            ..ModalOde::new(kin, mode)
+        }
+    }
+
+    /// The rotation at `t`, from the memo when there is one.
+    fn rotation(&self, t: f64) -> crate::model::Rotation {
+        let work = |t| crate::model::Rotation::of(&self.kin.state(t));
+        match self.memo {
+            Some(m) => m.get(t, work),
+            None => work(t),
         }
     }
 }
@@ -95,7 +209,7 @@ impl LinearOde for ModalOde<'_> {
         2.0 * self.mode.zeta * self.mode.omega()
     }
     fn eval(&self, t: f64, f: &mut [f64]) -> f64 {
-        let c = crate::model::coefficients(self.mode, &self.kin.state(t));
+        let c = crate::model::coefficients_of(self.mode, &self.rotation(t));
         f[0] = c.euler;
         f[1] = c.centrifugal;
         f[2] = c.coriolis;
