@@ -234,3 +234,80 @@ impl LinearOde for ModalOde<'_> {
         w.max(4.0 * self.max_harmonic * self.kin.wd).max(damp)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::propagator::propagate_responses;
+    use super::*;
+    use crate::kinematics::Kinematics;
+    use crate::model::Mode;
+
+    fn mode(freq_hz: f64, a: [f64; 2]) -> Mode {
+        Mode {
+            name: String::new(),
+            freq_hz,
+            a,
+            zeta: 0.01,
+            strains: vec![],
+        }
+    }
+
+    /// Modes that step alike (62.5 and 86.9 Hz under 25 Hz flapping) read the first mode's
+    /// rotations; one that steps differently (900 Hz: a shorter step) works its own out. Every
+    /// response is the same bits as without the memo, and the memo grows only with the first.
+    #[test]
+    fn shared_rotations_give_the_same_bits_as_fresh_ones() {
+        let kin = Kinematics::paper_forward_flight().compile();
+        let modes = [
+            mode(62.5, [0.7552e-5, 0.0934e-5]),
+            mode(900.0, [0.3e-5, -0.2e-5]),
+            mode(86.9, [-0.1728e-5, -0.0033e-5]),
+        ];
+        let memo = RotationMemo::new();
+        let mut recorded = None;
+        for m in &modes {
+            memo.rewind();
+            let shared = ModalOde::sharing(&kin, m, &memo);
+            let a = propagate_responses(&shared, 1e-4, 2001, ModalOde::TOTAL, [1e-6, 0.0]).unwrap();
+            let b = propagate_responses(
+                &ModalOde::new(&kin, m),
+                1e-4,
+                2001,
+                ModalOde::TOTAL,
+                [1e-6, 0.0],
+            )
+            .unwrap();
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&a.total), bits(&b.total), "{} Hz", m.freq_hz);
+            assert_eq!(bits(&a.qdot_total), bits(&b.qdot_total), "{} Hz", m.freq_hz);
+            for j in 0..3 {
+                assert_eq!(bits(&a.q[j]), bits(&b.q[j]), "{} Hz, column {j}", m.freq_hz);
+            }
+            assert_eq!(a.monodromy, b.monodromy);
+            let n = *recorded.get_or_insert(memo.len());
+            assert_eq!(memo.len(), n, "only the first mode records");
+        }
+        // 400 steps at the output phases and 157 for the error estimate (twice the largest
+        // step), 4 stage times each.
+        assert_eq!(recorded, Some(4 * (400 + 157)));
+    }
+
+    /// A memo at its end with no room left works every rotation out and records nothing.
+    #[test]
+    fn a_full_memo_stops_recording() {
+        let kin = Kinematics::paper_forward_flight().compile();
+        let m = mode(62.5, [1e-5, 0.0]);
+        let memo = RotationMemo::new();
+        let ode = ModalOde::sharing(&kin, &m, &memo);
+        let mut f = [0.0; MAX_FORCES];
+        let k0 = ode.eval(0.001, &mut f);
+        assert_eq!(memo.len(), 1);
+        // A different time at the recorded position: worked out, not recorded.
+        memo.rewind();
+        let k1 = ode.eval(0.002, &mut f);
+        assert_eq!(memo.len(), 1);
+        assert_ne!(k0, k1);
+        let fresh = ModalOde::new(&kin, &m).eval(0.002, &mut [0.0; MAX_FORCES]);
+        assert_eq!(k1.to_bits(), fresh.to_bits());
+    }
+}
