@@ -6,7 +6,8 @@ use std::hint::black_box;
 use wingbeat::analysis::ic_map::{ic_map, IcMapOptions};
 use wingbeat::analysis::sweep::{sweep, SweepOptions, SweepParam};
 use wingbeat::config::SimConfig;
-use wingbeat::simulate::simulate;
+use wingbeat::pool::SeriesPool;
+use wingbeat::simulate::{simulate, simulate_reusing};
 
 fn paper_case(c: &mut Criterion) {
     let cfg = SimConfig::paper();
@@ -14,6 +15,15 @@ fn paper_case(c: &mut Criterion) {
         "paper case: 2 modes × 4 responses, 2 s at 10 kHz (+Floquet)",
         |b| b.iter(|| simulate(black_box(&cfg)).unwrap()),
     );
+    // The same run writing into the previous result's series (a timing loop, a sweep, the
+    // lab's recomputations): no fresh pages per run.
+    let mut pool = SeriesPool::new();
+    c.bench_function("paper case, series reused", |b| {
+        b.iter(|| {
+            let r = simulate_reusing(black_box(&cfg), &mut pool).unwrap();
+            r.recycle(&mut pool);
+        });
+    });
 }
 
 /// The same run at a flap frequency that does not divide the sample rate (25.5 Hz at 10 kHz:

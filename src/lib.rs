@@ -59,6 +59,7 @@ pub mod model;
 pub mod modes_doc;
 pub mod parallel;
 pub mod params;
+pub mod pool;
 pub mod presets;
 pub mod ranges;
 #[cfg(feature = "render")]

@@ -10,6 +10,7 @@ use crate::aero::AeroConfig;
 use crate::analysis::contribution::Contributions;
 use crate::config::SimConfig;
 use crate::floquet::FloquetResult;
+use crate::pool::SeriesPool;
 use serde::{Deserialize, Serialize};
 
 /// Partial and total responses of one mode (kg^½·m for mass-normalised modes).
@@ -92,6 +93,33 @@ pub struct SimResult {
     pub air: Option<AirSummary>,
 }
 
+impl SimResult {
+    /// Hands every series of this result (times, responses, velocities, strains) to `pool`,
+    /// for the next run to write into ([`crate::simulate::simulate_reusing`]).
+    pub fn recycle(self, pool: &mut SeriesPool) {
+        pool.give(self.t);
+        for m in self.modes {
+            let q = m.q;
+            for v in [
+                q.euler,
+                q.centrifugal,
+                q.coriolis,
+                q.aerodynamic,
+                q.free,
+                q.total,
+                m.qdot_total,
+            ] {
+                pool.give(v);
+            }
+        }
+        for s in self.strain.into_iter().chain(self.strain_points) {
+            for v in [s.eps_x, s.eps_y, s.gamma_xy] {
+                pool.give(v);
+            }
+        }
+    }
+}
+
 /// What air does to one mode (the `air` block of a mode's result).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ModeAir {
@@ -148,8 +176,19 @@ pub(crate) fn assemble(
     modes: Vec<ModeResult>,
     air: Option<AirSummary>,
 ) -> SimResult {
+    assemble_in(cfg, t, modes, air, &mut SeriesPool::new())
+}
+
+/// [`assemble`] with the strain series taken from `pool`.
+pub(crate) fn assemble_in(
+    cfg: &SimConfig,
+    t: Vec<f64>,
+    modes: Vec<ModeResult>,
+    air: Option<AirSummary>,
+    pool: &mut SeriesPool,
+) -> SimResult {
     let totals: Vec<&[f64]> = modes.iter().map(|m| m.q.total.as_slice()).collect();
-    let mut strain_points = crate::analysis::strain::strain_series(&cfg.modes, &totals);
+    let mut strain_points = crate::analysis::strain::strain_series_in(&cfg.modes, &totals, pool);
     // One point: its series move into `strain` (no copy); several: `strain` is the first's copy.
     let strain = match strain_points.len() {
         1 => strain_points.pop(),

@@ -7,11 +7,12 @@ use crate::error::{Result, WingbeatError};
 use crate::floquet::{self, FloquetResult};
 use crate::kinematics::Compiled;
 use crate::model::{stiffness_coefficient, Mode};
-use crate::run::assemble;
+use crate::pool::SeriesPool;
+use crate::run::assemble_in;
 pub use crate::run::{
     Accuracy, AirSummary, ModeAir, ModeResult, Responses, SimResult, StrainSeries, MAX_RUN_WORK,
 };
-use crate::solve::propagator::{propagate, propagate_responses, Propagated};
+use crate::solve::propagator::{propagate, propagate_responses_in, Propagated};
 use crate::solve::{LinearOde, ModalOde, RotationMemo};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -191,6 +192,13 @@ fn name_overflow(e: WingbeatError, cfg: &SimConfig, k: usize) -> WingbeatError {
 
 /// Runs a simulation.
 pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
+    simulate_reusing(cfg, &mut SeriesPool::new())
+}
+
+/// [`simulate`] writing the result's series into memory from `pool` (the same numbers): hand
+/// each result back with [`SimResult::recycle`] when done with it, and a loop of runs stops
+/// paying for fresh pages every time. (In air the run takes fresh series.)
+pub fn simulate_reusing(cfg: &SimConfig, pool: &mut SeriesPool) -> Result<SimResult> {
     cfg.validate()?;
     if !cfg.aero.is_vacuum() {
         let geom = cfg.wing.as_deref().ok_or_else(crate::aero::no_wing_error)?;
@@ -200,7 +208,8 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     check_cost_with(cfg, &kin, MAX_RUN_WORK, "simulate")?;
     let n = cfg.n_samples();
     let dt = 1.0 / cfg.sample_rate_hz;
-    let t: Vec<f64> = (0..n).map(|i| i as f64 * dt).collect();
+    let mut t = pool.take(n);
+    t.extend((0..n).map(|i| i as f64 * dt));
     let mut modes = Vec::with_capacity(cfg.modes.len());
     // One evaluation of the kinematics per solver time, shared by the modes that step alike.
     let memo = RotationMemo::new();
@@ -208,7 +217,7 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
     for (k, mode) in cfg.modes.iter().enumerate() {
         memo.rewind();
         let ode = ModalOde::sharing(&kin, mode, &memo);
-        let mut p = propagate_responses(&ode, dt, n, ModalOde::TOTAL, cfg.ic(k))
+        let mut p = propagate_responses_in(&ode, dt, n, ModalOde::TOTAL, cfg.ic(k), pool)
             .map_err(|e| name_overflow(e, cfg, k))?;
         let q = Responses {
             euler: std::mem::take(&mut p.q[ModalOde::EULER]),
@@ -249,7 +258,7 @@ pub fn simulate(cfg: &SimConfig) -> Result<SimResult> {
             air: None,
         });
     }
-    Ok(assemble(cfg, t, modes, None))
+    Ok(assemble_in(cfg, t, modes, None, pool))
 }
 
 /// The Eq. 13 terms of one mode sampled on a time grid (paper Fig. 4).

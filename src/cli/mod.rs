@@ -16,7 +16,7 @@ use wingbeat::analysis::psd::{welch, Detrend, WelchOptions};
 use wingbeat::analysis::spectra::mode_spectra;
 use wingbeat::analysis::sweep::{sweep, SweepOptions, SweepParam};
 use wingbeat::config::SimConfig;
-use wingbeat::simulate::{force_series, simulate, SimResult};
+use wingbeat::simulate::{force_series, simulate, simulate_reusing, SimResult};
 use wingbeat::{Result, WingbeatError};
 
 #[derive(Parser, Debug)]
@@ -340,10 +340,15 @@ fn cmd_simulate(a: SimulateArgs) -> Result<String> {
         ));
     }
     let mut times = Vec::with_capacity(a.repeat);
-    let mut r = None;
+    let mut r: Option<SimResult> = None;
+    // Each run writes into the previous result's memory (handed back outside the timing).
+    let mut pool = wingbeat::pool::SeriesPool::new();
     for _ in 0..a.repeat {
+        if let Some(old) = r.take() {
+            old.recycle(&mut pool);
+        }
         let t0 = std::time::Instant::now();
-        r = Some(simulate(&cfg)?);
+        r = Some(simulate_reusing(&cfg, &mut pool)?);
         times.push(t0.elapsed().as_secs_f64() * 1e3);
     }
     let r = r.expect("repeat ≥ 1");

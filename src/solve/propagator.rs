@@ -14,6 +14,7 @@
 use super::gauss::{step_map, Tableau};
 use super::{LinearOde, MAX_FORCES};
 use crate::error::{Result, WingbeatError};
+use crate::pool::SeriesPool;
 use nalgebra::{Complex, Matrix2, Vector2};
 
 /// Fewest Gauss–Legendre steps per period, whatever the frequencies.
@@ -533,12 +534,24 @@ pub fn propagate_responses<O: LinearOde + ?Sized>(
     total: usize,
     ic: [f64; 2],
 ) -> Result<Responses> {
+    propagate_responses_in(ode, dt, n, total, ic, &mut SeriesPool::new())
+}
+
+/// [`propagate_responses`] writing into series taken from `pool` (the same numbers).
+pub fn propagate_responses_in<O: LinearOde + ?Sized>(
+    ode: &O,
+    dt: f64,
+    n: usize,
+    total: usize,
+    ic: [f64; 2],
+    pool: &mut SeriesPool,
+) -> Result<Responses> {
     let period = ode.period();
     let nf = ode.n_forces();
     let pp = commensurate_samples(dt, period);
     let map = phase_table(ode, dt, n, pp);
     let used_dense = map.dense.is_some() || pp.is_some_and(|p| map.table.len() < p.min(n.max(1)));
-    let mut out = ResponseWriter::new(nf, n, total, ic);
+    let mut out = ResponseWriter::new(nf, n, total, ic, pool);
     let mut state = PeriodState::new();
     let mut periods = 0;
     if let Some(d) = &map.dense {
@@ -754,25 +767,19 @@ struct ResponseWriter {
 }
 
 impl ResponseWriter {
-    fn new(nf: usize, n: usize, total: usize, ic: [f64; 2]) -> Self {
+    fn new(nf: usize, n: usize, total: usize, ic: [f64; 2], pool: &mut SeriesPool) -> Self {
         let with_ic = ic != [0.0, 0.0];
+        let mut free = pool.take(n);
+        if !with_ic {
+            free.resize(n, 0.0);
+        }
         ResponseWriter {
             q: (0..nf)
-                .map(|j| {
-                    if j == total {
-                        Vec::new()
-                    } else {
-                        Vec::with_capacity(n)
-                    }
-                })
+                .map(|j| if j == total { Vec::new() } else { pool.take(n) })
                 .collect(),
-            tot: Vec::with_capacity(n),
-            qdot_tot: Vec::with_capacity(n),
-            free: if with_ic {
-                Vec::with_capacity(n)
-            } else {
-                vec![0.0; n]
-            },
+            tot: pool.take(n),
+            qdot_tot: pool.take(n),
+            free,
             total,
             with_ic,
             ic,
