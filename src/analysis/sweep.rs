@@ -3,7 +3,7 @@
 
 use crate::config::SimConfig;
 use crate::error::{Result, WingbeatError};
-use crate::simulate::simulate;
+use crate::simulate::simulate_reusing;
 use serde::{Deserialize, Serialize};
 
 /// The swept quantity.
@@ -251,9 +251,11 @@ pub fn sweep(
         }
     }
     let mut points = Vec::with_capacity(opts.points);
+    // Each point writes into the previous point's series.
+    let mut pool = crate::pool::SeriesPool::new();
     for (i, &v) in values.iter().enumerate() {
         let c = apply(cfg, opts.param, v)?;
-        let r = simulate(&c).map_err(|e| at_value(e, v))?;
+        let r = simulate_reusing(&c, &mut pool).map_err(|e| at_value(e, v))?;
         let modes = r
             .modes
             .iter()
@@ -266,6 +268,7 @@ pub fn sweep(
             })
             .collect();
         points.push(SweepPoint { value: v, modes });
+        r.recycle(&mut pool);
         progress(i + 1, opts.points);
     }
     Ok(Sweep {
