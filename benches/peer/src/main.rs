@@ -9,7 +9,7 @@
 use ode_solvers::{Dop853, Vector3};
 use std::time::Instant;
 use wingbeat::config::SimConfig;
-use wingbeat::simulate::simulate;
+use wingbeat::simulate::{simulate, simulate_reusing};
 
 const FD: f64 = 25.0;
 const A0: f64 = 0.8;
@@ -132,6 +132,19 @@ fn main() {
     }
     let wb_ms = median(wb);
     println!("wingbeat simulate, paper case (8 responses + Floquet + strains): median {wb_ms:.3} ms (41 runs)");
+    // The same, each run writing into the previous result's series (a loop's steady state).
+    let mut pool = wingbeat::pool::SeriesPool::new();
+    let mut reused = Vec::new();
+    for _ in 0..41 {
+        let t0 = Instant::now();
+        let r = simulate_reusing(&cfg, &mut pool).expect("simulate");
+        reused.push(t0.elapsed().as_secs_f64() * 1e3);
+        r.recycle(&mut pool);
+    }
+    println!(
+        "wingbeat simulate_reusing, the same run into recycled series: median {:.3} ms (41 runs)",
+        median(reused)
+    );
 
     for rtol in [1e-10, 1e-13, 1e-15] {
         let mut ts = Vec::new();
