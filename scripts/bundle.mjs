@@ -40,7 +40,8 @@ export async function bundle(dir) {
     format: 'esm',
     platform: 'browser',
     target: 'es2022',
-    minify: true,
+    // BUNDLE_NO_MINIFY=1: readable names and lines, for a profile of the page (not for shipping).
+    minify: !process.env.BUNDLE_NO_MINIFY,
     // Class and function names stay (error messages and the custom element's class name).
     keepNames: true,
     legalComments: 'none',

@@ -12,6 +12,7 @@ import { fmt, fmtRich, plain } from './format.js';
 import { context2d } from './export.js';
 import { keyWindow } from './plot/window.js';
 import { fillBands, drawMarks } from './plot/marks.js';
+import { liveMarker } from './plot/live-marker.js';
 
 export { uPlot };
 
@@ -63,6 +64,7 @@ let plotIds = 0;
  *   name: string, title?: string, xLabel: string, xUnit: string, yLabel?: string, y2Label?: string,
  *   series: SeriesSpec[], log?: { y?: boolean, y2?: boolean }, height?: number,
  *   markers?: () => Marker[], bands?: () => Band[], ariaLabel?: string, keys?: boolean,
+ *   live?: import('./plot/live-marker.js').LiveMarkerSpec,
  *   cursor?: uPlot.Cursor, hooks?: uPlot.Hooks.Arrays,
  *   onReset?: () => void, onUser?: (what: string) => void, onToggle?: (i: number, show: boolean) => void,
  * }} PlotSpec
@@ -197,7 +199,12 @@ export function linePlot(parent, spec) {
           if (spec.bands) fillBands(u, spec.bands());
         },
       ],
-      draw: [(u) => drawMarks(u, spec.markers ? spec.markers() : [], spec.bands ? spec.bands() : [], dpr())],
+      draw: [
+        (u) => {
+          drawMarks(u, spec.markers ? spec.markers() : [], spec.bands ? spec.bands() : [], dpr());
+          if (live) live.place();
+        },
+      ],
       setCursor: [
         (u) => {
           const i = u.cursor.idx;
@@ -217,7 +224,11 @@ export function linePlot(parent, spec) {
   if (spec.cursor) opts.cursor = { ...opts.cursor, ...spec.cursor };
   for (const [name, fns] of Object.entries(spec.hooks || {})) opts.hooks[name] = [...(opts.hooks[name] || []), ...fns];
   if (spec.series.every((s) => s.legend === false)) legend.hidden = true;
+  /** @type {ReturnType<typeof liveMarker> | null} */
+  let live = null;
   const u = new uPlot(opts, [[0], ...spec.series.map(() => [null])], stage);
+  // `live`: a marker moved every frame without repainting the plot (www/plot/live-marker.js).
+  if (spec.live) live = liveMarker(u, spec.live);
   // Accessible name and text alternative of the canvas.
   u.ctx.canvas.setAttribute('role', 'img');
   u.ctx.canvas.setAttribute('aria-label', plain(spec.ariaLabel || spec.title || spec.name));
@@ -312,6 +323,13 @@ export function linePlot(parent, spec) {
     },
     redraw() {
       u.redraw(false, false);
+    },
+    /**
+     * Moves the spec's `live` marker to `x` (null hides it); no repaint.
+     * @param {number | null} x
+     */
+    setLive(x) {
+      if (live) live.set(x);
     },
     /** The visible series for an export figure (full data of the current x window). */
     exportSeries(data = u.data) {
