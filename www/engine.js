@@ -27,9 +27,10 @@
 //
 // The live analysis runs off the main thread (`requestLive`, www/engine/requests.js): a second
 // worker of worker.js, the live worker, separate from the study worker so that a sweep or the FE
-// wing never delays a slider. It starts at the first parameter change and gets the page's
-// compiled wasm module (no second download); until it has loaded, and when workers are
-// unavailable, requestLive computes on the main thread as `analyze` does. Results carry the
+// wing never delays a slider. It starts at the first parameter change (or focus in the lab) and
+// gets the page's compiled wasm module (no second download); a request made while it loads waits
+// for it (up to LIVE_START_WAIT_MS, then the page computes), and the first render and a page
+// without workers compute on the main thread as `analyze` does. Results carry the
 // kinematic angles on the simulation's time grid (`angles.alpha/beta/gamma`, from wasm
 // `analyze`), so the 3-D view never crosses into wasm per frame.
 //

@@ -1,7 +1,8 @@
 // The live requests (www/engine/requests.js): what a recompute asks for, and the newest-wins
 // queue in front of the live worker — one request in flight and one waiting, a newer request
-// supersedes the waiting one and makes the one in flight stale, the main thread computes while
-// the worker is not ready or has failed — against a fake worker and a fake main-thread compute.
+// supersedes the waiting one and makes the one in flight stale, a request waits for a starting
+// worker (up to a limit, then the main thread computes), and the main thread computes when the
+// worker has failed — against a fake worker and a fake main-thread compute.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { liveAsk, liveOverrides, createLiveQueue, STROKE_KEYS, LIVE_SEGMENT_LEN } from '../../www/engine/requests.js';
@@ -9,7 +10,7 @@ import { defaults } from '../../www/state.js';
 import { fakeWorker } from './fake_worker.mjs';
 
 /** A queue whose main-thread compute returns 'here:<tag>' and whose worker results are 'worker:<result>'. */
-function queue({ start } = {}) {
+function queue({ start, startWait } = {}) {
   const made = [];
   const hereCalls = [];
   const q = createLiveQueue({
@@ -26,6 +27,7 @@ function queue({ start } = {}) {
       return `here:${ask.cfg.tag}`;
     },
     fromWorker: (ask, result, ms) => `worker:${result}:${ms}:${ask.cfg.tag}`,
+    startWait,
   });
   const ask = (tag) => q.request(liveAsk({ ...defaults(), mode: '2', detrend: 'mean' }, { tag }));
   return { q, made, hereCalls, ask };
@@ -55,13 +57,17 @@ test('the first request is computed here without a worker; later ones wait for t
   const { q, made, hereCalls, ask } = queue();
   assert.equal(await ask('a'), 'here:a');
   assert.equal(made.length, 0, 'a lab only looked at never starts the live worker');
-  assert.equal(await ask('b'), 'here:b', 'the second request starts the worker, computed here until it is ready');
+  // The second request starts the worker and waits for it (nothing computed on the page).
+  const b = ask('b');
   assert.equal(made.length, 1);
   assert.equal(q.inWorker, false);
+  assert.equal(made[0].posted.length, 0);
+  // A third one made meanwhile supersedes it.
+  const c = ask('c');
+  assert.equal(await b, null);
   made[0].reply({ ready: true });
   assert.equal(q.inWorker, true);
-  const c = ask('c');
-  assert.equal(made[0].posted.length, 1);
+  assert.equal(made[0].posted.length, 1, 'the newest waiting request goes to the worker once it is ready');
   assert.deepEqual(made[0].posted[0], {
     id: 3,
     kind: 'analyze',
@@ -72,8 +78,33 @@ test('the first request is computed here without a worker; later ones wait for t
   made[0].reply({ id: 3, progress: [1, 2] });
   made[0].reply({ id: 3, result: 'R', ms: 4 });
   assert.equal(await c, 'worker:R:4:c');
+  assert.deepEqual(hereCalls, ['a']);
+  assert.deepEqual(q.stats, { posted: 1, superseded: 1, stale: 0, sync: 1 });
+});
+
+test('a worker slow to start: past the wait the newest request is computed here, and so are later ones until it is ready', async () => {
+  const { q, made, hereCalls, ask } = queue({ startWait: 20 });
+  await ask('a');
+  const b = ask('b');
+  assert.equal(made[0].posted.length, 0);
+  assert.equal(await b, 'here:b', 'computed here once the wait ran out');
+  assert.equal(await ask('c'), 'here:c', 'still starting: computed here at once');
+  made[0].reply({ ready: true });
+  const d = ask('d');
+  assert.equal(made[0].posted.length, 1, 'ready: requests go to the worker again');
+  made[0].reply({ id: 4, result: 'R', ms: 1 });
+  assert.equal(await d, 'worker:R:1:d');
+  assert.deepEqual(hereCalls, ['a', 'b', 'c']);
+  assert.deepEqual(q.stats, { posted: 1, superseded: 0, stale: 0, sync: 3 });
+});
+
+test('a worker that fails while a request waits for it: the request is computed here', async () => {
+  const { made, hereCalls, ask } = queue();
+  await ask('a');
+  const b = ask('b');
+  made[0].onerror({ message: 'no wasm' });
+  assert.equal(await b, 'here:b');
   assert.deepEqual(hereCalls, ['a', 'b']);
-  assert.deepEqual(q.stats, { posted: 1, superseded: 0, stale: 0, sync: 2 });
 });
 
 test('newest wins: the waiting request is superseded, the stale result dropped, the newest posted next', async () => {
@@ -133,4 +164,15 @@ test('without workers everything is computed here; dispose resolves what is pend
   assert.equal(made[0].terminated, true);
   assert.equal(q2.inWorker, false);
   assert.equal(q.inWorker, false);
+});
+
+test('dispose while a request waits for the starting worker: it resolves to null and nothing is computed', async () => {
+  const { q, made, hereCalls, ask } = queue({ startWait: 20 });
+  await ask('a');
+  const b = ask('b');
+  q.dispose();
+  assert.equal(await b, null);
+  await new Promise((r) => setTimeout(r, 40));
+  assert.deepEqual(hereCalls, ['a'], 'the wait was stopped with the queue');
+  assert.equal(made[0].terminated, true);
 });

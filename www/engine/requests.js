@@ -5,11 +5,16 @@
 // A wasm call cannot be interrupted, so requests are coalesced instead of cancelled: at most one
 // is in flight and one waits; a newer request replaces the waiting one (which resolves to null)
 // and makes the one in flight stale (its result, when it comes, resolves to null and is not
-// drawn). Only the newest request's result reaches the caller. Until the live worker has loaded
-// its wasm (it says { ready: true }), and when workers are unavailable or the worker failed, a
-// request is computed on the main thread instead (`here`).
+// drawn). Only the newest request's result reaches the caller. The first request (the first
+// render) is computed on the main thread (`here`); a later one made while the live worker is still
+// loading its wasm waits for it (it says { ready: true }) for up to `startWait` ms, so a key press
+// never blocks the page with a computation (a 10 s run at 25.5 Hz: 150–400 ms); past that, and
+// when workers are unavailable or the worker failed, requests are computed here.
 import { overridesOf } from '../state.js';
 import { JOB, jobMessage, readReply } from './protocol.js';
+
+/** Longest wait (ms) of a request for the live worker to finish starting before it is computed on the main thread. */
+export const LIVE_START_WAIT_MS = 2000;
 
 /** Welch segment length of the live analysis's spectra. */
 export const LIVE_SEGMENT_LEN = 8192;
@@ -65,11 +70,13 @@ export function liveAsk(params, cfg, run = cfg) {
  *   start: () => Worker,
  *   here: (ask: LiveAsk) => R,
  *   fromWorker: (ask: LiveAsk, result: any, ms: number) => R,
+ *   startWait?: number,
  * }} deps `start` makes the live worker (may throw: then everything is computed here); `here`
  *   computes a request on the main thread (throws the wasm error); `fromWorker` turns the
- *   worker's reply into the caller's result.
+ *   worker's reply into the caller's result; `startWait` (ms, default
+ *   {@link LIVE_START_WAIT_MS}) is how long a request waits for a starting worker.
  */
-export function createLiveQueue({ start, here, fromWorker }) {
+export function createLiveQueue({ start, here, fromWorker, startWait = LIVE_START_WAIT_MS }) {
   /** @type {Worker | null} */
   let live = null;
   /** the live worker has loaded its wasm (it said { ready: true }) */
@@ -83,6 +90,10 @@ export function createLiveQueue({ start, here, fromWorker }) {
   /** @type {LiveRequest<R> | null} the newest request, waiting for the one in flight */
   let queued = null;
   const stats = { posted: 0, superseded: 0, stale: 0, sync: 0 };
+  /** @type {ReturnType<typeof setTimeout> | null} the wait for a starting worker; past it, compute here */
+  let startTimer = null;
+  /** the starting worker took longer than `startWait`: compute here until it is ready */
+  let startLate = false;
 
   function post(/** @type {LiveRequest<R>} */ req) {
     inflight = req;
@@ -111,6 +122,13 @@ export function createLiveQueue({ start, here, fromWorker }) {
     const m = readReply(ev.data);
     if (m.type === 'ready') {
       ready = true;
+      stopWaiting();
+      // The newest request that waited for the worker goes to it now.
+      if (queued && !inflight) {
+        const q = queued;
+        queued = null;
+        post(q);
+      }
       return;
     }
     const req = inflight;
@@ -128,8 +146,28 @@ export function createLiveQueue({ start, here, fromWorker }) {
     }
   }
 
+  function stopWaiting() {
+    if (startTimer != null) clearTimeout(startTimer);
+    startTimer = null;
+  }
+
+  /** Waits for the starting worker with `req` (the newest); computes it here when the wait runs out. */
+  function waitForStart(/** @type {LiveRequest<R>} */ req) {
+    queued = req;
+    if (startTimer != null) return;
+    startTimer = setTimeout(() => {
+      startTimer = null;
+      if (ready) return;
+      startLate = true;
+      const q = queued;
+      queued = null;
+      if (q) settleHere(q);
+    }, startWait);
+  }
+
   /** The live worker could not start (or died): from now on compute here, the newest request included. */
   function onFailure() {
+    stopWaiting();
     broken = true;
     ready = false;
     if (live) live.terminate();
@@ -172,12 +210,13 @@ export function createLiveQueue({ start, here, fromWorker }) {
         // The first request (the first render) does not start the live worker: a lab that is
         // only looked at never loads a second worker; the first parameter change does.
         const w = n > 1 ? worker() : live;
-        if (!w || !ready) settleHere(req);
+        if (!w || (!ready && (n === 1 || startLate))) settleHere(req);
+        else if (!ready) waitForStart(req);
         else if (inflight) queued = req;
         else post(req);
       });
     },
-    /** Starts the live worker now (its wasm loads while the first result is computed here). */
+    /** Starts the live worker now (its wasm loads while the lab is looked at). */
     warm() {
       worker();
     },
@@ -191,6 +230,7 @@ export function createLiveQueue({ start, here, fromWorker }) {
     },
     /** Stops the live worker; a request in flight or waiting resolves to null. */
     dispose() {
+      stopWaiting();
       if (live) live.terminate();
       live = null;
       ready = false;
