@@ -7,17 +7,23 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
+# Each step prints its wall time, so a CI log shows where the minutes go.
+step() {
+  local t0=$SECONDS
+  "$@"
+  echo "== check.sh: $* — $((SECONDS - t0)) s (total $SECONDS s)"
+}
 rustup component add rustfmt clippy >/dev/null 2>&1 || true
 rustup target add wasm32-unknown-unknown >/dev/null 2>&1 || true
-cargo fmt --all -- --check
-cargo clippy --all-targets -- -D warnings
-cargo clippy --all-targets --all-features -- -D warnings
+step cargo fmt --all -- --check
+step cargo clippy --all-targets -- -D warnings
+step cargo clippy --all-targets --all-features -- -D warnings
 # The wasm32-only code (the browser view, the wasm suites) is linted too.
-cargo clippy --target wasm32-unknown-unknown --no-default-features --features web,render --lib --tests -- -D warnings
+step cargo clippy --target wasm32-unknown-unknown --no-default-features --features web,render --lib --tests -- -D warnings
 # The lab's small first module (feature `web-live` alone: docs/lab.md, "Two modules, one crate").
-cargo clippy --target wasm32-unknown-unknown --no-default-features --features web-live --lib -- -D warnings
-RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --all-features
+step cargo clippy --target wasm32-unknown-unknown --no-default-features --features web-live --lib -- -D warnings
+RUSTDOCFLAGS="-D warnings" step cargo doc --no-deps --all-features
 # npm packages (Biome, acorn) first; `npm test` installs the rest.
-bash scripts/ensure-tools.sh
-npm run --silent lint:js
-npm test
+step bash scripts/ensure-tools.sh
+step npm run --silent lint:js
+step npm test

@@ -53,6 +53,12 @@ case "$what" in
   native) bash scripts/ensure-tools.sh --browser; native ;;
   wasm) bash scripts/ensure-tools.sh --browser --wasm-pack; wasm ;;
   e2e) bash scripts/ensure-tools.sh --browser; e2e ;;
-  all) bash scripts/ensure-tools.sh --browser --wasm-pack; native; wasm; e2e; echo "== all test suites passed" ;;
+  all)
+    # Each stage's wall time in the log (CI shows where the minutes go).
+    t0=$SECONDS; bash scripts/ensure-tools.sh --browser --wasm-pack; echo "== tools: $((SECONDS - t0)) s"
+    t0=$SECONDS; native; echo "== native: $((SECONDS - t0)) s"
+    t0=$SECONDS; wasm; echo "== wasm: $((SECONDS - t0)) s"
+    t0=$SECONDS; e2e; echo "== e2e: $((SECONDS - t0)) s"
+    echo "== all test suites passed ($SECONDS s)" ;;
   *) echo "usage: scripts/test-all.sh [all|native|wasm|e2e]" >&2; exit 2 ;;
 esac
