@@ -203,6 +203,15 @@ test('strain where you point: 3-D click and planform map move the point; the ser
   // The ring on the 3-D wing sits where we clicked.
   const ring = await page.evaluate(() => document.querySelector('wing-lab').wing3d.pointOnScreen());
   assert.ok(ring && Math.hypot(ring[0] - at[0], ring[1] - at[1]) < 12, `ring at ${ring}, clicked ${at}`);
+  // The panels redraw for a new result one task each after it arrives (www/lab/draws.js): the
+  // strain panel's words follow the series.
+  await page
+    .waitForFunction(
+      () => /strain point \(2\d(\.\d+)?, -1\d/.test(__wl.q('section.wl-strain .wl-note')?.textContent || ''),
+      null,
+      { timeout: 10000 },
+    )
+    .catch(() => {});
   assert.match(await page.textContent('wing-lab section.wl-strain .wl-note'), /strain point \(2\d(\.\d+)?, -1\d/);
 
   // The planform map: a click on it moves the point; arrow keys step it by 0.5 mm.
