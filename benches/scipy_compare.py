@@ -58,7 +58,7 @@ for _ in range(3):
     t0 = time.perf_counter(); ref = run_scipy(); times.append(time.perf_counter() - t0)
 scipy_ms = statistics.median(times) * 1e3
 
-res = subprocess.run([exe, "simulate", "--preset", "paper", "--repeat", str(REPEAT * 3)],
+res = subprocess.run([exe, "simulate", "--preset", "paper", "--repeat", "201"],
                      check=True, capture_output=True, text=True)
 wb = json.loads(res.stdout)
 wb_ms = wb["timing_ms"]["median"]
