@@ -9,7 +9,7 @@
 /**
  * @typedef {{ label: string, color: string, width?: number }} LiveMarkerSpec
  * The part of a uPlot the marker needs.
- * @typedef {{ over: HTMLElement, valToPos: (v: number, scale: string) => number }} LivePlot
+ * @typedef {{ over: HTMLElement, bbox: { width: number }, valToPos: (v: number, scale: string) => number }} LivePlot
  */
 
 /**
@@ -56,7 +56,9 @@ export function liveMarker(u, spec) {
   let shown = false;
   const place = () => {
     const px = x == null ? Number.NaN : u.valToPos(x, 'x');
-    const inside = Number.isFinite(px) && px >= 0 && px <= u.over.clientWidth;
+    // The plotting area's width from uPlot's own box (device pixels): reading the element's
+    // size here would force a layout on every frame.
+    const inside = Number.isFinite(px) && px >= 0 && px <= u.bbox.width / (globalThis.devicePixelRatio || 1);
     if (inside !== shown) {
       shown = inside;
       line.style.display = label.style.display = inside ? '' : 'none';
