@@ -315,6 +315,8 @@ test('the 3-D wing coloured by detectability, with the K best sensors as numbere
   // together, and the words are checked only if there was still no result then.
   if (!(await page.evaluate(() => document.querySelector('wing-lab').store.get().sense_map))) {
     await setColour('6');
+    // A view in the render worker answers with the frame's legend: the words follow it.
+    await page.evaluate(() => document.querySelector('wing-lab').wing3d.settled());
     const seen = await page.evaluate(
       (sel) => ({
         map: !!document.querySelector('wing-lab').store.get().sense_map,
