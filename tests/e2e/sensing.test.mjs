@@ -351,7 +351,8 @@ test('the 3-D wing coloured by detectability, with the K best sensors as numbere
     changed > 0.03,
     `share of 3-D canvas pixels that changed colour from the strain map to detectability: ${changed}`,
   );
-  // the legend names the map, its scale and the markers
+  // the legend names the map, its scale and the markers (the words follow the drawn frame)
+  await page.evaluate(() => document.querySelector('wing-lab').wing3d.settled());
   const legendText = await page.textContent(`wing-lab ${w3} .wl-w3-legend-text`);
   assert.match(legendText, /Rotation detectability D/);
   assert.match(legendText, /0\.05 rad\/s about body axis x/);
