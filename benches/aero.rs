@@ -43,7 +43,7 @@ fn air(c: &mut Criterion) {
     )
     .unwrap();
     let kin = base.kinematics.compile();
-    let fs = FrameState::from_state(&kin.state(0.0123));
+    let fs = FrameState::of(&kin.state(0.0123));
     c.bench_function("one load evaluation (288 points, 4 modes)", |b| {
         b.iter(|| {
             let (mut f, mut d) = ([0.0; 4], [0.0; 16]);

@@ -85,8 +85,8 @@ fn face_on_flapping_plate_force_and_root_moment_match_the_closed_form() {
         );
         for om in [37.0, -52.0] {
             let fs = FrameState {
-                om: [0.0, om, 0.0],
-                omd: [0.0; 3],
+                omega: [0.0, om, 0.0],
+                omega_dot: [0.0; 3],
                 gamma: 0.0,
                 gamma_dot: 0.0,
             };
@@ -117,8 +117,8 @@ fn quadrature_converges_with_strips_for_a_general_motion() {
     let fe = fe_wing();
     let g = fe.wing.as_deref().unwrap();
     let fs = FrameState {
-        om: [11.0, -23.0, 7.0],
-        omd: [0.0; 3],
+        omega: [11.0, -23.0, 7.0],
+        omega_dot: [0.0; 3],
         gamma: 0.1,
         gamma_dot: 3.0,
     };
@@ -522,7 +522,7 @@ fn the_nonlinear_load_linearises_to_the_aerodynamic_damping_matrix() {
     let g = cfg.wing.as_deref().unwrap();
     let wing = AeroWing::build(g, &cfg.aero).unwrap();
     let kin = cfg.kinematics.compile();
-    let fs = FrameState::from_state(&kin.state(0.0123));
+    let fs = FrameState::of(&kin.state(0.0123));
     let k = 0.5 * 1.2 * cfg.aero.normal_force_coefficient;
     let n = 4;
     let (mut f0, mut c) = (vec![0.0; n], vec![0.0; n * n]);

@@ -38,7 +38,7 @@ fn sampled_aerodynamic_force_equals_the_quadrature_sum_at_every_sample() {
     let samples = cfg.n_samples();
     for i in 0..samples {
         let t = i as f64 / cfg.sample_rate_hz;
-        let fs = FrameState::from_state(&kin.state(t));
+        let fs = FrameState::of(&kin.state(t));
         let mut want = vec![0.0; n];
         wing.loads_nonlinear(&fs, k, cfg.aero.air_density_kg_m3, &zero, &mut want);
         for m in 0..n {

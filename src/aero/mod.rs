@@ -44,7 +44,6 @@ pub mod transient;
 pub mod wing;
 
 use crate::error::{check_range, Result, WingbeatError};
-use crate::kinematics::RateState;
 use serde::{Deserialize, Serialize};
 
 pub use wing::{AeroWing, WingGeometry};
@@ -169,36 +168,17 @@ pub struct PointFlow {
     pub speed: f64,
 }
 
-/// The frame's state the loads need at one instant: Ω, Ω̇ (frame components), γ, γ̇.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FrameState {
-    /// Ω, rad/s.
-    pub om: [f64; 3],
-    /// Ω̇, rad/s².
-    pub omd: [f64; 3],
-    /// Yaw γ, rad.
-    pub gamma: f64,
-    /// γ̇, rad/s.
-    pub gamma_dot: f64,
-}
+/// The frame's state the loads need at one instant: Ω, Ω̇ (frame components), γ, γ̇ — the
+/// model's [`crate::model::Rotation`] (the same quantities Eq. 13 reads), with the air's point
+/// kinematics below.
+pub use crate::model::Rotation as FrameState;
 
 impl FrameState {
-    /// From a kinematic state.
-    pub fn from_state(s: &RateState) -> Self {
-        let (om, omd) = s.omega_and_dot();
-        FrameState {
-            om,
-            omd,
-            gamma: s.gamma,
-            gamma_dot: s.gamma_dot,
-        }
-    }
-
     /// Rigid velocity of the wing point (x, y) (m, wing frame, before yaw): Ω × r plus the
     /// in-plane velocity γ̇ K × (x, y) of the yawing point.
     #[inline]
     pub fn flow(&self, x: f64, y: f64) -> PointFlow {
-        let [ox, oy, oz] = self.om;
+        let [ox, oy, oz] = self.omega;
         let g = self.gamma;
         let rx = x - g * y;
         let ry = y + g * x;
@@ -216,8 +196,8 @@ impl FrameState {
     /// (to first order in γ): Ω̇ × r + Ω × (Ω × r) + 2 Ω × ṙ_rel.
     #[inline]
     pub fn normal_acceleration(&self, x: f64, y: f64) -> f64 {
-        let [ox, oy, oz] = self.om;
-        let [ax, ay, _] = self.omd;
+        let [ox, oy, oz] = self.omega;
+        let [ax, ay, _] = self.omega_dot;
         let g = self.gamma;
         let rx = x - g * y;
         let ry = y + g * x;
@@ -228,8 +208,8 @@ impl FrameState {
     /// chordwise position), 1/s².
     #[inline]
     pub fn normal_acceleration_slope(&self, _x: f64, _y: f64) -> f64 {
-        let [ox, oy, oz] = self.om;
-        let [ax, ay, _] = self.omd;
+        let [ox, oy, oz] = self.omega;
+        let [ax, ay, _] = self.omega_dot;
         let g = self.gamma;
         ax + g * ay + oz * (oy - g * ox) + 2.0 * self.gamma_dot * oy
     }

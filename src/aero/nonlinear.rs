@@ -48,7 +48,7 @@ pub fn simulate_nonlinear(
     let rhs = |t: f64, x: &[f64], out: &mut [f64]| {
         let s = kin.state(t);
         let sc = stiffness_coefficient(&s);
-        let fs = FrameState::from_state(&s);
+        let fs = FrameState::of(&s);
         let mut f = [0.0; crate::model::MAX_MODES];
         let f = &mut f[..n];
         wing.loads_nonlinear(&fs, ode.k, ode.rho_am, &x[n..], f);

@@ -260,7 +260,7 @@ impl<'a> AirOde<'a> {
     /// C_a(t) and F_A(t) as [`AirOde::loads`], always summed over the quadrature.
     pub fn exact_loads(&self, t: f64, force: &mut [f64], damping: &mut [f64]) {
         let s = self.state(t);
-        let fs = FrameState::from_state(&s);
+        let fs = FrameState::of(&s);
         force.fill(0.0);
         damping.fill(0.0);
         self.wing.loads(&fs, self.k, self.rho_am, force, damping);
@@ -289,7 +289,7 @@ impl CoupledOde for AirOde<'_> {
         if !self.table.as_ref().is_some_and(|tb| tb.eval(t, fa, b)) {
             fa.fill(0.0);
             b.fill(0.0);
-            let fs = FrameState::from_state(&s);
+            let fs = FrameState::of(&s);
             self.wing.loads(&fs, self.k, self.rho_am, fa, b);
         }
         for k in 0..n {
