@@ -13,7 +13,7 @@
 //!   with period 1 / |f_eff − n_b f_d|. The paper's mode-1 Coriolis beat uses n_b = 2.
 
 pub use crate::solve::propagator::multipliers;
-use crate::solve::propagator::period_map_with;
+use crate::solve::propagator::{period_map_with, HomogeneousSamples};
 use crate::solve::LinearOde;
 use nalgebra::{Complex, Matrix2, Vector2};
 use serde::{Deserialize, Serialize};
@@ -107,25 +107,74 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
     averaged_freq_hz: f64,
     monodromy: Option<Matrix2<f64>>,
 ) -> FloquetResult {
-    let t = ode.period();
     let tp = ode.homogeneous_period();
-    let fp = 1.0 / tp;
     // Full-period monodromy.
     let hom = crate::solve::Homogeneous(ode);
-    let mt = monodromy.unwrap_or_else(|| period_map_with(&hom, t, &[], false).monodromy);
-    let lt = multipliers(&mt);
-    let max_modulus = lt[0].norm().max(lt[1].norm());
-
+    let mt = monodromy.unwrap_or_else(|| period_map_with(&hom, ode.period(), &[], false).monodromy);
     // Floquet solution over the homogeneous period, sampled finely enough to resolve the
     // harmonic that carries the natural frequency.
-    let ratio = ode.freq_scale() / (2.0 * PI * fp);
-    let nh = ((4.0 * ratio + 16.0) as usize)
+    let nh = (min_samples(ode).min(1.0e9) as usize)
         .next_power_of_two()
         .clamp(32, 1 << 16);
     let phases: Vec<f64> = (0..nh).map(|j| j as f64 * tp / nh as f64).collect();
     let pm = period_map_with(&hom, tp, &phases, false);
-    let mp = pm.monodromy.map(|x| C64::new(x, 0.0));
-    let lp = multipliers(&pm.monodromy);
+    from_samples(ode, flap_hz, averaged_freq_hz, mt, &pm.monodromy, &pm.phi)
+}
+
+/// Fewest equally spaced samples of the Floquet solution over the homogeneous period that
+/// resolve the harmonic carrying the natural frequency: 4·ω/ω_p + 16 (ω the equation's
+/// [`LinearOde::freq_scale`], ω_p = 2π/T_p), at least 32.
+fn min_samples<O: LinearOde + ?Sized>(ode: &O) -> f64 {
+    let ratio = ode.freq_scale() * ode.homogeneous_period() / (2.0 * PI);
+    (4.0 * ratio + 16.0).max(32.0)
+}
+
+/// As [`analyse_with`] with the full-period monodromy `monodromy`, reading the Floquet solution
+/// from Φ already sampled over the homogeneous period by the caller's own integration (a
+/// simulation's output grid holds it: [`HomogeneousSamples`]) instead of integrating that span
+/// again. It takes every d-th sample, d the largest divisor of their number that leaves at
+/// least the samples [`analyse`] would take; with too few samples, or none, it integrates
+/// the span as [`analyse_with`] does.
+pub fn analyse_sampled<O: LinearOde + ?Sized>(
+    ode: &O,
+    flap_hz: f64,
+    averaged_freq_hz: f64,
+    monodromy: Matrix2<f64>,
+    samples: Option<&HomogeneousSamples>,
+) -> FloquetResult {
+    let tp = ode.homogeneous_period();
+    if let Some(s) = samples {
+        let m = s.phi.len();
+        let need = min_samples(ode);
+        if m as f64 >= need && (s.span - tp).abs() <= 1e-12 * tp {
+            let most = (m as f64 / need).floor() as usize;
+            let d = (1..=most).rev().find(|d| m % d == 0).unwrap_or(1);
+            let phi: Vec<Matrix2<f64>> = s.phi.iter().step_by(d).copied().collect();
+            return from_samples(ode, flap_hz, averaged_freq_hz, monodromy, &s.end, &phi);
+        }
+    }
+    analyse_with(ode, flap_hz, averaged_freq_hz, Some(monodromy))
+}
+
+/// The analysis from the full-period monodromy `mt`, the homogeneous-period one `mp_real` and
+/// Φ at the equally spaced phases j·T_p/`phi.len()` of the homogeneous period.
+fn from_samples<O: LinearOde + ?Sized>(
+    ode: &O,
+    flap_hz: f64,
+    averaged_freq_hz: f64,
+    mt: Matrix2<f64>,
+    mp_real: &Matrix2<f64>,
+    phi: &[Matrix2<f64>],
+) -> FloquetResult {
+    let t = ode.period();
+    let tp = ode.homogeneous_period();
+    let fp = 1.0 / tp;
+    let lt = multipliers(&mt);
+    let max_modulus = lt[0].norm().max(lt[1].norm());
+    let nh = phi.len();
+    let phases: Vec<f64> = (0..nh).map(|j| j as f64 * tp / nh as f64).collect();
+    let mp = mp_real.map(|x| C64::new(x, 0.0));
+    let lp = multipliers(mp_real);
     let lam = if lp[0].im.abs() > 0.0 {
         if lp[0].im > 0.0 {
             lp[0]
@@ -141,8 +190,7 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
     let nu = lam.ln() / tp; // Floquet exponent, 1/s; Im in (−π/Tp, π/Tp]
     let mu = nu.im;
     // y_j = e^(−ν τ_j) (Φ(τ_j) v)_q is the periodic factor P(τ_j).
-    let y: Vec<C64> = pm
-        .phi
+    let y: Vec<C64> = phi
         .iter()
         .zip(&phases)
         .map(|(ph, &tau)| {
@@ -150,7 +198,8 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
             q * (-nu * tau).exp()
         })
         .collect();
-    let half = nh as i64 / 2;
+    // Harmonics −⌊(nh−1)/2⌋ ..= ⌊nh/2⌋: each alias class once, for odd nh too.
+    let (lo, hi) = (-((nh as i64 - 1) / 2), nh as i64 / 2);
     let mut best = (0i64, -1.0f64);
     // Twiddles e^(−2πi m / nh), m = 0..nh (exact index arithmetic, one table).
     let tw: Vec<C64> = (0..nh)
@@ -159,7 +208,7 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
             C64::new(th.cos(), th.sin())
         })
         .collect();
-    for n in (-half + 1)..=half {
+    for n in lo..=hi {
         let mut c = C64::new(0.0, 0.0);
         for (j, yj) in y.iter().enumerate() {
             c += yj * tw[(n * j as i64).rem_euclid(nh as i64) as usize];

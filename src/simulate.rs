@@ -229,11 +229,13 @@ pub fn simulate_reusing(cfg: &SimConfig, pool: &mut SeriesPool) -> Result<SimRes
         };
         let qdot_total = p.qdot_total;
         let contribution_percent = contributions(&q.euler, &q.centrifugal, &q.coriolis, &q.total);
-        let floquet = floquet::analyse_with(
+        // Floquet reads Φ over the homogeneous period off this run's own grid when it holds it.
+        let floquet = floquet::analyse_sampled(
             &ode,
             kin.wd / (2.0 * PI),
             averaged_freq_hz(mode, mean_s),
-            Some(p.monodromy),
+            p.monodromy,
+            p.homogeneous.as_ref(),
         );
         let accuracy = Accuracy {
             method: if p.dense {

@@ -149,3 +149,65 @@ fn parametric_resonance_is_reported_not_hidden() {
         "{e}"
     );
 }
+
+/// A simulation reads Φ over the homogeneous period off its own output grid
+/// (`floquet::analyse_sampled`) instead of integrating that span again: on grids that hold it
+/// and grids that do not, its summary equals the separately integrated analysis
+/// (`simulate::floquet_for`) to 1e-12 (seen: 4e-16 in f_eff, 3e-15 in |λ|), with the same
+/// dominant harmonic.
+#[test]
+fn the_simulations_floquet_summary_equals_a_separate_integration() {
+    use wingbeat::simulate::floquet_for;
+    let mut cases: Vec<(&str, SimConfig)> = Vec::new();
+    cases.push(("paper", SimConfig::paper()));
+    let mut c = SimConfig::paper();
+    c.modes = wingbeat::presets::fe_wing_modes().unwrap();
+    c.duration_s = 0.5;
+    cases.push(("FE wing, 6 modes", c));
+    for (f, rate, d) in [
+        (20.0, 10_000.0, 0.5),
+        (7.0, 7_000.0, 1.0),
+        (60.0, 6_000.0, 0.2),
+        (25.0, 10_000.0, 0.03), // shorter than a period: the span is integrated
+        (25.5, 10_000.0, 0.5),  // incommensurate: the span is integrated
+        (25.0, 2_525.0, 0.5),   // 101 samples a period: odd, no Φ(T/2) on the grid
+    ] {
+        let mut c = SimConfig::paper();
+        c.kinematics.flap_freq_hz = f;
+        c.sample_rate_hz = rate;
+        c.duration_s = d;
+        cases.push(("varied", c));
+    }
+    let mut c = SimConfig::paper();
+    // A mean pitch: β no longer odd about its mean, so S(t) has period T, not T/2.
+    if let wingbeat::kinematics::Angle::Fourier { mean, .. } = &mut c.kinematics.beta {
+        *mean = 0.1;
+    }
+    cases.push(("T_p = T", c));
+    for (name, cfg) in &cases {
+        let sim = simulate(cfg).unwrap();
+        let kin = cfg.kinematics.compile();
+        for (k, m) in cfg.modes.iter().enumerate() {
+            let a = &sim.modes[k].floquet;
+            let b = floquet_for(&kin, m);
+            let at = format!("{name}, f_d = {} Hz, mode {k}", cfg.kinematics.flap_freq_hz);
+            assert_eq!(a.dominant_harmonic, b.dominant_harmonic, "{at}");
+            assert_eq!(a.beat_harmonic, b.beat_harmonic, "{at}");
+            assert_eq!(a.stable, b.stable, "{at}");
+            assert_eq!(a.homogeneous_period_s, b.homogeneous_period_s, "{at}");
+            let close = |x: f64, y: f64, what: &str| {
+                assert!(
+                    (x - y).abs() <= 1e-12 * y.abs().max(1.0),
+                    "{at}: {what} {x} vs {y}"
+                );
+            };
+            close(a.effective_freq_hz, b.effective_freq_hz, "f_eff");
+            close(a.characteristic_freq_hz, b.characteristic_freq_hz, "f_char");
+            close(a.max_modulus, b.max_modulus, "|λ|max");
+            match (a.beat_period_s, b.beat_period_s) {
+                (Some(x), Some(y)) => close(x, y, "T_beat"),
+                (x, y) => assert_eq!(x, y, "{at}"),
+            }
+        }
+    }
+}

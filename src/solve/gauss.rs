@@ -111,35 +111,51 @@ pub fn step_map_from(
     nf: usize,
 ) -> StepMap {
     let a = &tab.a;
-    // M = I + h c a + h² a K a, and the right-hand sides.
+    // Every loop below runs over all COLS columns (the unused forcings are zero columns, whose
+    // results are dropped): fixed trip counts the compiler unrolls and vectorises across
+    // columns. Each value is still formed by the same operations in the same order.
+    let nf = nf.min(MAX_FORCES);
+    let mut f = [[0.0; MAX_FORCES]; STAGES];
+    for (fi, si) in f.iter_mut().zip(fs) {
+        fi[..nf].copy_from_slice(&si[..nf]);
+    }
+    // a_il k_l, then M = I + h c a + h² a K a and the right-hand sides.
+    let mut ak = [[0.0; STAGES]; STAGES];
+    for i in 0..STAGES {
+        for l in 0..STAGES {
+            ak[i][l] = a[i][l] * ks[l];
+        }
+    }
+    let (hc, hh) = (h * c, h * h);
     let mut m = [[0.0; STAGES]; STAGES];
     for i in 0..STAGES {
         for j in 0..STAGES {
             let mut aka = 0.0;
             for l in 0..STAGES {
-                aka += a[i][l] * ks[l] * a[l][j];
+                aka += ak[i][l] * a[l][j];
             }
-            m[i][j] = h * c * a[i][j] + h * h * aka;
+            m[i][j] = hc * a[i][j] + hh * aka;
         }
         m[i][i] += 1.0;
     }
     let mut rhs = [[0.0; COLS]; STAGES];
     for i in 0..STAGES {
-        let mut ak = 0.0;
+        let mut aks = 0.0;
         for l in 0..STAGES {
-            ak += a[i][l] * ks[l];
+            aks += ak[i][l];
         }
-        rhs[i][0] = -h * ak; // start (q0, v0) = (1, 0)
+        rhs[i][0] = -h * aks; // start (q0, v0) = (1, 0)
         rhs[i][1] = 1.0; // start (0, 1)
-        for j in 0..nf {
-            let mut af = 0.0;
-            for l in 0..STAGES {
-                af += a[i][l] * fs[l][j];
+        let mut af = [0.0; MAX_FORCES];
+        for l in 0..STAGES {
+            for j in 0..MAX_FORCES {
+                af[j] += a[i][l] * f[l][j];
             }
-            rhs[i][2 + j] = h * af;
+        }
+        for j in 0..MAX_FORCES {
+            rhs[i][2 + j] = h * af[j];
         }
     }
-    let ncol = 2 + nf;
     // Gaussian elimination with partial pivoting.
     for col in 0..STAGES {
         let mut piv = col;
@@ -160,53 +176,61 @@ pub fn step_map_from(
             };
         }
         let inv = 1.0 / d;
+        let (pivot_m, pivot_rhs) = (m[col], rhs[col]);
         for r in col + 1..STAGES {
-            let f = m[r][col] * inv;
-            if f != 0.0 {
+            let fac = m[r][col] * inv;
+            if fac != 0.0 {
                 for k in col + 1..STAGES {
-                    m[r][k] -= f * m[col][k];
+                    m[r][k] -= fac * pivot_m[k];
                 }
-                for k in 0..ncol {
-                    rhs[r][k] -= f * rhs[col][k];
+                for k in 0..COLS {
+                    rhs[r][k] -= fac * pivot_rhs[k];
                 }
             }
         }
     }
     for col in (0..STAGES).rev() {
         let inv = 1.0 / m[col][col];
-        for k in 0..ncol {
-            let mut s = rhs[col][k];
-            for j in col + 1..STAGES {
-                s -= m[col][j] * rhs[j][k];
+        let mut s = rhs[col];
+        for j in col + 1..STAGES {
+            for k in 0..COLS {
+                s[k] -= m[col][j] * rhs[j][k];
             }
-            rhs[col][k] = s * inv;
+        }
+        for k in 0..COLS {
+            rhs[col][k] = s[k] * inv;
         }
     }
     // rhs now holds V for each column. x1 = x0 + h Σ b_i (V_i, −k_i Q_i − c V_i + f_i) with
-    // Q = q0 + h a V.
-    let column = |k: usize, q0: f64, v0: f64, fcol: Option<usize>| -> Vector2<f64> {
-        let mut dq = 0.0;
-        let mut dv = 0.0;
-        for i in 0..STAGES {
-            let mut av = 0.0;
-            for j in 0..STAGES {
-                av += a[i][j] * rhs[j][k];
+    // Q = q0 + h a V; the starts are (1, 0), (0, 1) and zero for the forcings.
+    let mut q0 = [0.0; COLS];
+    let mut v0 = [0.0; COLS];
+    q0[0] = 1.0;
+    v0[1] = 1.0;
+    let (mut dq, mut dv) = ([0.0; COLS], [0.0; COLS]);
+    for i in 0..STAGES {
+        let mut av = [0.0; COLS];
+        for j in 0..STAGES {
+            for k in 0..COLS {
+                av[k] += a[i][j] * rhs[j][k];
             }
-            let qi = q0 + h * av;
-            let fi = fcol.map_or(0.0, |j| fs[i][j]);
-            dq += tab.b[i] * rhs[i][k];
-            dv += tab.b[i] * (fi - ks[i] * qi - c * rhs[i][k]);
         }
-        Vector2::new(q0 + h * dq, v0 + h * dv)
-    };
-    let c0 = column(0, 1.0, 0.0, None);
-    let c1 = column(1, 0.0, 1.0, None);
+        let mut fi = [0.0; COLS];
+        fi[2..].copy_from_slice(&f[i]);
+        for k in 0..COLS {
+            let qi = q0[k] + h * av[k];
+            dq[k] += tab.b[i] * rhs[i][k];
+            dv[k] += tab.b[i] * (fi[k] - ks[i] * qi - c * rhs[i][k]);
+        }
+    }
+    let col = |k: usize| Vector2::new(q0[k] + h * dq[k], v0[k] + h * dv[k]);
+    let (c0, c1) = (col(0), col(1));
     let mut out = StepMap {
         r: Matrix2::new(c0[0], c1[0], c0[1], c1[1]),
         p: [Vector2::zeros(); MAX_FORCES],
     };
     for j in 0..nf {
-        out.p[j] = column(2 + j, 0.0, 0.0, Some(j));
+        out.p[j] = col(2 + j);
     }
     out
 }

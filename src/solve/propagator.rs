@@ -509,6 +509,56 @@ pub struct Responses {
     /// Whether the phases came from the dense interpolant ([`DenseMap`]) rather than from
     /// checkpoints on the sample grid.
     pub dense: bool,
+    /// Φ over the first homogeneous period, read off the run's own phase table (what Floquet
+    /// analysis samples: `floquet::analyse_sampled`); None where the grid does not hold it.
+    pub homogeneous: Option<HomogeneousSamples>,
+}
+
+/// Φ at equally spaced phases of the homogeneous period T_p (the period of the equation's
+/// coefficients, [`LinearOde::homogeneous_period`]) and at its end, from a run's phase table.
+#[derive(Debug, Clone)]
+pub struct HomogeneousSamples {
+    /// T_p, s.
+    pub span: f64,
+    /// Φ(j·T_p/m), j = 0..m (m = `phi.len()`).
+    pub phi: Vec<Matrix2<f64>>,
+    /// Φ(T_p).
+    pub end: Matrix2<f64>,
+}
+
+/// The homogeneous-period samples a commensurate table of `p` phases per period T holds: when
+/// T_p = T/k for a whole k dividing p (the table's row p/k is Φ(T_p); for k = 1 the
+/// monodromy). None for the dense interpolant or a table shorter than a period.
+fn homogeneous_samples<O: LinearOde + ?Sized>(
+    ode: &O,
+    map: &PhaseTable,
+    p: usize,
+) -> Option<HomogeneousSamples> {
+    let (period, tp) = (ode.period(), ode.homogeneous_period());
+    let k = (period / tp).round();
+    if map.dense.is_some()
+        || map.table.len() < p
+        || k.is_nan()
+        || k < 1.0
+        || (k * tp - period).abs() > 1e-12 * period
+    {
+        return None;
+    }
+    let k = k as usize;
+    if p % k != 0 {
+        return None;
+    }
+    let m = p / k;
+    let row = |v: &PhaseRow| Matrix2::new(v[0], v[1], v[2], v[3]);
+    Some(HomogeneousSamples {
+        span: tp,
+        phi: map.table[..m].iter().map(row).collect(),
+        end: if k == 1 {
+            map.monodromy
+        } else {
+            row(&map.table[m])
+        },
+    })
 }
 
 /// Samples per period, when the output step `dt` divides `period` to 1e-12 relative.
@@ -556,7 +606,7 @@ pub fn propagate_responses_in<O: LinearOde + ?Sized>(
     let mut periods = 0;
     if let Some(d) = &map.dense {
         // Incommensurate grid: each sample's own phase; periods advance monotonically.
-        let mut vals: Vec<PhaseRow> = Vec::new();
+        let mut vals = PhaseColumns::default();
         let mut i = 0;
         while i < n {
             let t = i as f64 * dt;
@@ -570,19 +620,20 @@ pub fn propagate_responses_in<O: LinearOde + ?Sized>(
                 if kk != k {
                     break;
                 }
-                vals.push(d.eval((t - kk * period).clamp(0.0, period)));
+                vals.push(&d.eval((t - kk * period).clamp(0.0, period)));
                 i += 1;
             }
-            out.write_period(&vals, &state);
+            out.write_period(&vals, vals.len, &state);
             periods = k as u64 + 1;
         }
     } else if let Some(p) = pp {
+        let cols = PhaseColumns::of(&map.table);
         let mut i = 0;
         let mut k = 0u64;
         while i < n {
             state.step_to(k, &map, nf);
             let cnt = (n - i).min(p);
-            out.write_period(&map.table[..cnt], &state);
+            out.write_period(&cols, cnt, &state);
             periods = k + 1;
             i += p;
             k += 1;
@@ -606,6 +657,7 @@ pub fn propagate_responses_in<O: LinearOde + ?Sized>(
         period_error: map.period_error,
         periods,
         dense: used_dense,
+        homogeneous: pp.and_then(|p| homogeneous_samples(ode, &map, p)),
     })
 }
 
@@ -641,7 +693,44 @@ fn overflow_error(monodromy: &Matrix2<f64>) -> WingbeatError {
 }
 
 /// One phase's Φ row-major then p_j (q, q̇) for each forcing column.
-type PhaseRow = [f64; 4 + 2 * MAX_FORCES];
+type PhaseRow = [f64; ROW];
+/// Entries of a [`PhaseRow`].
+const ROW: usize = 4 + 2 * MAX_FORCES;
+
+/// Phase rows stored entry by entry (column c holds entry c of every row): the writer's loops
+/// then read contiguous memory and vectorise.
+#[derive(Default)]
+struct PhaseColumns {
+    cols: [Vec<f64>; ROW],
+    len: usize,
+}
+
+impl PhaseColumns {
+    fn of(rows: &[PhaseRow]) -> Self {
+        let mut c = PhaseColumns::default();
+        for r in rows {
+            c.push(r);
+        }
+        c
+    }
+
+    fn clear(&mut self) {
+        self.cols.iter_mut().for_each(Vec::clear);
+        self.len = 0;
+    }
+
+    fn push(&mut self, row: &PhaseRow) {
+        for (c, v) in self.cols.iter_mut().zip(row) {
+            c.push(*v);
+        }
+        self.len += 1;
+    }
+
+    /// Entry `c` of the first `cnt` rows.
+    fn col(&self, c: usize, cnt: usize) -> &[f64] {
+        &self.cols[c][..cnt]
+    }
+}
 
 /// The one-period integration [`propagate_responses`] reads: a row per phase of a
 /// commensurate grid, or the dense interpolant for an incommensurate one, with the period's
@@ -786,47 +875,62 @@ impl ResponseWriter {
         }
     }
 
-    /// Writes the samples whose phases are `vals` in the period `state` stands at, from the
-    /// states at its start and M^k: first the `total` column (with the free response), then
-    /// each other column. Column by column, so each loop is tight.
-    fn write_period(&mut self, vals: &[PhaseRow], state: &PeriodState) {
+    /// Writes the first `cnt` samples whose phases are `vals` in the period `state` stands at,
+    /// from the states at its start and M^k: first the `total` column (with the free response),
+    /// then each other column. Column by column over contiguous entries, so each loop is tight.
+    fn write_period(&mut self, vals: &PhaseColumns, cnt: usize, state: &PeriodState) {
         let (x_arr, m) = state.arrays();
-        let (p, pd) = (4 + 2 * self.total, 5 + 2 * self.total);
-        let x = x_arr[self.total];
-        // One tight pass per series over the period's phase rows (no per-sample branch or
-        // capacity check); each value is the same expression as a sample-by-sample loop's.
+        let [x0, x1] = x_arr[self.total];
+        let (c0, c1, c2, c3) = (
+            vals.col(0, cnt),
+            vals.col(1, cnt),
+            vals.col(2, cnt),
+            vals.col(3, cnt),
+        );
+        let (cp, cpd) = (
+            vals.col(4 + 2 * self.total, cnt),
+            vals.col(5 + 2 * self.total, cnt),
+        );
+        // x·(Φ row) + p over the period: one pass per series, each value the same expression
+        // as a sample-by-sample loop's.
+        let affine = |a: &[f64], b: &[f64], p: &[f64], x0: f64, x1: f64, out: &mut Vec<f64>| {
+            out.extend(
+                a.iter()
+                    .zip(b)
+                    .zip(p)
+                    .map(|((a, b), p)| a * x0 + b * x1 + p),
+            );
+        };
         if self.with_ic {
             let [q0, v0] = self.ic;
             let start = self.tot.len();
-            self.free.extend(vals.iter().map(|v| {
-                let hq0 = v[0] * m[0] + v[1] * m[2];
-                let hq1 = v[0] * m[1] + v[1] * m[3];
+            self.free.extend(c0.iter().zip(c1).map(|(a, b)| {
+                let hq0 = a * m[0] + b * m[2];
+                let hq1 = a * m[1] + b * m[3];
                 q0 * hq0 + v0 * hq1
             }));
             self.tot.extend(
-                vals.iter()
+                c0.iter()
+                    .zip(c1)
+                    .zip(cp)
                     .zip(&self.free[start..])
-                    .map(|(v, fr)| (v[0] * x[0] + v[1] * x[1] + v[p]) + fr),
+                    .map(|(((a, b), p), fr)| (a * x0 + b * x1 + p) + fr),
             );
-            self.qdot_tot.extend(vals.iter().map(|v| {
-                let qd = v[2] * x[0] + v[3] * x[1] + v[pd];
-                let hqd0 = v[2] * m[0] + v[3] * m[2];
-                let hqd1 = v[2] * m[1] + v[3] * m[3];
-                qd + q0 * hqd0 + v0 * hqd1
-            }));
-        } else {
-            self.tot
-                .extend(vals.iter().map(|v| v[0] * x[0] + v[1] * x[1] + v[p]));
             self.qdot_tot
-                .extend(vals.iter().map(|v| v[2] * x[0] + v[3] * x[1] + v[pd]));
+                .extend(c2.iter().zip(c3).zip(cpd).map(|((a, b), p)| {
+                    let qd = a * x0 + b * x1 + p;
+                    let hqd0 = a * m[0] + b * m[2];
+                    let hqd1 = a * m[1] + b * m[3];
+                    qd + q0 * hqd0 + v0 * hqd1
+                }));
+        } else {
+            affine(c0, c1, cp, x0, x1, &mut self.tot);
+            affine(c2, c3, cpd, x0, x1, &mut self.qdot_tot);
         }
         let total = self.total;
         for (j, qj) in self.q.iter_mut().enumerate().filter(|&(j, _)| j != total) {
-            let x = x_arr[j];
-            qj.extend(
-                vals.iter()
-                    .map(|v| v[0] * x[0] + v[1] * x[1] + v[4 + 2 * j]),
-            );
+            let [x0, x1] = x_arr[j];
+            affine(c0, c1, vals.col(4 + 2 * j, cnt), x0, x1, qj);
         }
     }
 }
@@ -874,6 +978,34 @@ mod tests {
             }
         }
         assert!(all_finite(&[f64::MAX, -f64::MAX, f64::MIN_POSITIVE, -0.0]));
+    }
+
+    /// The homogeneous-period samples a run hands to Floquet analysis: Φ at the grid's phases
+    /// over [0, T_p) and Φ(T_p), equal to a separate integration of that span; none where the
+    /// grid does not hold them.
+    #[test]
+    fn a_commensurate_run_holds_the_homogeneous_period() {
+        let cfg = crate::config::SimConfig::paper();
+        let kin = cfg.kinematics.compile();
+        let ode = crate::solve::ModalOde::new(&kin, &cfg.modes[0]);
+        let (dt, tp) = (1.0 / cfg.sample_rate_hz, ode.homogeneous_period());
+        assert_eq!(tp, 0.02);
+        let r = propagate_responses(&ode, dt, 20_001, 3, [0.0; 2]).unwrap();
+        let h = r.homogeneous.expect("400 phases a period hold T/2");
+        assert_eq!((h.span, h.phi.len()), (tp, 200));
+        let phases: Vec<f64> = (0..200).map(|j| j as f64 * dt).collect();
+        let sep = period_map_with(&crate::solve::Homogeneous(&ode), tp, &phases, false);
+        let dist = |a: &Matrix2<f64>, b: &Matrix2<f64>| (a - b).norm() / b.norm();
+        assert!(dist(&h.end, &sep.monodromy) < 1e-12);
+        for (a, b) in h.phi.iter().zip(&sep.phi) {
+            assert!(dist(a, b) < 1e-12);
+        }
+        // Odd samples per period (no Φ(T/2) on the grid), a run shorter than a period, and an
+        // incommensurate grid: none.
+        for (dt, n) in [(1.0 / 2525.0, 1000), (dt, 300), (1.0 / 7777.0, 1000)] {
+            let r = propagate_responses(&ode, dt, n, 3, [0.0; 2]).unwrap();
+            assert!(r.homogeneous.is_none(), "dt = {dt}, n = {n}");
+        }
     }
 
     #[test]
