@@ -1,7 +1,7 @@
 //! The simulation driver: a [`SimConfig`] in, every mode's partial and total responses,
 //! contributions, Floquet summary and strains out. Used by the CLI, the wasm API and the tests.
 
-use crate::analysis::contribution::contributions;
+use crate::analysis::contribution::contributions_with;
 use crate::config::SimConfig;
 use crate::error::{Result, WingbeatError};
 use crate::floquet::{self, FloquetResult};
@@ -228,7 +228,21 @@ pub fn simulate_reusing(cfg: &SimConfig, pool: &mut SeriesPool) -> Result<SimRes
             total: p.total,
         };
         let qdot_total = p.qdot_total;
-        let contribution_percent = contributions(&q.euler, &q.centrifugal, &q.coriolis, &q.total);
+        // The series' (max |x|, Σ x²) were taken as they were written.
+        let st = |j: usize| (p.q_stats[j].max_abs(), p.q_stats[j].sum_sq());
+        let contribution_percent = contributions_with(
+            &q.euler,
+            &q.centrifugal,
+            &q.coriolis,
+            &q.total,
+            [
+                ModalOde::EULER,
+                ModalOde::CENTRIFUGAL,
+                ModalOde::CORIOLIS,
+                ModalOde::TOTAL,
+            ]
+            .map(st),
+        );
         // Floquet reads Φ over the homogeneous period off this run's own grid when it holds it.
         let floquet = floquet::analyse_sampled(
             &ode,

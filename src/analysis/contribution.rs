@@ -42,29 +42,12 @@ pub fn sum_sq(x: &[f64]) -> f64 {
     max_abs_and_sum_sq(x).1
 }
 
-/// (max |x_i|, Σ x_i²) in one pass with eight interleaved lanes each (see [`sum_sq`]). NaNs are
-/// skipped by the maximum (as `f64::max` does) and propagate into the sum.
+/// (max |x_i|, Σ x_i²) in one pass with eight interleaved lanes each
+/// ([`crate::solve::stats::SeriesStats`]). NaNs are skipped by the maximum (as `f64::max`
+/// does) and propagate into the sum.
 pub fn max_abs_and_sum_sq(x: &[f64]) -> (f64, f64) {
-    const L: usize = 8;
-    let mut m = [0.0_f64; L];
-    let mut s = [0.0_f64; L];
-    let chunks = x.chunks_exact(L);
-    let rest = chunks.remainder();
-    for c in chunks {
-        for k in 0..L {
-            // `a > m` is false for a NaN: skipped, as f64::max skips it (and this form vectorises).
-            let a = c[k].abs();
-            m[k] = if a > m[k] { a } else { m[k] };
-            s[k] += c[k] * c[k];
-        }
-    }
-    for (k, v) in rest.iter().enumerate() {
-        m[k] = m[k].max(v.abs());
-        s[k] += v * v;
-    }
-    let max = m.iter().fold(0.0_f64, |a, &b| a.max(b));
-    let sum = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
-    (max, sum)
+    let s = crate::solve::stats::SeriesStats::of(x);
+    (s.max_abs(), s.sum_sq())
 }
 
 /// Shares of the three partial responses in the total (paper's definition), percent.
@@ -75,11 +58,23 @@ pub fn contributions(
     coriolis: &[f64],
     total: &[f64],
 ) -> Contributions {
+    let all = [euler, centrifugal, coriolis, total].map(max_abs_and_sum_sq);
+    contributions_with(euler, centrifugal, coriolis, total, all)
+}
+
+/// [`contributions`] from each series' (max |x|, Σ x²) already taken (the run's writer takes
+/// them while the values are in cache: `propagate_responses`'s statistics).
+pub fn contributions_with(
+    euler: &[f64],
+    centrifugal: &[f64],
+    coriolis: &[f64],
+    total: &[f64],
+    all: [(f64, f64); 4],
+) -> Contributions {
     // A growing (unstable) response can reach 1e200 and more: its squares would overflow, so
     // every series is scaled by one power of two (exact) chosen from the largest magnitude.
     // One pass per series gives its largest magnitude and its unscaled Σx²; only when a scale is
     // needed (magnitudes beyond 1e±100) are the sums taken again on the scaled values.
-    let all = [euler, centrifugal, coriolis, total].map(max_abs_and_sum_sq);
     let m = all.iter().fold(0.0_f64, |m, v| m.max(v.0));
     let s = crate::analysis::beat::safe_scale(&[m]);
     let series = [euler, centrifugal, coriolis, total];

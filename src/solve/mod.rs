@@ -22,6 +22,7 @@ pub mod coupled;
 pub mod gauss;
 pub mod propagator;
 pub mod rk4;
+pub mod stats;
 
 /// A linear second-order ODE with periodic coefficients and several forcings.
 pub trait LinearOde {

@@ -12,6 +12,7 @@
 //! repeating it with twice the step and reported; the recursion adds only rounding.
 
 use super::gauss::{step_map, Tableau};
+use super::stats::SeriesStats;
 use super::{LinearOde, MAX_FORCES};
 use crate::error::{Result, WingbeatError};
 use crate::pool::SeriesPool;
@@ -165,13 +166,25 @@ fn part_scale<'a>(
     w: f64,
     parts: impl Iterator<Item = &'a [Vector2<f64>; MAX_FORCES]>,
 ) -> [f64; MAX_FORCES] {
-    let mut out = [0.0; MAX_FORCES];
-    for p in parts {
+    // The largest q² + (q̇/ω)² first, its square root once (√ is monotonic); `hypot` over
+    // every value again only if a square overflowed.
+    let parts: Vec<_> = parts.collect();
+    let mut sq = [0.0_f64; MAX_FORCES];
+    for p in &parts {
         for j in 0..MAX_FORCES {
-            out[j] = f64::max(out[j], p[j][0].hypot(p[j][1] / w));
+            let v = p[j][1] / w;
+            sq[j] = sq[j].max(p[j][0] * p[j][0] + v * v);
         }
     }
-    out
+    std::array::from_fn(|j| {
+        if sq[j].is_finite() {
+            sq[j].sqrt()
+        } else {
+            parts
+                .iter()
+                .fold(0.0_f64, |m, p| m.max(p[j][0].hypot(p[j][1] / w)))
+        }
+    })
 }
 
 /// [`period_map`], with the error estimate (one more integration of the span at twice the
@@ -509,6 +522,9 @@ pub struct Responses {
     /// Whether the phases came from the dense interpolant ([`DenseMap`]) rather than from
     /// checkpoints on the sample grid.
     pub dense: bool,
+    /// Statistics of each column's output series, taken as it was written: `q_stats[j]` for
+    /// the series in `q[j]`, and for the `total` column those of [`Responses::total`].
+    pub q_stats: Vec<SeriesStats>,
     /// Φ over the first homogeneous period, read off the run's own phase table (what Floquet
     /// analysis samples: `floquet::analyse_sampled`); None where the grid does not hold it.
     pub homogeneous: Option<HomogeneousSamples>,
@@ -639,17 +655,15 @@ pub fn propagate_responses_in<O: LinearOde + ?Sized>(
             k += 1;
         }
     }
-    let finite = out
-        .q
-        .iter()
-        .chain([&out.tot, &out.qdot_tot])
-        .all(|v| all_finite(v))
+    let finite = out.stats.iter().all(SeriesStats::all_finite)
+        && out.qdot_stats.all_finite()
         && all_finite(&state.arrays().1);
     if !finite {
         return Err(overflow_error(&map.monodromy));
     }
     Ok(Responses {
         q: out.q,
+        q_stats: out.stats,
         free: out.free,
         total: out.tot,
         qdot_total: out.qdot_tot,
@@ -707,11 +721,10 @@ struct PhaseColumns {
 
 impl PhaseColumns {
     fn of(rows: &[PhaseRow]) -> Self {
-        let mut c = PhaseColumns::default();
-        for r in rows {
-            c.push(r);
+        PhaseColumns {
+            cols: std::array::from_fn(|c| rows.iter().map(|r| r[c]).collect()),
+            len: rows.len(),
         }
-        c
     }
 
     fn clear(&mut self) {
@@ -847,6 +860,9 @@ impl PeriodState {
 /// The output series of [`propagate_responses`] as they are written, period by period.
 struct ResponseWriter {
     q: Vec<Vec<f64>>,
+    /// Statistics of each column's series as written (`total`'s: of `tot`).
+    stats: Vec<SeriesStats>,
+    qdot_stats: SeriesStats,
     tot: Vec<f64>,
     qdot_tot: Vec<f64>,
     free: Vec<f64>,
@@ -866,6 +882,8 @@ impl ResponseWriter {
             q: (0..nf)
                 .map(|j| if j == total { Vec::new() } else { pool.take(n) })
                 .collect(),
+            stats: vec![SeriesStats::new(); nf],
+            qdot_stats: SeriesStats::new(),
             tot: pool.take(n),
             qdot_tot: pool.take(n),
             free,
@@ -901,9 +919,9 @@ impl ResponseWriter {
                     .map(|((a, b), p)| a * x0 + b * x1 + p),
             );
         };
+        let start = self.tot.len();
         if self.with_ic {
             let [q0, v0] = self.ic;
-            let start = self.tot.len();
             self.free.extend(c0.iter().zip(c1).map(|(a, b)| {
                 let hq0 = a * m[0] + b * m[2];
                 let hq1 = a * m[1] + b * m[3];
@@ -927,10 +945,14 @@ impl ResponseWriter {
             affine(c0, c1, cp, x0, x1, &mut self.tot);
             affine(c2, c3, cpd, x0, x1, &mut self.qdot_tot);
         }
+        // Each series' statistics from the values just written (still in cache).
+        self.stats[self.total].push(&self.tot[start..]);
+        self.qdot_stats.push(&self.qdot_tot[start..]);
         let total = self.total;
         for (j, qj) in self.q.iter_mut().enumerate().filter(|&(j, _)| j != total) {
             let [x0, x1] = x_arr[j];
             affine(c0, c1, vals.col(4 + 2 * j, cnt), x0, x1, qj);
+            self.stats[j].push(&qj[start..]);
         }
     }
 }
