@@ -3,6 +3,10 @@
 //! quadratic-damping envelope, and the linearised drag against the nonlinear reference.
 #![allow(clippy::needless_range_loop)]
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use std::sync::{Arc, OnceLock};
 use wingbeat::aero::nonlinear::{rk4_linear, simulate_nonlinear};
 use wingbeat::aero::ode::{LoadTable, TABLE_TOLERANCE};

@@ -5,6 +5,10 @@
 //! load table and must agree to 1e-12 of its largest value. In a vacuum there is no
 //! aerodynamic series and the JSON has no such key.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::aero::{AeroConfig, AeroWing, FrameState};
 use wingbeat::config::SimConfig;
 use wingbeat::simulate::{force_series, sample_forces, ModeSelection};

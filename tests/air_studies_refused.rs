@@ -2,6 +2,10 @@
 //! vacuum silently: the initial-condition map (it superposes one mode's free responses) and
 //! the resonance map (per-mode Floquet numbers). A vacuum config still runs.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::analysis::ic_map::{ic_map, IcMapOptions};
 use wingbeat::analysis::resonance::{resonance_map, ResonanceOptions};
 use wingbeat::config::SimConfig;

@@ -1,6 +1,10 @@
 //! Spectra, contributions, the initial-condition map and sweeps, each against an independent
 //! computation.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 mod common;
 use common::*;
 use std::f64::consts::PI;

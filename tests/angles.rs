@@ -1,6 +1,10 @@
 //! The angle series on the simulation grid (src/analysis/angles.rs) against a point-by-point
 //! evaluation of the compiled kinematics (what the wasm `anglesAt` does) and the closed form.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use std::f64::consts::PI;
 use wingbeat::analysis::angles::{angle_series, angles_on};
 use wingbeat::config::SimConfig;

@@ -1,6 +1,10 @@
 //! The `wingbeat` binary end to end: outputs have the promised shape, bad input gets a clear,
 //! named error and a non-zero exit, never a panic.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use serde_json::Value;
 
 mod common_cli;

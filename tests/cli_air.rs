@@ -2,6 +2,10 @@
 //! `sense` in air and the air claims of `wingbeat reproduce` (`psd` and `sweep` in air:
 //! tests/cli_psd_sweep_air.rs).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 mod common_cli;
 use common_cli::run;
 use serde_json::Value;

@@ -3,6 +3,10 @@
 //! `--gamma-phase` give exactly the run that the library gives for the same `*_phase` override,
 //! and bad values are refused by name with the allowed range.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use serde_json::Value;
 use wingbeat::config::SimConfig;
 use wingbeat::params::apply_overrides;

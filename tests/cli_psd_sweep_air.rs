@@ -2,6 +2,10 @@
 //! that every number is the library's air run, that a vacuum's output keeps its shape, and the
 //! work caps that price the air run before anything runs.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 mod common_cli;
 use common_cli::{run, run_timed};
 use serde_json::Value;

@@ -3,6 +3,10 @@
 //! integral consistent with the rate (finite differences and quadrature, independent of the
 //! closed forms under test).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::disturbance::{Disturbance, DisturbanceSpec};
 
 #[test]

@@ -4,6 +4,10 @@
 //! works through the backend trait (skyline and block-sparse LDLᵀ: inertia of an indefinite
 //! K − μM; faer's Cholesky reports no inertia there).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::assembly::{assemble, assemble_blocks};
 use wingbeat::fem::blocksparse::{BlockLdlt, BlockSym};
 use wingbeat::fem::linalg::{sturm_count, SkylineLdlt, SparseLdlt};

@@ -1,6 +1,10 @@
 //! Element-level checks of the shell triangle: rigid-body motions carry no strain energy,
 //! constant membrane strain and constant curvature are reproduced exactly (patch tests).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::element::{
     corner_surface_strain, global_stiffness, Frame, ShellMaterial, Vec18,
 };

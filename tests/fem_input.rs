@@ -1,5 +1,9 @@
 //! Input parsing and rejection of bad input: every case is a clear error naming the field.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::*;
 use wingbeat::WingbeatError;
 

@@ -2,6 +2,10 @@
 //! assembly, naming a size that fits), the automatic mesh size, the default strain point
 //! (inside any valid outline) and the `wingbeat modes` document built in one place.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::*;
 use wingbeat::WingbeatError;
 

@@ -3,6 +3,10 @@
 //! NAFEMS FV12 (free square plate), plus mass-orthonormality, residuals and a Sturm-sequence
 //! check that no mode below the last one returned was missed.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::assembly::assemble;
 use wingbeat::fem::mesh::mesh_planform;
 use wingbeat::fem::*;

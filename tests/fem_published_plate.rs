@@ -16,6 +16,10 @@
 //!   torsion, λ = (π/2)(L/b)√(24 (1 − ν)), which ignores the clamp's warping restraint and
 //!   so lies below the plate.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::{compute_modes, FemModes};
 use wingbeat::presets::{
     mohren2018_damping_ratios, mohren2018_material, mohren2018_plate_input,

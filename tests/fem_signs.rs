@@ -3,6 +3,10 @@
 //! symmetric rectangle whose torsion modes have two equal and opposite largest displacements
 //! (where "the largest displacement is positive" picked a sign by rounding).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::*;
 
 fn solve(input: &FemInput, h: f64) -> FemModes {

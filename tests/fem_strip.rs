@@ -4,6 +4,10 @@
 //! Without that line the clamped edge falls short by up to one element and the error falls
 //! only about linearly with h.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::*;
 
 const SPAN: f64 = 30.0; // free span, mm

@@ -1,6 +1,10 @@
 //! The default (synthetic Manduca-like) wing: calibrated frequencies, the camber effect,
 //! the root boundary-condition sensitivity, a_k / mass bookkeeping and modal strains.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::fem::*;
 
 fn wing(h: f64, camber: f64, clamp: Clamp) -> FemModes {

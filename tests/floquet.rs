@@ -1,6 +1,10 @@
 //! Floquet analysis against closed forms (constant coefficients), Mathieu's stability chart,
 //! Liouville's formula, and the beat measured in simulated responses.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 mod common;
 use common::*;
 use std::f64::consts::PI;

@@ -2,6 +2,10 @@
 //! force −[Ω̇×r + Ω×(Ω×r) + 2Ω×ṙ_rel]·K″ on point masses, projected on a mode shape.
 //! Each term is checked separately, so a sign error in any one of them fails.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use nalgebra::Vector3;
 use wingbeat::kinematics::{Angle, Harmonic, Kinematics, RateState};
 use wingbeat::model::{coefficients, stiffness_coefficient, Mode};

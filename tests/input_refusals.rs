@@ -4,6 +4,10 @@
 //! with one name in a mode (the second was dropped); keys of a modes document that would be
 //! ignored; and a type error inside an angle names the field, not only the angle.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use serde_json::json;
 use wingbeat::config::SimConfig;
 use wingbeat::error::parse_json;

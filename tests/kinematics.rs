@@ -1,6 +1,10 @@
 //! Kinematics (Eq. 1): the angular velocity formula against rotation matrices, and the
 //! sampled-table interpolant against the series it was sampled from.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use nalgebra::{Matrix3, Rotation3, Vector3};
 use wingbeat::kinematics::{Angle, Harmonic, Kinematics};
 

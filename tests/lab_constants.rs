@@ -3,6 +3,10 @@
 //! build computes what the native build computes. If the core changes these on purpose, update
 //! `PAPER_REFERENCE` here and in tests/wasm_common/mod.rs together (this test prints them).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::config::SimConfig;
 use wingbeat::simulate::simulate;
 

@@ -4,6 +4,10 @@
 //! independent integrations with four times as many Gauss–Legendre steps (error 4⁸ ≈ 6.5e4
 //! times smaller), so a sign or factor error anywhere shows up many orders above the bounds.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 mod common;
 use common::*;
 use nalgebra::{Matrix2, Vector2};

@@ -1,6 +1,10 @@
 //! The lab's parameter table (src/params.rs): its slider ranges against the core's validation,
 //! its overrides against the config the lab used to build by hand, and against the sweep.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::analysis::sweep::{self, SweepParam};
 use wingbeat::config::{SimConfig, MAX_DURATION_S};
 use wingbeat::error::WingbeatError;

@@ -2,6 +2,10 @@
 //! sanitising, colour map and legend.
 #![cfg(feature = "render")]
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use nalgebra::{Rotation3, Vector3};
 use wingbeat::render::scene::{
     diverging, legend_for, legend_for_field, wing_point_to_world, wing_rotation, DIVERGING_STOPS,

@@ -2,6 +2,10 @@
 //! Mathieu theory for the first parametric-instability tongue, a monodromy matrix integrated here
 //! with classical RK4 (no code shared with the crate's solver), and the no-rotation limit.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use std::f64::consts::PI;
 use std::time::Instant;
 use wingbeat::analysis::resonance::{

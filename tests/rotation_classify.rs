@@ -3,6 +3,10 @@
 //! classes, raw strain does not, a few sparse sensors do as well as many random ones),
 //! determinism under a seed, and bad options named before any work.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use nalgebra::DMatrix;
 use wingbeat::analysis::rotation_classify::{
     classify, mohren2018_case, mohren2018_grid_mm, ClassifyOptions,

@@ -3,6 +3,10 @@
 //! accuracy is Φ(Δ/2), Δ² = dᵀΣ⁻¹d; a fitted discriminant must find that direction and, on
 //! fresh test samples, that accuracy within the sampling error (a wrong sign gives 1 − Φ(Δ/2)).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use nalgebra::{DMatrix, DVector};
 use wingbeat::analysis::classify::{Discriminant, ThresholdRule};
 

@@ -3,6 +3,10 @@
 //! full SVD; with every mode kept, SSPOC's weights are the full-space discriminant and its sensors
 //! are the ones that carry the class difference; bad settings are named.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use nalgebra::{DMatrix, DVector};
 use wingbeat::analysis::sspoc::{
     elastic_net_equality, leading_eigen, leading_singular, sspoc, SensorCount, SspocConfig,

@@ -1,5 +1,9 @@
 //! The solvers against closed forms, against each other, and at their theoretical orders.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 mod common;
 use common::*;
 use nalgebra::Vector2;

@@ -2,6 +2,10 @@
 //! now refuse or answer (strict schemas at every level, paths in CLI type errors, compact
 //! numbers, a work budget checked before the work, finite analyses).
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use serde_json::Value;
 use std::time::{Duration, Instant};
 use wingbeat::analysis::beat::{checked_envelope, envelope};

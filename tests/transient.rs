@@ -3,6 +3,10 @@
 //! start-up ramp and disturbances, the kinematics against finite differences and closed forms,
 //! and bad input named.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use wingbeat::disturbance::{Disturbance, DisturbanceSpec};
 use wingbeat::kinematics::{Angle, Harmonic, Kinematics, RateState};
 use wingbeat::model::{coefficients, Mode};

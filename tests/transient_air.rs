@@ -5,6 +5,10 @@
 //! the air's response differs from the vacuum's by the air's share; bad input named, the work
 //! cap checked before the first step.
 
+// Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
+// so `wasm-pack test` does not build this file for nothing.
+#![cfg(not(target_arch = "wasm32"))]
+
 use std::sync::OnceLock;
 use wingbeat::aero::nonlinear::rk4_linear;
 use wingbeat::aero::ode::{AirOde, AERODYNAMIC, TOTAL};
