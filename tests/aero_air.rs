@@ -2,7 +2,6 @@
 //! independent integrator, the vacuum limit against the per-mode path, free decay against the
 //! quadratic-damping envelope, and the linearised drag against the nonlinear reference.
 #![allow(clippy::needless_range_loop)]
-
 // Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
 // so `wasm-pack test` does not build this file for nothing.
 #![cfg(not(target_arch = "wasm32"))]

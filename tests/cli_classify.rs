@@ -2,7 +2,6 @@
 //! setup end to end through the binary, its CSV table and JSON units, the same through a
 //! `wingbeat modes` file, and bad flags named.
 #![cfg(feature = "cli")]
-
 // Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
 // so `wasm-pack test` does not build this file for nothing.
 #![cfg(not(target_arch = "wasm32"))]

@@ -2,7 +2,6 @@
 //! the automatic mesh size is printed and stored, the strain point lies inside the wing, the
 //! strip clamp's edge is a node row, and `simulate --modes` reads the document back.
 #![cfg(feature = "cli")]
-
 // Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
 // so `wasm-pack test` does not build this file for nothing.
 #![cfg(not(target_arch = "wasm32"))]

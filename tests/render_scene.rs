@@ -1,7 +1,6 @@
 //! Renderer maths that needs no GPU: rotation convention, camera, mesh input and validation,
 //! sanitising, colour map and legend.
 #![cfg(feature = "render")]
-
 // Native #[test]s only (wasm32 runs just the wasm_bindgen_test suites): compiled out there,
 // so `wasm-pack test` does not build this file for nothing.
 #![cfg(not(target_arch = "wasm32"))]
