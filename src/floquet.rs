@@ -113,9 +113,7 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
     let mt = monodromy.unwrap_or_else(|| period_map_with(&hom, ode.period(), &[], false).monodromy);
     // Floquet solution over the homogeneous period, sampled finely enough to resolve the
     // harmonic that carries the natural frequency.
-    let nh = (min_samples(ode).min(1.0e9) as usize)
-        .next_power_of_two()
-        .clamp(32, 1 << 16);
+    let nh = standalone_samples(ode);
     let phases: Vec<f64> = (0..nh).map(|j| j as f64 * tp / nh as f64).collect();
     let pm = period_map_with(&hom, tp, &phases, false);
     from_samples(ode, flap_hz, averaged_freq_hz, mt, &pm.monodromy, &pm.phi)
@@ -127,6 +125,14 @@ pub fn analyse_with<O: LinearOde + ?Sized>(
 fn min_samples<O: LinearOde + ?Sized>(ode: &O) -> f64 {
     let ratio = ode.freq_scale() * ode.homogeneous_period() / (2.0 * PI);
     (4.0 * ratio + 16.0).max(32.0)
+}
+
+/// The samples [`analyse`] takes over the homogeneous period: [`min_samples`] rounded up to a
+/// power of two, at most 2¹⁶ (also what [`analysis_cost`] counts).
+fn standalone_samples<O: LinearOde + ?Sized>(ode: &O) -> usize {
+    (min_samples(ode).min(1.0e9) as usize)
+        .next_power_of_two()
+        .clamp(32, 1 << 16)
 }
 
 /// As [`analyse_with`] with the full-period monodromy `monodromy`, reading the Floquet solution
@@ -264,9 +270,6 @@ pub fn analysis_cost(kin: &crate::kinematics::Compiled, mode: &crate::model::Mod
     let t = ode.period();
     let tp = ode.homogeneous_period();
     let steps = |span: f64| steps_per_span(s, span);
-    let ratio = s * tp / (2.0 * PI);
-    let nh = ((4.0 * ratio + 16.0).min(1.0e9) as usize)
-        .next_power_of_two()
-        .clamp(32, 1 << 16) as f64;
+    let nh = standalone_samples(&ode) as f64;
     1.5 * steps(t) + nh + steps(tp) + nh * nh / 250.0
 }
