@@ -110,16 +110,45 @@ pub fn step_map_from(
     fs: &[[f64; MAX_FORCES]; STAGES],
     nf: usize,
 ) -> StepMap {
-    let a = &tab.a;
-    // Every loop below runs over all COLS columns (the unused forcings are zero columns, whose
-    // results are dropped): fixed trip counts the compiler unrolls and vectorises across
-    // columns. Each value is still formed by the same operations in the same order.
+    // Every loop in the three stages runs over all COLS columns (the unused forcings are zero
+    // columns, whose results are dropped): fixed trip counts the compiler unrolls and vectorises
+    // across columns. Each value is still formed by the same operations in the same order.
     let nf = nf.min(MAX_FORCES);
     let mut f = [[0.0; MAX_FORCES]; STAGES];
     for (fi, si) in f.iter_mut().zip(fs) {
         fi[..nf].copy_from_slice(&si[..nf]);
     }
-    // a_il k_l, then M = I + h c a + h² a K a and the right-hand sides.
+    let (mut m, mut rhs) = stage_system(&tab.a, c, h, ks, &f);
+    if !solve_stages(&mut m, &mut rhs) {
+        return StepMap {
+            r: Matrix2::from_element(f64::NAN),
+            p: [Vector2::from_element(f64::NAN); MAX_FORCES],
+        };
+    }
+    let (q1, v1) = advance(tab, c, h, ks, &f, &rhs);
+    let col = |k: usize| Vector2::new(q1[k], v1[k]);
+    let (c0, c1) = (col(0), col(1));
+    let mut out = StepMap {
+        r: Matrix2::new(c0[0], c1[0], c0[1], c1[1]),
+        p: [Vector2::zeros(); MAX_FORCES],
+    };
+    for j in 0..nf {
+        out.p[j] = col(2 + j);
+    }
+    out
+}
+
+/// The reduced stage system of [`step_map_from`]: M = I + h c a + h² a K a and its COLS
+/// right-hand sides (the starts (1, 0), (0, 1), then the forcings).
+#[inline(always)]
+fn stage_system(
+    a: &[[f64; STAGES]; STAGES],
+    c: f64,
+    h: f64,
+    ks: &[f64; STAGES],
+    f: &[[f64; MAX_FORCES]; STAGES],
+) -> ([[f64; STAGES]; STAGES], [[f64; COLS]; STAGES]) {
+    // a_il k_l, then M and the right-hand sides.
     let mut ak = [[0.0; STAGES]; STAGES];
     for i in 0..STAGES {
         for l in 0..STAGES {
@@ -156,7 +185,13 @@ pub fn step_map_from(
             rhs[i][2 + j] = h * af[j];
         }
     }
-    // Gaussian elimination with partial pivoting.
+    (m, rhs)
+}
+
+/// Solves `m V = rhs` in place by Gaussian elimination with partial pivoting; `rhs` then holds
+/// V, one column per start. False (and `rhs` unusable) on a zero or non-finite pivot.
+#[inline(always)]
+fn solve_stages(m: &mut [[f64; STAGES]; STAGES], rhs: &mut [[f64; COLS]; STAGES]) -> bool {
     for col in 0..STAGES {
         let mut piv = col;
         for r in col + 1..STAGES {
@@ -170,10 +205,7 @@ pub fn step_map_from(
         }
         let d = m[col][col];
         if d == 0.0 || !d.is_finite() {
-            return StepMap {
-                r: Matrix2::from_element(f64::NAN),
-                p: [Vector2::from_element(f64::NAN); MAX_FORCES],
-            };
+            return false;
         }
         let inv = 1.0 / d;
         let (pivot_m, pivot_rhs) = (m[col], rhs[col]);
@@ -201,8 +233,22 @@ pub fn step_map_from(
             rhs[col][k] = s[k] * inv;
         }
     }
-    // rhs now holds V for each column. x1 = x0 + h Σ b_i (V_i, −k_i Q_i − c V_i + f_i) with
-    // Q = q0 + h a V; the starts are (1, 0), (0, 1) and zero for the forcings.
+    true
+}
+
+/// The step's end state for each column from the stage velocities V (`v`):
+/// x1 = x0 + h Σ b_i (V_i, −k_i Q_i − c V_i + f_i) with Q = q0 + h a V; the starts are (1, 0),
+/// (0, 1) and zero for the forcings. Returns (q1, v1) per column.
+#[inline(always)]
+fn advance(
+    tab: &Tableau,
+    c: f64,
+    h: f64,
+    ks: &[f64; STAGES],
+    f: &[[f64; MAX_FORCES]; STAGES],
+    v: &[[f64; COLS]; STAGES],
+) -> ([f64; COLS], [f64; COLS]) {
+    let a = &tab.a;
     let mut q0 = [0.0; COLS];
     let mut v0 = [0.0; COLS];
     q0[0] = 1.0;
@@ -212,27 +258,24 @@ pub fn step_map_from(
         let mut av = [0.0; COLS];
         for j in 0..STAGES {
             for k in 0..COLS {
-                av[k] += a[i][j] * rhs[j][k];
+                av[k] += a[i][j] * v[j][k];
             }
         }
         let mut fi = [0.0; COLS];
         fi[2..].copy_from_slice(&f[i]);
         for k in 0..COLS {
             let qi = q0[k] + h * av[k];
-            dq[k] += tab.b[i] * rhs[i][k];
-            dv[k] += tab.b[i] * (fi[k] - ks[i] * qi - c * rhs[i][k]);
+            dq[k] += tab.b[i] * v[i][k];
+            dv[k] += tab.b[i] * (fi[k] - ks[i] * qi - c * v[i][k]);
         }
     }
-    let col = |k: usize| Vector2::new(q0[k] + h * dq[k], v0[k] + h * dv[k]);
-    let (c0, c1) = (col(0), col(1));
-    let mut out = StepMap {
-        r: Matrix2::new(c0[0], c1[0], c0[1], c1[1]),
-        p: [Vector2::zeros(); MAX_FORCES],
-    };
-    for j in 0..nf {
-        out.p[j] = col(2 + j);
+    let mut q1 = [0.0; COLS];
+    let mut v1 = [0.0; COLS];
+    for k in 0..COLS {
+        q1[k] = q0[k] + h * dq[k];
+        v1[k] = v0[k] + h * dv[k];
     }
-    out
+    (q1, v1)
 }
 
 /// Integrates x′ = A x + F_j from `t0` over `n` equal steps of size `h`, starting every
