@@ -5,7 +5,9 @@
 #           and the wasm API's plain-Rust helpers)
 #   wasm    wasm-bindgen-test suites through wasm-pack (README, "wasm-pack"): tests/wasm_api.rs
 #           with `wasm-pack test --node`, tests/wasm_browser.rs with `--headless --chrome`
-#   e2e     build the lab (www/ and the dist/ download), type-check www/ (npm run check:js: tsc, ~2-3 s), then node --test:
+#   e2e     build the lab (www/ and the dist/ download), type-check www/ (npm run check:js: tsc, ~2-3 s), then node --test
+#           (two test files at a time, one per two cores on bigger machines, at most four;
+#           WINGBEAT_E2E_JOBS=N sets it):
 #           tests/js (unit + the real wasm in node) and tests/e2e (Playwright + Debian Chromium)
 # Installs what is missing first (scripts/ensure-tools.sh --browser [--wasm-pack]). Honours CARGO_TARGET_DIR.
 set -euo pipefail
@@ -46,7 +48,18 @@ e2e() {
   PKG_FROM_WWW=1 bash scripts/build-web.sh dist
   echo "== e2e: type-check the lab's JavaScript (tsc --noEmit over www/ against pkg/wingbeat.d.ts and uPlot's types)"
   npm run --silent check:js
-  node --test --test-concurrency=1 tests/js/ tests/e2e/
+  # Test files run side by side: a browser test waits on Chromium's renderer and GPU processes
+  # much of the time, so two at once pay even on 2 cores (2026-12-03, this 2-core machine, the same
+  # 417 tests: 1304 s one file at a time, 1061 s two at a time); with more cores, one file per two
+  # cores, at most four (WINGBEAT_E2E_JOBS=N overrides). Every file starts its own server on a free
+  # port and its own browser, and writes only files named after its own tests.
+  local jobs="${WINGBEAT_E2E_JOBS:-$(node -e 'const n = require("os").availableParallelism(); console.log(Math.max(2, Math.min(4, Math.floor(n / 2))))')}"
+  if ! [[ "$jobs" =~ ^[1-9][0-9]?$ ]]; then
+    echo "test-all: WINGBEAT_E2E_JOBS must be a whole number from 1 to 99 (got '$jobs')" >&2
+    exit 2
+  fi
+  echo "== e2e: node --test, $jobs test files at a time"
+  node --test --test-concurrency="$jobs" tests/js/ tests/e2e/
 }
 
 case "$what" in
