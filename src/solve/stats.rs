@@ -1,5 +1,5 @@
 //! One pass over a series for what the run checks and reports of it: its largest magnitude,
-//! its sum of squares and whether every value is finite, accumulated in eight interleaved
+//! its sum of squares and (from those two) whether every value is finite, accumulated in eight interleaved
 //! lanes (value i goes to lane i mod 8), so the loop vectorises and the sum is not one long
 //! chain of dependent additions. The lanes carry over from one slice to the next: a series fed
 //! in pieces (a period at a time, while its values are still in cache) gives the same bits as
@@ -12,8 +12,6 @@ const L: usize = 8;
 pub struct SeriesStats {
     max: [f64; L],
     sum: [f64; L],
-    /// Σ x·0 per lane: 0 while every value is finite, NaN after any non-finite one.
-    zero: [f64; L],
     len: usize,
 }
 
@@ -35,7 +33,6 @@ impl SeriesStats {
         // `f64::max` skips a NaN, as the lanes' comparison below does.
         self.max[k] = self.max[k].max(v.abs());
         self.sum[k] += v * v;
-        self.zero[k] += v * 0.0;
         self.len += 1;
     }
 
@@ -54,7 +51,6 @@ impl SeriesStats {
                 let a = c[k].abs();
                 self.max[k] = if a > self.max[k] { a } else { self.max[k] };
                 self.sum[k] += c[k] * c[k];
-                self.zero[k] += c[k] * 0.0;
             }
         }
         self.len += full;
@@ -75,9 +71,12 @@ impl SeriesStats {
         ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]))
     }
 
-    /// Whether every value seen is finite.
+    /// Whether every value seen is finite, read off the other two: an infinity is the largest
+    /// magnitude from then on (the lanes' maximum skips only NaNs), and a NaN makes its lane's
+    /// sum of squares NaN for good (the squares are never negative, so finite values alone can
+    /// overflow a sum to +∞ but never make it NaN).
     pub fn all_finite(&self) -> bool {
-        self.zero.iter().sum::<f64>() == 0.0
+        self.max_abs().is_finite() && !self.sum.iter().any(|s| s.is_nan())
     }
 
     /// Number of values seen.
@@ -138,6 +137,22 @@ mod tests {
             }
         }
         assert!(SeriesStats::of(&[f64::MAX, -f64::MAX, -0.0]).all_finite());
+        // Overflowed sums, infinities and NaNs together, in every lane.
+        for mix in [
+            [f64::MAX, f64::NAN],
+            [f64::NAN, f64::MAX],
+            [f64::INFINITY, f64::NAN],
+            [f64::NAN, f64::NEG_INFINITY],
+        ] {
+            for lane in 0..L {
+                let mut y = vec![1.0; lane];
+                y.extend(mix);
+                assert!(
+                    !SeriesStats::of(&y).all_finite(),
+                    "{mix:?} from lane {lane}"
+                );
+            }
+        }
         assert_eq!(SeriesStats::new().max_abs(), 0.0);
     }
 }
