@@ -125,7 +125,7 @@ pub fn step_map_from(
             p: [Vector2::from_element(f64::NAN); MAX_FORCES],
         };
     }
-    let (q1, v1) = advance(tab, c, h, ks, &f, &rhs);
+    let (q1, v1) = end_state(tab, c, h, ks, &f, &rhs);
     let col = |k: usize| Vector2::new(q1[k], v1[k]);
     let (c0, c1) = (col(0), col(1));
     let mut out = StepMap {
@@ -240,7 +240,7 @@ fn solve_stages(m: &mut [[f64; STAGES]; STAGES], rhs: &mut [[f64; COLS]; STAGES]
 /// x1 = x0 + h Σ b_i (V_i, −k_i Q_i − c V_i + f_i) with Q = q0 + h a V; the starts are (1, 0),
 /// (0, 1) and zero for the forcings. Returns (q1, v1) per column.
 #[inline(always)]
-fn advance(
+fn end_state(
     tab: &Tableau,
     c: f64,
     h: f64,

@@ -1,7 +1,7 @@
-//! One pass over a series for what the run checks and reports of it: its largest magnitude,
-//! its sum of squares and (from those two) whether every value is finite, accumulated in eight interleaved
-//! lanes (value i goes to lane i mod 8), so the loop vectorises and the sum is not one long
-//! chain of dependent additions. The lanes carry over from one slice to the next: a series fed
+//! One pass over a series for what the run checks and reports of it: its largest magnitude and
+//! its sum of squares (and from those two, whether every value is finite), accumulated in eight
+//! interleaved lanes (value i goes to lane i mod 8), so the loop vectorises and the sum is not one
+//! long chain of dependent additions. The lanes carry over from one slice to the next: a series fed
 //! in pieces (a period at a time, while its values are still in cache) gives the same bits as
 //! the whole series fed at once.
 
@@ -137,20 +137,25 @@ mod tests {
             }
         }
         assert!(SeriesStats::of(&[f64::MAX, -f64::MAX, -0.0]).all_finite());
-        // Overflowed sums, infinities and NaNs together, in every lane.
-        for mix in [
+        // Overflowed sums, infinities and NaNs together, from every lane, in neighbouring lanes
+        // and in the same lane (`gap` values apart).
+        for [first, second] in [
             [f64::MAX, f64::NAN],
             [f64::NAN, f64::MAX],
             [f64::INFINITY, f64::NAN],
             [f64::NAN, f64::NEG_INFINITY],
         ] {
             for lane in 0..L {
-                let mut y = vec![1.0; lane];
-                y.extend(mix);
-                assert!(
-                    !SeriesStats::of(&y).all_finite(),
-                    "{mix:?} from lane {lane}"
-                );
+                for gap in [1, L] {
+                    let mut y = vec![1.0; lane];
+                    y.push(first);
+                    y.extend(vec![1.0; gap - 1]);
+                    y.push(second);
+                    assert!(
+                        !SeriesStats::of(&y).all_finite(),
+                        "{first}, then {second} {gap} later, from lane {lane}"
+                    );
+                }
             }
         }
         assert_eq!(SeriesStats::new().max_abs(), 0.0);
