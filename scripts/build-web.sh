@@ -44,14 +44,23 @@ if [ "$dest" = dist ] && [ "${PKG_FROM_WWW:-0}" = 1 ] && [ -f www/pkg/wingbeat_b
   cp -Rp www/pkg "$dest/pkg"
 else
 # The same target directory for both: cargo keeps both builds' dependencies, and the second
-# build of the crate overwrites wingbeat.wasm, so each is taken by wasm-bindgen at once.
+# build of the crate overwrites wingbeat.wasm, so each is taken by wasm-bindgen at once. The full
+# module first: `npm test` has just compiled the crate with these features for the wasm test
+# suites (scripts/test-all.sh wasm; the same features resolve, Cargo.toml's serde_json line), so
+# in CI this build finds it up to date and only the live module is compiled here.
+cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web,render
+wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat "$wasm"
+# npm's wasm-opt is single-threaded and the full module is its longest job (≈ 2.5 min on a
+# 2-core machine): it runs while the live module compiles and is optimised.
+optimise "$dest/pkg/wingbeat_bg.wasm" &
+opt_full=$!
+trap 'kill "$opt_full" 2>/dev/null || true' EXIT
+
 cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web-live
 wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat_live "$wasm"
 optimise "$dest/pkg/wingbeat_live_bg.wasm"
-
-cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web,render
-wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat "$wasm"
-optimise "$dest/pkg/wingbeat_bg.wasm"
+wait "$opt_full"
+trap - EXIT
 fi
 
 mkdir -p "$dest/vendor"

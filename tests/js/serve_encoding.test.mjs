@@ -28,7 +28,7 @@ before(async () => {
   fs.writeFileSync(path.join(dir, 'index.html'), '<p>lab</p>');
   fs.writeFileSync(path.join(dir, 'style.css'), css);
   fs.writeFileSync(path.join(dir, 'img.png'), Buffer.alloc(4000, 7));
-  for (const f of compressible(dir)) precompress(f);
+  for (const f of compressible(dir)) await precompress(f);
   // b.js changes after its copies were written: they are stale.
   const old = new Date(Date.now() - 60_000);
   fs.utimesSync(path.join(dir, 'pkg', 'b.js.br'), old, old);
