@@ -100,7 +100,7 @@ export async function measure3d(target, opts = {}) {
   let page = target;
   let context = null;
   if (own) {
-    ({ page, context } = await openPage(target, opts.url, viewport));
+    ({ page, context } = await openPage(target, opts.url, viewport, { serviceWorkers: 'allow' }));
     if (opts.render === 'main')
       await page.addInitScript(() =>
         document.addEventListener('DOMContentLoaded', () => {

@@ -50,7 +50,7 @@ try {
   // Load-to-interactive.
   const loads = [];
   for (let i = 0; i < (process.argv.includes('--latency-only') ? 0 : 5); i++) {
-    const { page, context } = await openPage(env.browser, env.url);
+    const { page, context } = await openPage(env.browser, env.url, undefined, { serviceWorkers: 'allow' });
     await page.goto(env.url);
     await waitRenders(page, 1);
     loads.push(await page.evaluate(() => document.querySelector('wing-lab').lastTiming.end));
@@ -68,7 +68,7 @@ try {
     console.log(lt);
   }
 
-  const { page, context, problems } = await openPage(env.browser, env.url);
+  const { page, context, problems } = await openPage(env.browser, env.url, undefined, { serviceWorkers: 'allow' });
   await page.goto(env.url);
   await waitRenders(page, 1);
   if (!process.argv.includes('--latency-only')) {
@@ -192,7 +192,7 @@ try {
 
   if (process.argv.includes('--screenshot')) {
     // docs/lab.png: the first screen at 1280×800 (wing, sliders, responses with the beat).
-    const shot = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+    const shot = await openPage(env.browser, env.url, { width: 1280, height: 800 }, { serviceWorkers: 'allow' });
     await shot.page.goto(env.url);
     await waitRenders(shot.page, 1);
     await shot.page.waitForFunction(
@@ -216,7 +216,7 @@ try {
     await shot.page.waitForTimeout(300);
     await shot.page.locator('section.wl-wing3d').screenshot({ path: path.join(ROOT, 'docs', 'lab_wing3d.png') });
     // docs/lab_phone.png: the first screen of a phone.
-    const phone = await openPage(env.browser, env.url, { width: 390, height: 844 });
+    const phone = await openPage(env.browser, env.url, { width: 390, height: 844 }, { serviceWorkers: 'allow' });
     await phone.page.goto(env.url);
     await waitRenders(phone.page, 1);
     await phone.page.waitForFunction(
@@ -301,7 +301,12 @@ async function sliderLatency(env) {
   const render = process.env.LATENCY_RENDER || 'worker';
   const out = [];
   for (const sc of scenarios) {
-    const { page, context } = await openPage(env.browser, env.url + sc.query, { width: 1280, height: 800 });
+    const { page, context } = await openPage(
+      env.browser,
+      env.url + sc.query,
+      { width: 1280, height: 800 },
+      { serviceWorkers: 'allow' },
+    );
     if (render === 'main')
       await page.addInitScript(() =>
         document.addEventListener('DOMContentLoaded', () => {

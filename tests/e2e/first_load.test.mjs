@@ -24,7 +24,12 @@ const pageWasm = (/** @type {import('playwright-core').Request} */ r) =>
   new URL(r.url()).pathname.endsWith('.wasm') && !r.serviceWorker();
 
 test('without the full build: the paper case from the live build, a slider recomputes, the 3-D view says why it is missing', async () => {
-  const { page, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  const { page, context } = await openPage(
+    env.browser,
+    env.url,
+    { width: 1280, height: 800 },
+    { serviceWorkers: 'allow' },
+  );
   const asked = [];
   context.on('request', (r) => {
     if (pageWasm(r)) asked.push(new URL(r.url()).pathname);
@@ -70,7 +75,12 @@ test('without the full build: the paper case from the live build, a slider recom
 });
 
 test('with both builds: the live one is asked for first, each is downloaded once, the 3-D wing is drawn', async () => {
-  const { page, context, problems } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  const { page, context, problems } = await openPage(
+    env.browser,
+    env.url,
+    { width: 1280, height: 800 },
+    { serviceWorkers: 'allow' },
+  );
   /** @type {string[]} */
   const wasm = [];
   /** @type {string[]} script requests of the page and its workers (not the service worker's precache) */
@@ -110,7 +120,12 @@ test('with both builds: the live one is asked for first, each is downloaded once
 });
 
 test('a study at startup (modes=fe: the FE wing in the study worker) waits for the page’s full module: one download, and the worker is handed it', async () => {
-  const { page, context, problems } = await openPage(env.browser, env.url, { width: 1280, height: 800 });
+  const { page, context, problems } = await openPage(
+    env.browser,
+    env.url,
+    { width: 1280, height: 800 },
+    { serviceWorkers: 'allow' },
+  );
   /** @type {string[]} */
   const wasm = [];
   context.on('request', (r) => {

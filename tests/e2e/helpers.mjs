@@ -79,9 +79,23 @@ export async function labHelpers(context) {
   });
 }
 
-/** A page that records console errors, page errors, failed and off-host requests and dialogs. */
-export async function openPage(browser, _url, viewport = { width: 1280, height: 720 }) {
-  const context = await browser.newContext({ viewport, acceptDownloads: true });
+/**
+ * A page that records console errors, page errors, failed and off-host requests and dialogs.
+ * The lab's service worker (the offline copy, www/sw.js) is blocked unless a test asks for it
+ * with `{ serviceWorkers: 'allow' }`: on every first visit it downloads the whole lab (≈ 6 MB) into
+ * the cache, which is what first_load, offline, precache and sandbox test and ≈ 13 % of the
+ * browser's CPU in a test file that opens many fresh pages (2026-12-03, experiments.test.mjs).
+ * @param {import('playwright-core').Browser} browser
+ * @param {string} _url
+ * @param {{ width: number, height: number }} [viewport]
+ * @param {{ serviceWorkers?: 'allow' | 'block' }} [opts]
+ */
+export async function openPage(browser, _url, viewport = { width: 1280, height: 720 }, opts = {}) {
+  const context = await browser.newContext({
+    viewport,
+    acceptDownloads: true,
+    serviceWorkers: opts.serviceWorkers ?? 'block',
+  });
   await labHelpers(context);
   const page = await context.newPage();
   const problems = [];

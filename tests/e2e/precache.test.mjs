@@ -48,7 +48,7 @@ test('first and second visit: no failed or missing request (page or service work
   server.on('request', (req, res) =>
     res.on('finish', () => log.push({ path: String(req.url), status: res.statusCode })),
   );
-  const { context, page, problems } = await openPage(env.browser, url);
+  const { context, page, problems } = await openPage(env.browser, url, undefined, { serviceWorkers: 'allow' });
   try {
     await page.goto(url + 'index.html');
     await waitRenders(page, 1);

@@ -83,7 +83,7 @@ test('allow-scripts allow-same-origin: Chromium warns, and the frame can reach t
     ['two origins', `${course.url}two-origins.html`],
     ['one origin', null],
   ]) {
-    const { context, page: p } = await openPage(env.browser, lab.url);
+    const { context, page: p } = await openPage(env.browser, lab.url, undefined, { serviceWorkers: 'allow' });
     const warnings = [];
     p.on('console', (m) => {
       if (WARNING.test(m.text())) warnings.push(`${m.type()}: ${m.text()}`);
@@ -134,7 +134,7 @@ test('allow-scripts alone (lab host with CORS): the paper lab runs; storage, ser
     path.join(dir, 'scripts-only.html'),
     page(`${lab.url}index.html?embed=1&panels=controls,numbers,time`, 'allow-scripts'),
   );
-  const { context, page: p } = await openPage(env.browser, course.url);
+  const { context, page: p } = await openPage(env.browser, course.url, undefined, { serviceWorkers: 'allow' });
   const warnings = [];
   p.on('console', (m) => {
     if (WARNING.test(m.text())) warnings.push(m.text());

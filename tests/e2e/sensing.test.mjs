@@ -333,7 +333,12 @@ test('the 3-D wing coloured by detectability, with the K best sensors as numbere
   // the strain colouring (whole-run strain map) at a fixed instant, for comparison
   await page.evaluate(() => document.querySelector('wing-lab').wing3d.setTime(0.3));
   await setColour('5');
-  const shot = () => page.locator(`wing-lab ${w3} canvas.wl-w3-canvas`).screenshot();
+  // After the view has settled: a new wing (the FE result arriving late on a busy machine) is
+  // drawn on a new canvas that replaces the old one.
+  const shot = async () => {
+    await page.evaluate(() => document.querySelector('wing-lab').wing3d.settled());
+    return page.locator(`wing-lab ${w3} canvas.wl-w3-canvas`).screenshot();
+  };
   const strainShot = await shot();
 
   // the sensing panel computes when on screen; its button shows the map on the 3-D wing
