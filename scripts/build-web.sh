@@ -54,7 +54,8 @@ wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat "$wasm"
 # 2-core machine): it runs while the live module compiles and is optimised.
 optimise "$dest/pkg/wingbeat_bg.wasm" &
 opt_full=$!
-trap 'kill "$opt_full" 2>/dev/null || true' EXIT
+# (a failed build stops it: the subshell and its wasm-opt)
+trap 'pkill -P "$opt_full" 2>/dev/null; kill "$opt_full" 2>/dev/null || true' EXIT
 
 cargo build --release --target wasm32-unknown-unknown --lib --no-default-features --features web-live
 wasm-bindgen --target web --out-dir "$dest/pkg" --out-name wingbeat_live "$wasm"
