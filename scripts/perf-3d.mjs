@@ -20,7 +20,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
-import { setup, openPage, waitRenders, OUT, CHROMIUM, ARGS } from '../tests/e2e/helpers.mjs';
+import { setup, openPage, WITH_SERVICE_WORKER, waitRenders, OUT, CHROMIUM, ARGS } from '../tests/e2e/helpers.mjs';
 
 /** Chromium flags under which WebGPU renders on SwiftShader (TOOLCHAIN.md; other subsets draw blank). */
 export const WEBGPU_FLAGS = [
@@ -100,7 +100,7 @@ export async function measure3d(target, opts = {}) {
   let page = target;
   let context = null;
   if (own) {
-    ({ page, context } = await openPage(target, opts.url, viewport, { serviceWorkers: 'allow' }));
+    ({ page, context } = await openPage(target, opts.url, viewport, WITH_SERVICE_WORKER));
     if (opts.render === 'main')
       await page.addInitScript(() =>
         document.addEventListener('DOMContentLoaded', () => {

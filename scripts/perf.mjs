@@ -27,7 +27,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import os from 'node:os';
-import { setup, openPage, waitRenders, ROOT, OUT } from '../tests/e2e/helpers.mjs';
+import { setup, openPage, WITH_SERVICE_WORKER, waitRenders, ROOT, OUT } from '../tests/e2e/helpers.mjs';
 import { measure3d } from './perf-3d.mjs';
 import { measureLoad, loadTable } from './perf-load.mjs';
 
@@ -50,7 +50,7 @@ try {
   // Load-to-interactive.
   const loads = [];
   for (let i = 0; i < (process.argv.includes('--latency-only') ? 0 : 5); i++) {
-    const { page, context } = await openPage(env.browser, env.url, undefined, { serviceWorkers: 'allow' });
+    const { page, context } = await openPage(env.browser, env.url, undefined, WITH_SERVICE_WORKER);
     await page.goto(env.url);
     await waitRenders(page, 1);
     loads.push(await page.evaluate(() => document.querySelector('wing-lab').lastTiming.end));
@@ -68,7 +68,7 @@ try {
     console.log(lt);
   }
 
-  const { page, context, problems } = await openPage(env.browser, env.url, undefined, { serviceWorkers: 'allow' });
+  const { page, context, problems } = await openPage(env.browser, env.url, undefined, WITH_SERVICE_WORKER);
   await page.goto(env.url);
   await waitRenders(page, 1);
   if (!process.argv.includes('--latency-only')) {
@@ -192,7 +192,7 @@ try {
 
   if (process.argv.includes('--screenshot')) {
     // docs/lab.png: the first screen at 1280×800 (wing, sliders, responses with the beat).
-    const shot = await openPage(env.browser, env.url, { width: 1280, height: 800 }, { serviceWorkers: 'allow' });
+    const shot = await openPage(env.browser, env.url, { width: 1280, height: 800 }, WITH_SERVICE_WORKER);
     await shot.page.goto(env.url);
     await waitRenders(shot.page, 1);
     await shot.page.waitForFunction(
@@ -216,7 +216,7 @@ try {
     await shot.page.waitForTimeout(300);
     await shot.page.locator('section.wl-wing3d').screenshot({ path: path.join(ROOT, 'docs', 'lab_wing3d.png') });
     // docs/lab_phone.png: the first screen of a phone.
-    const phone = await openPage(env.browser, env.url, { width: 390, height: 844 }, { serviceWorkers: 'allow' });
+    const phone = await openPage(env.browser, env.url, { width: 390, height: 844 }, WITH_SERVICE_WORKER);
     await phone.page.goto(env.url);
     await waitRenders(phone.page, 1);
     await phone.page.waitForFunction(
@@ -305,7 +305,7 @@ async function sliderLatency(env) {
       env.browser,
       env.url + sc.query,
       { width: 1280, height: 800 },
-      { serviceWorkers: 'allow' },
+      WITH_SERVICE_WORKER,
     );
     if (render === 'main')
       await page.addInitScript(() =>

@@ -75,13 +75,14 @@ if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.me
   // side by side (the largest first, so the longest job starts at once).
   const sizes = await Promise.all(
     files
-      .map((f) => ({ f, size: fs.statSync(f).size }))
-      .sort((a, b) => b.size - a.size)
-      .map(({ f }) => {
-        const t = fs.statSync(f).mtimeMs;
-        const fresh = ENCODINGS.every(([suffix]) => fs.existsSync(f + suffix) && fs.statSync(f + suffix).mtimeMs >= t);
+      .map((f) => ({ f, st: fs.statSync(f) }))
+      .sort((a, b) => b.st.size - a.st.size)
+      .map(({ f, st }) => {
+        const fresh = ENCODINGS.every(
+          ([suffix]) => fs.existsSync(f + suffix) && fs.statSync(f + suffix).mtimeMs >= st.mtimeMs,
+        );
         return fresh
-          ? { raw: fs.statSync(f).size, br: fs.statSync(f + '.br').size, gz: fs.statSync(f + '.gz').size }
+          ? { raw: st.size, br: fs.statSync(`${f}.br`).size, gz: fs.statSync(`${f}.gz`).size }
           : precompress(f);
       }),
   );

@@ -8,7 +8,7 @@
 //   node --test --test-concurrency=1 tests/e2e/first_load.test.mjs   (after scripts/build-web.sh www)
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { setup, openPage, waitRenders, renders, plotPrint, waitWing3d } from './helpers.mjs';
+import { setup, openPage, WITH_SERVICE_WORKER, waitRenders, renders, plotPrint, waitWing3d } from './helpers.mjs';
 
 let env;
 before(async () => {
@@ -24,12 +24,7 @@ const pageWasm = (/** @type {import('playwright-core').Request} */ r) =>
   new URL(r.url()).pathname.endsWith('.wasm') && !r.serviceWorker();
 
 test('without the full build: the paper case from the live build, a slider recomputes, the 3-D view says why it is missing', async () => {
-  const { page, context } = await openPage(
-    env.browser,
-    env.url,
-    { width: 1280, height: 800 },
-    { serviceWorkers: 'allow' },
-  );
+  const { page, context } = await openPage(env.browser, env.url, { width: 1280, height: 800 }, WITH_SERVICE_WORKER);
   const asked = [];
   context.on('request', (r) => {
     if (pageWasm(r)) asked.push(new URL(r.url()).pathname);
@@ -79,7 +74,7 @@ test('with both builds: the live one is asked for first, each is downloaded once
     env.browser,
     env.url,
     { width: 1280, height: 800 },
-    { serviceWorkers: 'allow' },
+    WITH_SERVICE_WORKER,
   );
   /** @type {string[]} */
   const wasm = [];
@@ -124,7 +119,7 @@ test('a study at startup (modes=fe: the FE wing in the study worker) waits for t
     env.browser,
     env.url,
     { width: 1280, height: 800 },
-    { serviceWorkers: 'allow' },
+    WITH_SERVICE_WORKER,
   );
   /** @type {string[]} */
   const wasm = [];

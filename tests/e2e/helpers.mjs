@@ -79,10 +79,13 @@ export async function labHelpers(context) {
   });
 }
 
+/** openPage's options for a test about the service worker, or a measurement of a real visit. */
+export const WITH_SERVICE_WORKER = Object.freeze({ serviceWorkers: /** @type {'allow'} */ ('allow') });
+
 /**
  * A page that records console errors, page errors, failed and off-host requests and dialogs.
  * The lab's service worker (the offline copy, www/sw.js) is blocked unless a test asks for it
- * with `{ serviceWorkers: 'allow' }`: on every first visit it downloads the whole lab (≈ 6 MB) into
+ * with `WITH_SERVICE_WORKER` (`{ serviceWorkers: 'allow' }`): on every first visit it downloads the whole lab (≈ 6 MB) into
  * the cache, which is what first_load, offline, precache and sandbox test and ≈ 13 % of the
  * browser's CPU in a test file that opens many fresh pages (2026-12-03, experiments.test.mjs).
  * @param {import('playwright-core').Browser} browser

@@ -12,7 +12,7 @@ import path from 'node:path';
 import fs from 'node:fs';
 import { spawn, spawnSync } from 'node:child_process';
 import { pathToFileURL } from 'node:url';
-import { setup, openPage, waitRenders, OUT, ROOT } from './helpers.mjs';
+import { setup, openPage, WITH_SERVICE_WORKER, waitRenders, OUT, ROOT } from './helpers.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 
 /** @type {Awaited<ReturnType<typeof setup>>} */
@@ -48,7 +48,7 @@ async function poll(page, fn, timeout = 15000) {
 test('after one visit the lab and the FE wing work with the network blocked', async () => {
   // A server of its own, so that stopping it blocks only this test.
   const { server, url } = await startServer(path.join(process.cwd(), 'www'), 0);
-  const { context, page } = await openPage(env.browser, url, undefined, { serviceWorkers: 'allow' });
+  const { context, page } = await openPage(env.browser, url, undefined, WITH_SERVICE_WORKER);
   /** @type {Set<string>} */
   const online = new Set();
   page.on('request', (r) => {
@@ -149,7 +149,7 @@ test('after one visit the lab and the FE wing work with the network blocked', as
 });
 
 test('?offline=0 registers no service worker and removes an earlier one', async () => {
-  const { context, page } = await openPage(env.browser, env.url, undefined, { serviceWorkers: 'allow' });
+  const { context, page } = await openPage(env.browser, env.url, undefined, WITH_SERVICE_WORKER);
   try {
     await page.goto(env.url + 'index.html?offline=0');
     await waitRenders(page, 1);
@@ -195,7 +195,7 @@ test('?offline=0 registers no service worker and removes an earlier one', async 
 });
 
 test('file:// in Chromium: the lab does not start (module import, fetch and worker refused), nothing is registered', async () => {
-  const { context, page } = await openPage(env.browser, env.url, undefined, { serviceWorkers: 'allow' });
+  const { context, page } = await openPage(env.browser, env.url, undefined, WITH_SERVICE_WORKER);
   /** @type {string[]} */
   const errors = [];
   page.on('console', (m) => {
@@ -293,7 +293,7 @@ test('the single-folder download (dist/) runs from node serve.mjs and from pytho
       dist,
       /** @type {RegExp} */ (pattern),
     );
-    const { context, page } = await openPage(env.browser, srv.url, undefined, { serviceWorkers: 'allow' });
+    const { context, page } = await openPage(env.browser, srv.url, undefined, WITH_SERVICE_WORKER);
     try {
       await page.goto(srv.url);
       await waitRenders(page, 1);

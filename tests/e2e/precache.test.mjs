@@ -8,7 +8,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { setup, openPage, waitRenders, ROOT } from './helpers.mjs';
+import { setup, openPage, WITH_SERVICE_WORKER, waitRenders, ROOT } from './helpers.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 import { precacheFiles } from '../../scripts/precache-manifest.mjs';
 
@@ -48,7 +48,7 @@ test('first and second visit: no failed or missing request (page or service work
   server.on('request', (req, res) =>
     res.on('finish', () => log.push({ path: String(req.url), status: res.statusCode })),
   );
-  const { context, page, problems } = await openPage(env.browser, url, undefined, { serviceWorkers: 'allow' });
+  const { context, page, problems } = await openPage(env.browser, url, undefined, WITH_SERVICE_WORKER);
   try {
     await page.goto(url + 'index.html');
     await waitRenders(page, 1);

@@ -13,7 +13,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { setup, openPage, OUT, ROOT } from './helpers.mjs';
+import { setup, openPage, WITH_SERVICE_WORKER, OUT, ROOT } from './helpers.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 
 const WWW = path.join(ROOT, process.env.LAB_ROOT || 'www');
@@ -83,7 +83,7 @@ test('allow-scripts allow-same-origin: Chromium warns, and the frame can reach t
     ['two origins', `${course.url}two-origins.html`],
     ['one origin', null],
   ]) {
-    const { context, page: p } = await openPage(env.browser, lab.url, undefined, { serviceWorkers: 'allow' });
+    const { context, page: p } = await openPage(env.browser, lab.url, undefined, WITH_SERVICE_WORKER);
     const warnings = [];
     p.on('console', (m) => {
       if (WARNING.test(m.text())) warnings.push(`${m.type()}: ${m.text()}`);
@@ -134,7 +134,7 @@ test('allow-scripts alone (lab host with CORS): the paper lab runs; storage, ser
     path.join(dir, 'scripts-only.html'),
     page(`${lab.url}index.html?embed=1&panels=controls,numbers,time`, 'allow-scripts'),
   );
-  const { context, page: p } = await openPage(env.browser, course.url, undefined, { serviceWorkers: 'allow' });
+  const { context, page: p } = await openPage(env.browser, course.url, undefined, WITH_SERVICE_WORKER);
   const warnings = [];
   p.on('console', (m) => {
     if (WARNING.test(m.text())) warnings.push(m.text());
