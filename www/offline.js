@@ -70,6 +70,34 @@ function localStore() {
   }
 }
 
+/** How long the opt-out waits for the worker to confirm it deleted its copy. */
+const FORGET_TIMEOUT_MS = 3000;
+
+/**
+ * Tells a service worker of this lab to drop its copy and never reopen it (sw.js, message
+ * `wingbeat:forget`); resolves when it answers, or after FORGET_TIMEOUT_MS (a worker of an older
+ * build does not answer). Never rejects.
+ * @param {ServiceWorker | null} worker
+ * @returns {Promise<void>}
+ */
+function forget(worker) {
+  if (!worker) return Promise.resolve();
+  return new Promise((resolve) => {
+    const channel = new MessageChannel();
+    const timer = setTimeout(resolve, FORGET_TIMEOUT_MS);
+    channel.port1.onmessage = () => {
+      clearTimeout(timer);
+      resolve();
+    };
+    try {
+      worker.postMessage({ type: 'wingbeat:forget' }, [channel.port2]);
+    } catch {
+      clearTimeout(timer);
+      resolve();
+    }
+  });
+}
+
 /**
  * Registers ./sw.js (next to this file) when supported and not opted out; removes this lab's
  * registration and caches when opted out. Never throws; resolves when done (callers need not wait).
@@ -94,6 +122,9 @@ export async function registerOffline() {
     if (why) {
       const reg = await navigator.serviceWorker.getRegistration(scope);
       if (reg && reg.scope === scope) {
+        // First the worker stops using its copy (it still serves pages it controls until they
+        // unload, and would otherwise reopen a cache deleted under it), then it goes.
+        await forget(reg.active || reg.waiting || reg.installing);
         await reg.unregister();
         if (typeof caches !== 'undefined') {
           for (const name of await caches.keys())

@@ -12,6 +12,10 @@
 //     in NET_TIMEOUT_MS; cross-origin requests, other methods and range requests are left alone
 //     (never cached).
 //   - activate: deletes this scope's caches of other builds, then takes control of open pages.
+//   - message `{ type: 'wingbeat:forget' }` (offline.js, on opt-out): from then on this worker
+//     never opens its cache again, deletes it, and answers on the message's port. Without it a
+//     fetch of a page it still controls could reopen (and so recreate) the cache just after the
+//     page deleted it: caches.has() and caches.open() are two steps.
 // Cache name: `wingbeat:<scope>:<BUILD>`; `npm run build` (scripts/build-web.sh dist) writes the
 // build stamp into BUILD, so a new download replaces the old copy. A classic script (not a
 // module) so that every browser with service workers can run it. docs/embedding.md, `offline`.
@@ -21,7 +25,7 @@
  * @typedef {Event & { waitUntil(p: Promise<unknown>): void }} ExtendableEvt
  * @typedef {ExtendableEvt & { request: Request, respondWith(r: Promise<Response> | Response): void }} FetchEvt
  * @typedef {{
- *   addEventListener(type: 'install' | 'activate', fn: (e: ExtendableEvt) => void): void,
+ *   addEventListener(type: 'install' | 'activate' | 'message', fn: (e: ExtendableEvt) => void): void,
  *   addEventListener(type: 'fetch', fn: (e: FetchEvt) => void): void,
  *   skipWaiting(): Promise<void>, clients: { claim(): Promise<void> }, registration: { scope: string },
  *   location: Location, caches: CacheStorage, fetch: typeof fetch,
@@ -40,6 +44,8 @@
   const sw = /** @type {SwScope} */ (/** @type {unknown} */ (self));
   const SCOPE = sw.registration.scope;
   const CACHE = `wingbeat:${SCOPE}:${BUILD}`;
+  /** Set by the opt-out message: the copy is gone and must not come back. */
+  let forgotten = false;
   /** Entry files, relative to the scope. Install fails (and is retried) if one of ESSENTIAL fails. */
   const ESSENTIAL = [
     './',
@@ -145,10 +151,12 @@
     // The copy is used (and refreshed) only while it exists: after an opt-out deleted it
     // (offline.js), the page this worker still controls must not bring it back.
     /** @type {Promise<Cache | null>} */
-    const cache = caches.has(CACHE).then(
-      (has) => (has ? caches.open(CACHE) : null),
-      () => null,
-    );
+    const cache = forgotten
+      ? Promise.resolve(null)
+      : caches.has(CACHE).then(
+          (has) => (has && !forgotten ? caches.open(CACHE) : null),
+          () => null,
+        );
     /** @type {Promise<unknown>[]} */
     const puts = [];
     const net = fetch(req).then((res) => {
@@ -181,6 +189,20 @@
     );
     return { response, done };
   }
+
+  sw.addEventListener('message', (e) => {
+    const data = /** @type {MessageEvent} */ (/** @type {unknown} */ (e)).data;
+    const port = /** @type {MessageEvent} */ (/** @type {unknown} */ (e)).ports?.[0];
+    if (!data || data.type !== 'wingbeat:forget') return;
+    forgotten = true;
+    e.waitUntil(
+      (async () => {
+        for (const name of await caches.keys()) if (name.startsWith(`wingbeat:${SCOPE}:`)) await caches.delete(name);
+      })()
+        .catch(() => {})
+        .then(() => port?.postMessage({ type: 'wingbeat:forgotten' })),
+    );
+  });
 
   sw.addEventListener('fetch', (e) => {
     const req = e.request;
