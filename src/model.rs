@@ -187,7 +187,7 @@ pub fn stiffness_force(coefficient: &[f64], q: &[f64]) -> Vec<f64> {
 /// The part of a rotation state that Eq. 13 reads, the same for every mode: Ω and Ω̇ in the
 /// wing frame (rad/s, rad/s²), the yaw γ (rad) and its rate γ̇ (rad/s). Worked out once per
 /// instant ([`Rotation::of`]) and shared by the modes ([`coefficients_of`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Rotation {
     /// Ω (rad/s).
     pub omega: [f64; 3],

@@ -14,9 +14,9 @@
 //! The body rate is given either in body axes (turned into the wing frame by Rᵀ, as the
 //! periodic runs do) or directly in wing-frame components, as the published model adds it.
 
-use crate::disturbance::{Disturbance, DisturbanceSpec};
+use crate::disturbance::{Disturbance, DisturbanceSpec, Phasors};
 use crate::kinematics::{Compiled, Kinematics, RateState};
-use crate::model::{coefficients, Mode};
+use crate::model::{coefficients_of, Mode, Rotation};
 use crate::solve::gauss::{step_map_from, Tableau, STAGES};
 use crate::solve::propagator::omega_h_for;
 use crate::solve::MAX_FORCES;
@@ -159,6 +159,58 @@ pub struct CompiledTransient {
     pub body: [Option<Disturbance>; 3],
 }
 
+/// The disturbances' phasors at each Gauss stage time of a run's steps t0 + c_l h, stepped by h
+/// from one step to the next ([`crate::disturbance::Phasors`]) and re-anchored to exact sines
+/// every [`StageClock::ANCHOR_EVERY`] steps at most: the 15 sines a disturbance sums cost four
+/// multiplications each per stage instead of a sine and a cosine.
+#[derive(Clone, Debug)]
+pub struct StageClock {
+    /// Per stage, per axis (α, β, γ, body x, y, z): the phasors of that axis's disturbance.
+    stages: Vec<[Option<Phasors>; 6]>,
+}
+
+impl StageClock {
+    /// Most steps between exact re-anchorings (each step rounds the phasors by about 2ε).
+    pub const ANCHOR_EVERY: usize = 64;
+
+    /// The clock at the stage times `t0 + c_l h` of `kin`'s disturbances, stepping by `h`.
+    pub fn new(kin: &CompiledTransient, c: &[f64], t0: f64, h: f64) -> Self {
+        StageClock {
+            stages: c
+                .iter()
+                .map(|cl| {
+                    let mut it = kin.disturbances();
+                    std::array::from_fn(|_| {
+                        it.next()
+                            .and_then(|d| d.as_ref())
+                            .map(|d| d.phasors(t0 + cl * h, h))
+                    })
+                })
+                .collect(),
+        }
+    }
+
+    /// Moves every stage on by one step.
+    pub fn advance(&mut self) {
+        self.stages
+            .iter_mut()
+            .flatten()
+            .flatten()
+            .for_each(Phasors::advance);
+    }
+
+    /// Sets every stage to the exact values at `t0 + c_l h`.
+    pub fn anchor(&mut self, kin: &CompiledTransient, c: &[f64], t0: f64, h: f64) {
+        for (stage, cl) in self.stages.iter_mut().zip(c) {
+            for (ph, d) in stage.iter_mut().zip(kin.disturbances()) {
+                if let (Some(ph), Some(d)) = (ph, d) {
+                    d.anchor(ph, t0 + cl * h);
+                }
+            }
+        }
+    }
+}
+
 /// The start-up ramp σ(t) = u³ / (10 + u³), u = ω_d t, and its first two time derivatives.
 pub fn startup_ramp(t: f64, wd: f64) -> (f64, f64, f64) {
     if t <= 0.0 {
@@ -188,6 +240,29 @@ impl CompiledTransient {
     /// in body axes; a wing-frame rate v is stored as R v with derivative R (Ω_wing × v + v̇), so
     /// that the wing frame turns with exactly Ω_wing + v.
     pub fn state(&self, t: f64) -> RateState {
+        self.state_from(t, |_, d| d.eval(t))
+    }
+
+    /// [`CompiledTransient::state`] reading the stage `stage` of `clock` for the disturbances
+    /// (their sines stepped, not computed); within a few ε of `state(t)` when the clock is at t.
+    pub fn state_clocked(&self, t: f64, clock: &StageClock, stage: usize) -> RateState {
+        self.state_from(t, |axis, d| match &clock.stages[stage][axis] {
+            Some(ph) => d.eval_phasors(t, ph),
+            None => d.eval(t),
+        })
+    }
+
+    /// The disturbances in axis order (α, β, γ, then the body rate's x, y, z).
+    fn disturbances(&self) -> impl Iterator<Item = &Option<Disturbance>> {
+        self.angles.iter().chain(&self.body)
+    }
+
+    /// The state at t with each disturbance's (angle, rate, rate_dot) from `dist(axis, d)`.
+    fn state_from(
+        &self,
+        t: f64,
+        dist: impl Fn(usize, &Disturbance) -> (f64, f64, f64),
+    ) -> RateState {
         let mut s = self.flapping.state(t);
         let (sig, dsig, ddsig) = if self.ramp {
             startup_ramp(t, self.flapping.wd)
@@ -199,13 +274,14 @@ impl CompiledTransient {
             (&mut s.beta, &mut s.beta_dot, &mut s.beta_ddot),
             (&mut s.gamma, &mut s.gamma_dot, &mut s.gamma_ddot),
         ];
-        for ((a, ad, add), dist) in angles.into_iter().zip(&self.angles) {
+        for (axis, ((a, ad, add), disturbance)) in angles.into_iter().zip(&self.angles).enumerate()
+        {
             let (v, d, dd) = (*a, *ad, *add);
             *a = v * sig;
             *ad = d * sig + v * dsig;
             *add = dd * sig + 2.0 * d * dsig + v * ddsig;
-            if let Some(x) = dist {
-                let (angle, rate, rate_dot) = x.eval(t);
+            if let Some(x) = disturbance {
+                let (angle, rate, rate_dot) = dist(axis, x);
                 *a += angle;
                 *ad += rate;
                 *add += rate_dot;
@@ -224,7 +300,7 @@ impl CompiledTransient {
             v[i] = self.body_rate[i] * f;
             vd[i] = self.body_rate[i] * fd;
             if let Some(x) = &self.body[i] {
-                let (_, rate, rate_dot) = x.eval(t);
+                let (_, rate, rate_dot) = dist(3 + i, x);
                 v[i] += rate;
                 vd[i] += rate_dot;
             }
@@ -384,7 +460,10 @@ pub fn run(
         .map(|_| std::array::from_fn(|_| Vec::with_capacity(n)))
         .collect();
     let damping: Vec<f64> = modes.iter().map(|md| 2.0 * md.zeta * md.omega()).collect();
-    let mut states = [RateState::default(); STAGES];
+    // The rotation at each stage time, worked out once for all modes (the same bits as per mode).
+    let mut states = [Rotation::default(); STAGES];
+    let mut clock = StageClock::new(kin, &tab.c, 0.0, h);
+    let mut since_anchor = 0;
     for i in 0..n {
         for k in 0..nm {
             for j in 0..MAX_FORCES {
@@ -396,14 +475,22 @@ pub fn run(
         }
         for s in 0..m {
             let t0 = i as f64 * dt_s + s as f64 * h;
-            for (st, c) in states.iter_mut().zip(tab.c) {
-                *st = kin.state(t0 + c * h);
+            // Exact at each sample's first step (and at least every ANCHOR_EVERY steps), stepped
+            // in between.
+            if s == 0 || since_anchor >= StageClock::ANCHOR_EVERY {
+                clock.anchor(kin, &tab.c, t0, h);
+                since_anchor = 0;
             }
+            for (l, (st, c)) in states.iter_mut().zip(tab.c).enumerate() {
+                *st = Rotation::of(&kin.state_clocked(t0 + c * h, &clock, l));
+            }
+            clock.advance();
+            since_anchor += 1;
             for k in 0..nm {
                 let mut ks = [0.0; STAGES];
                 let mut fs = [[0.0; MAX_FORCES]; STAGES];
                 for (l, st) in states.iter().enumerate() {
-                    let c = coefficients(&modes[k], st);
+                    let c = coefficients_of(&modes[k], st);
                     ks[l] = c.stiffness;
                     fs[l] = [c.euler, c.centrifugal, c.coriolis, c.total_force()];
                 }

@@ -8,7 +8,7 @@
 use super::{AeroConfig, AeroWing, FrameState};
 use crate::error::{Result, WingbeatError};
 use crate::kinematics::Compiled;
-use crate::model::{coefficients, stiffness_coefficient, Mode};
+use crate::model::{coefficients_of, stiffness_coefficient, Mode, Rotation};
 use crate::solve::coupled::CoupledOde;
 use crate::solve::ModalOde;
 use crate::transient::CompiledTransient;
@@ -311,8 +311,10 @@ impl CoupledOde for AirOde<'_> {
         }
         if self.forces {
             let mut raw = [[0.0; 5]; crate::model::MAX_MODES];
+            // The rotation once for every mode (the same bits as per mode).
+            let rot = Rotation::of(&s);
             for k in 0..n {
-                let co = coefficients(&self.modes[k], &s);
+                let co = coefficients_of(&self.modes[k], &rot);
                 raw[k] = [
                     co.euler,
                     co.centrifugal,
