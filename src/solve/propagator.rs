@@ -334,7 +334,9 @@ impl DenseMap {
     /// Φ row-major and p_j (q, q̇) at phase `tau` ∈ [0, span].
     pub fn eval(&self, tau: f64) -> [f64; 4 + 2 * MAX_FORCES] {
         let x = tau / self.h;
-        let k = (x.floor().max(0.0) as usize).min(self.intervals - 1);
+        // Truncation (one instruction; NaN goes to 0), then negatives to 0: floor(x).max(0)
+        // without a library call.
+        let k = ((x as i64).max(0) as usize).min(self.intervals - 1);
         let x = x - k as f64;
         let vals = &self.values[k];
         let mut lw = [0.0; DENSE_DEGREE + 1];
@@ -626,13 +628,13 @@ pub fn propagate_responses_in<O: LinearOde + ?Sized>(
         let mut i = 0;
         while i < n {
             let t = i as f64 * dt;
-            let k = (t / period).floor();
+            let k = whole_periods(t, period);
             state.step_to(k as u64, &map, nf);
             // Samples of this period, their phase tables, then the columns.
             vals.clear();
             while i < n {
                 let t = i as f64 * dt;
-                let kk = (t / period).floor();
+                let kk = whole_periods(t, period);
                 if kk != k {
                     break;
                 }
@@ -673,6 +675,12 @@ pub fn propagate_responses_in<O: LinearOde + ?Sized>(
         dense: used_dense,
         homogeneous: pp.and_then(|p| homogeneous_samples(ode, &map, p)),
     })
+}
+
+/// ⌊t / period⌋ for t ≥ 0 (a sample time), by truncation: the same value as `floor`, which is
+/// a library call on the baseline x86-64 target and ran once per sample and mode.
+fn whole_periods(t: f64, period: f64) -> f64 {
+    ((t / period) as i64) as f64
 }
 
 /// Whether every value of `x` is finite: x·0 is 0 for a finite x and NaN otherwise, summed
