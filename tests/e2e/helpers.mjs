@@ -124,10 +124,15 @@ export async function openPage(browser, _url, viewport = { width: 1280, height: 
   return { context, page, problems };
 }
 
-/** Waits until the lab `sel` has rendered at least `n` times. */
+/**
+ * Waits until the lab `sel` has rendered at least `n` times: up to 60 s. (ownwing.test.mjs's
+ * 390×844 test, which waits for a 6-FE-mode result under edited measured kinematics, passes in
+ * 12.5 s on this 2-core machine alone and timed out at the former 20 s while two builds ran beside
+ * it, 2026-12-03; a passing test never waits longer than its render.)
+ */
 export async function waitRenders(page, n = 1, sel = 'wing-lab') {
   await page.waitForFunction(([s, k]) => Number(document.querySelector(s)?.dataset.renders || 0) >= k, [sel, n], {
-    timeout: 20000,
+    timeout: 60000,
   });
 }
 
