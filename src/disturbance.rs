@@ -225,27 +225,25 @@ impl Disturbance {
     /// [`Disturbance::angle`], [`Disturbance::rate`] and [`Disturbance::rate_dot`] at t from one
     /// sine and cosine per component (rad, rad/s, rad/s²).
     pub fn eval(&self, t: f64) -> (f64, f64, f64) {
-        let (mut s_angle, mut s_rate, mut s_dot) = (self.angle_at_zero, 0.0, 0.0);
-        for (f, p) in self.freqs_hz.iter().zip(&self.phases_rad) {
-            let w = TAU * f;
-            let (sn, cs) = (w * t + p).sin_cos();
-            s_angle -= cs / w;
-            s_rate += sn;
-            s_dot += w * cs;
-        }
-        let k = self.amplitude / self.std;
-        (
-            k * (s_angle - self.mean * t),
-            k * (s_rate - self.mean),
-            k * s_dot,
+        self.combine(
+            t,
+            self.freqs_hz
+                .iter()
+                .zip(&self.phases_rad)
+                .map(|(f, p)| (TAU * f * t + p).sin_cos()),
         )
     }
 
     /// [`Disturbance::eval`] from the components' sines and cosines already at hand (a
     /// [`Phasors`] kept up to date over equally spaced times): no sine or cosine computed.
     pub fn eval_phasors(&self, t: f64, ph: &Phasors) -> (f64, f64, f64) {
+        self.combine(t, ph.sc.iter().map(|&[sn, cs]| (sn, cs)))
+    }
+
+    /// (angle, rate, rate_dot) at t from each component's (sin, cos) of 2π f_j t + p_j.
+    fn combine(&self, t: f64, sc: impl Iterator<Item = (f64, f64)>) -> (f64, f64, f64) {
         let (mut s_angle, mut s_rate, mut s_dot) = (self.angle_at_zero, 0.0, 0.0);
-        for (f, &[sn, cs]) in self.freqs_hz.iter().zip(&ph.sc) {
+        for (f, (sn, cs)) in self.freqs_hz.iter().zip(sc) {
             let w = TAU * f;
             s_angle -= cs / w;
             s_rate += sn;
