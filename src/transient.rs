@@ -461,7 +461,7 @@ pub fn run(
         .collect();
     let damping: Vec<f64> = modes.iter().map(|md| 2.0 * md.zeta * md.omega()).collect();
     // The rotation at each stage time, worked out once for all modes (the same bits as per mode).
-    let mut states = [Rotation::default(); STAGES];
+    let mut rotations = [Rotation::default(); STAGES];
     let mut clock = StageClock::new(kin, &tab.c, 0.0, h);
     let mut since_anchor = 0;
     for i in 0..n {
@@ -481,15 +481,15 @@ pub fn run(
                 clock.anchor(kin, &tab.c, t0, h);
                 since_anchor = 0;
             }
-            for (l, (st, c)) in states.iter_mut().zip(tab.c).enumerate() {
-                *st = Rotation::of(&kin.state_clocked(t0 + c * h, &clock, l));
+            for (l, (rot, c)) in rotations.iter_mut().zip(tab.c).enumerate() {
+                *rot = Rotation::of(&kin.state_clocked(t0 + c * h, &clock, l));
             }
             clock.advance();
             since_anchor += 1;
             for k in 0..nm {
                 let mut ks = [0.0; STAGES];
                 let mut fs = [[0.0; MAX_FORCES]; STAGES];
-                for (l, st) in states.iter().enumerate() {
+                for (l, st) in rotations.iter().enumerate() {
                     let c = coefficients_of(&modes[k], st);
                     ks[l] = c.stiffness;
                     fs[l] = [c.euler, c.centrifugal, c.coriolis, c.total_force()];
