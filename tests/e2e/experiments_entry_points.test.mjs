@@ -129,6 +129,8 @@ test('the URL ?exp=<id> alone opens each experiment with its settings; values gi
     await page.goto(`${env.url}?exp=${e.id}&panels=${PANELS}`);
     await expectOpen(page, e.id, 'wing-lab', 'URL');
     assert.equal(await page.isVisible('wing-lab .wl-notice'), false, `${e.id}: no notice`);
+    // …and states its live prediction.
+    assert.match(await page.textContent(`wing-lab ${PANEL_IN} .wl-exp-detail`), /The model predicts/, e.id);
   }
   await page.goto(`${env.url}?exp=damping&zeta=0.02&panels=${PANELS}`);
   await waitRenders(page, 1);
