@@ -13,6 +13,8 @@ step() {
   "$@"
   echo "== check.sh: $* — $((SECONDS - t0)) s (total $SECONDS s)"
 }
+# The machine, for reading a CI log's step times against this one's (docs/benchmarks.md, "CI").
+echo "== check.sh: $(nproc 2>/dev/null || echo '?') CPUs,$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2 || true), $(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo 2>/dev/null || true)"
 rustup component add rustfmt clippy >/dev/null 2>&1 || true
 rustup target add wasm32-unknown-unknown >/dev/null 2>&1 || true
 step cargo fmt --all -- --check
