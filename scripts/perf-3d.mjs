@@ -266,7 +266,7 @@ async function main() {
   const setupJs = arg('--setup', undefined);
   const query = arg('--query', '');
   const renders = arg('--render', 'worker') === 'both' ? ['worker', 'main'] : [arg('--render', 'worker')];
-  const env = await setup();
+  const env = await setup(undefined, { cached: false });
   const rows = [];
   try {
     for (const render of renders) {

@@ -139,7 +139,7 @@ export function loadTable(/** @type {Awaited<ReturnType<typeof measureLoad>>} */
 if (import.meta.url === `file://${process.argv[1]}`) {
   const i = process.argv.indexOf('--runs');
   const runs = i > 0 ? Math.max(1, Number(process.argv[i + 1]) || 5) : 5;
-  const env = await setup();
+  const env = await setup(undefined, { cached: false });
   try {
     const rows = await measureLoad(env.browser, env.url, runs);
     console.log(

@@ -41,7 +41,7 @@ const pct = (xs, p) => {
 };
 const r1 = (x) => Math.round(x * 10) / 10;
 
-const env = await setup();
+const env = await setup(undefined, { cached: false });
 const log = (...a) => {
   if (process.env.PERF_DEBUG) console.error(...a);
 };

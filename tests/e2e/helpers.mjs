@@ -19,6 +19,7 @@
 //    lab.dataset.renders, ...) are on the host: __wl.lab().store.
 import { chromium } from 'playwright-core';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { startServer } from '../../scripts/serve.mjs';
@@ -26,6 +27,9 @@ import { startServer } from '../../scripts/serve.mjs';
 export const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 export const OUT = path.join(ROOT, 'test-output');
 export const CHROMIUM = process.env.CHROMIUM_PATH || '/usr/bin/chromium';
+/** openPage's viewport unless a test gives one. */
+const DEFAULT_VIEWPORT = Object.freeze({ width: 1280, height: 720 });
+
 export const ARGS = [
   '--no-sandbox',
   '--no-first-run',
@@ -35,21 +39,61 @@ export const ARGS = [
   '--disable-quic',
 ];
 
-export async function setup(root = process.env.LAB_ROOT || 'www') {
+/**
+ * The browser of each test file's setup() keeps one cached browsing profile (a persistent
+ * context in a temporary folder) that openPage() opens its pages in, unless a test asks for an
+ * isolated one. A lab page opened again in the same profile revalidates its files with 304s and
+ * takes V8's cached code for the wasm modules and scripts instead of compiling them again (an
+ * off-the-record context, Playwright's newContext(), keeps no code cache): 4.3–4.9 CPU-seconds
+ * per default lab page instead of 6.7–6.8 on this 2-core machine (2026-12-03, six loads each way),
+ * what a student sees on a second visit. The first visit, the offline copy and the service worker
+ * are tested in isolated contexts (first_load, offline, precache, sandbox).
+ * @type {WeakMap<import('playwright-core').Browser, import('playwright-core').BrowserContext>}
+ */
+const SHARED = new WeakMap();
+
+/**
+ * Starts a static server on `root` and Debian's headless Chromium. `{ cached: false }` launches a
+ * plain browser (every openPage then gets a fresh off-the-record context); the perf scripts use
+ * it so their numbers stay cold-cache ones.
+ * @param {string} [root]
+ * @param {{ cached?: boolean }} [opts]
+ */
+export async function setup(root = process.env.LAB_ROOT || 'www', { cached = true } = {}) {
   const dir = path.join(ROOT, root);
   if (!fs.existsSync(path.join(dir, 'pkg', 'wingbeat.js'))) {
     throw new Error(`${root}/pkg is missing: run scripts/build-web.sh ${root} first (npm test does)`);
   }
   fs.mkdirSync(OUT, { recursive: true });
   const { server, url } = await startServer(dir, 0);
-  const browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS, headless: true });
+  let browser;
+  let profile = null;
+  if (cached) {
+    profile = fs.mkdtempSync(path.join(os.tmpdir(), 'wingbeat-e2e-profile-'));
+    const shared = await chromium.launchPersistentContext(profile, {
+      executablePath: CHROMIUM,
+      args: ARGS,
+      headless: true,
+      viewport: DEFAULT_VIEWPORT,
+      acceptDownloads: true,
+      serviceWorkers: 'block',
+    });
+    await labHelpers(shared);
+    browser = /** @type {import('playwright-core').Browser} */ (shared.browser());
+    SHARED.set(browser, shared);
+  } else {
+    browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS, headless: true });
+  }
   return {
     server,
     url,
     browser,
     close: async () => {
+      const shared = SHARED.get(browser);
+      if (shared) await shared.close();
       await browser.close();
       server.close();
+      if (profile) fs.rmSync(profile, { recursive: true, force: true });
     },
   };
 }
@@ -83,23 +127,70 @@ export async function labHelpers(context) {
 export const WITH_SERVICE_WORKER = Object.freeze({ serviceWorkers: /** @type {'allow'} */ ('allow') });
 
 /**
+ * The part of a BrowserContext a test gets from openPage() in the shared profile: its pages (the
+ * first, any from newPage() and their pop-ups) and close(), which closes them. What would change
+ * the profile for the tests after it (routes, init scripts, listeners, going offline) needs an
+ * isolated context: openPage(browser, url, viewport, { isolated: true }).
+ * @param {import('playwright-core').BrowserContext} shared
+ * @param {{ width: number, height: number }} viewport
+ */
+function sharedPart(shared, viewport) {
+  /** @type {Set<import('playwright-core').Page>} */
+  const pages = new Set();
+  const track = (/** @type {import('playwright-core').Page} */ p) => {
+    pages.add(p);
+    p.on('popup', track);
+    p.on('close', () => pages.delete(p));
+  };
+  const refuse = (what) => () => {
+    throw new Error(`openPage: ${what} would change the shared browser profile; open the page with { isolated: true }`);
+  };
+  return {
+    async newPage() {
+      const p = await shared.newPage();
+      await p.setViewportSize(viewport);
+      track(p);
+      return p;
+    },
+    pages: () => [...pages],
+    async close() {
+      await Promise.all([...pages].map((p) => p.close().catch(() => {})));
+    },
+    route: refuse('context.route'),
+    addInitScript: refuse('context.addInitScript'),
+    on: refuse('context.on'),
+    setOffline: refuse('context.setOffline'),
+  };
+}
+
+/**
  * A page that records console errors, page errors, failed and off-host requests and dialogs.
  * The lab's service worker (the offline copy, www/sw.js) is blocked unless a test asks for it
  * with `WITH_SERVICE_WORKER` (`{ serviceWorkers: 'allow' }`): on every first visit it downloads the whole lab (≈ 6 MB) into
  * the cache, which is what first_load, offline, precache and sandbox test and ≈ 13 % of the
  * browser's CPU in a test file that opens many fresh pages (2026-12-03, experiments.test.mjs).
+ * The page opens in the browser's shared, cached profile (setup()) unless the test asks for an
+ * isolated context (`{ isolated: true }`, implied by allowing the service worker) or the browser
+ * has none; either way `context.close()` ends what the test opened.
  * @param {import('playwright-core').Browser} browser
  * @param {string} _url
  * @param {{ width: number, height: number }} [viewport]
- * @param {{ serviceWorkers?: 'allow' | 'block' }} [opts]
+ * @param {{ serviceWorkers?: 'allow' | 'block', isolated?: boolean }} [opts]
  */
-export async function openPage(browser, _url, viewport = { width: 1280, height: 720 }, opts = {}) {
-  const context = await browser.newContext({
-    viewport,
-    acceptDownloads: true,
-    serviceWorkers: opts.serviceWorkers ?? 'block',
-  });
-  await labHelpers(context);
+export async function openPage(browser, _url, viewport = DEFAULT_VIEWPORT, opts = {}) {
+  const shared = SHARED.get(browser);
+  /** @type {any} */
+  let context;
+  if (shared && !opts.isolated && (opts.serviceWorkers ?? 'block') === 'block') {
+    context = sharedPart(shared, viewport);
+  } else {
+    context = await browser.newContext({
+      viewport,
+      acceptDownloads: true,
+      serviceWorkers: opts.serviceWorkers ?? 'block',
+    });
+    await labHelpers(context);
+  }
   const page = await context.newPage();
   const problems = [];
   page.on('console', (m) => {

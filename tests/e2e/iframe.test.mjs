@@ -225,7 +225,12 @@ const cells = (frame) =>
   });
 
 test('?embed=1 is compact from the first frame: header hidden, embed attribute, one column', async () => {
-  const { context, page, problems } = await openPage(env.browser, env.B, { width: 720, height: 800 });
+  const { context, page, problems } = await openPage(
+    env.browser,
+    env.B,
+    { width: 720, height: 800 },
+    { isolated: true },
+  );
   // Runs before the page's own scripts: records what every frame (rAF = just before a paint)
   // shows until the lab has rendered.
   await context.addInitScript(() => {
@@ -678,7 +683,12 @@ test("sandbox: allow-scripts allow-same-origin works from plain static hosting; 
 });
 
 test("the lab's page under a strict CSP on its own host (no inline script or style needed): renders, sizes itself, answers", async () => {
-  const { context, page, problems } = await openPage(env.browser, env.A, { width: 1000, height: 800 });
+  const { context, page, problems } = await openPage(
+    env.browser,
+    env.A,
+    { width: 1000, height: 800 },
+    { isolated: true },
+  );
   const csp =
     "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; style-src 'self'; worker-src 'self' blob:; img-src 'self' data: blob:; connect-src 'self'";
   await context.route(`${env.B}index.html*`, async (route) => {

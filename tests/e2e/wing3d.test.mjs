@@ -311,7 +311,7 @@ test('no WebGPU and no WebGL2: the panel says why and the rest of the lab works'
 test('the worker draws the pixels the page draws; a worker that cannot start falls back to the page', async () => {
   /** The 3-D canvas at t = 0.013 s, ε_x colours, drawn by the worker or (render="main") the page. */
   const shoot = async (main, name, route = null) => {
-    const { page, problems, context } = await openPage(env.browser, env.url);
+    const { page, problems, context } = await openPage(env.browser, env.url, undefined, { isolated: !!route });
     if (main)
       await page.addInitScript(() =>
         document.addEventListener('DOMContentLoaded', () =>
