@@ -10,6 +10,8 @@
 #           (two test files at a time, one per two cores on bigger machines, at most four;
 #           WINGBEAT_E2E_JOBS=N sets it):
 #           tests/js (unit + the real wasm in node) and tests/e2e (Playwright + Debian Chromium)
+#   all     the three in that order; on 4 or more CPUs the wasm suites and the lab's build run
+#           beside the native suite, then the browser tests (WINGBEAT_OVERLAP=1 / 0 forces it)
 # Installs what is missing first (scripts/ensure-tools.sh --browser [--wasm-pack]). Honours CARGO_TARGET_DIR.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -49,14 +51,18 @@ wasm() {
   wasm-pack test --headless --chrome --chromedriver /usr/bin/chromedriver "${args[@]}" --test wasm_browser
 }
 
-e2e() {
-  echo "== e2e: build the lab, then node --test tests/js tests/e2e"
+e2e_build() {
+  echo "== e2e: build the lab (www/ and the dist/ download)"
   bash scripts/build-web.sh www
   # The teachers' single-folder download, checked by tests/e2e/offline.test.mjs (its two wasm
   # modules and their compressed copies are www/'s, just built from the same sources).
   PKG_FROM_WWW=1 bash scripts/build-web.sh dist
   echo "== e2e: type-check the lab's JavaScript (tsc --noEmit over www/ against pkg/wingbeat.d.ts and uPlot's types)"
   npm run --silent check:js
+}
+
+e2e_run() {
+  echo "== e2e: node --test tests/js tests/e2e"
   # Test files run side by side: a browser test waits on Chromium's renderer and GPU processes
   # much of the time, so two at once pay even on 2 cores (2026-12-03, this 2-core machine, the same
   # 417 tests: 1304 s one file at a time, 1061 s two at a time); with more cores, one file per two
@@ -71,6 +77,48 @@ e2e() {
   node --test --test-concurrency="$jobs" tests/js/ tests/e2e/
 }
 
+e2e() {
+  e2e_build
+  e2e_run
+}
+
+# Whether `all` runs the wasm suites and the lab's build beside the native suite: on 4 or more
+# CPUs (a 2-core machine is kept busy by either alone). The native build (target/debug) and the
+# wasm builds (target/wasm32-unknown-unknown/release, host tools in target/release) lock different
+# build directories, so neither waits for the other; the lab's build spends minutes in npm's
+# single-threaded wasm-opt. WINGBEAT_OVERLAP=1 / 0 forces it on / off.
+overlap() {
+  case "${WINGBEAT_OVERLAP:-auto}" in
+    1) return 0 ;;
+    0) return 1 ;;
+    auto) [ "$(nproc 2>/dev/null || echo 1)" -ge 4 ] ;;
+    *) echo "test-all: WINGBEAT_OVERLAP must be 1, 0 or auto (got '${WINGBEAT_OVERLAP}')" >&2; exit 2 ;;
+  esac
+}
+
+# The wasm suites, then the lab's build, in the background with their output in a file (shown
+# when they end); the native suite in the foreground. A failure of either fails the run.
+all_overlapped() {
+  local log bg t0=$SECONDS
+  log="$(mktemp)"
+  echo "== $(nproc) CPUs: the wasm suites and the lab's build run beside the native suite (their log follows it)"
+  set -m # the background stage in its own process group, so a failure here can stop all of it
+  ( t=$SECONDS; wasm; echo "== wasm: $((SECONDS - t)) s"; t=$SECONDS; e2e_build; echo "== e2e build: $((SECONDS - t)) s" ) >"$log" 2>&1 &
+  bg=$!
+  set +m
+  # shellcheck disable=SC2064 # the values are fixed now
+  trap "kill -TERM -- -$bg 2>/dev/null || true; echo '== the wasm suites and the lab build (stopped):'; tail -n 40 '$log'" EXIT
+  native
+  echo "== native: $((SECONDS - t0)) s"
+  local ok=1
+  wait "$bg" || ok=0
+  trap - EXIT
+  echo "== the wasm suites and the lab's build, beside it (until $((SECONDS - t0)) s):"
+  cat "$log"
+  rm -f "$log"
+  [ "$ok" = 1 ] || { echo "test-all: the wasm suites or the lab's build failed (above)" >&2; exit 1; }
+}
+
 case "$what" in
   native) bash scripts/ensure-tools.sh --browser; native ;;
   wasm) bash scripts/ensure-tools.sh --browser --wasm-pack; wasm ;;
@@ -78,9 +126,14 @@ case "$what" in
   all)
     # Each stage's wall time in the log (CI shows where the minutes go).
     t0=$SECONDS; bash scripts/ensure-tools.sh --browser --wasm-pack; echo "== tools: $((SECONDS - t0)) s"
-    t0=$SECONDS; native; echo "== native: $((SECONDS - t0)) s"
-    t0=$SECONDS; wasm; echo "== wasm: $((SECONDS - t0)) s"
-    t0=$SECONDS; e2e; echo "== e2e: $((SECONDS - t0)) s"
+    if overlap; then
+      all_overlapped
+      t0=$SECONDS; e2e_run; echo "== e2e tests: $((SECONDS - t0)) s"
+    else
+      t0=$SECONDS; native; echo "== native: $((SECONDS - t0)) s"
+      t0=$SECONDS; wasm; echo "== wasm: $((SECONDS - t0)) s"
+      t0=$SECONDS; e2e; echo "== e2e: $((SECONDS - t0)) s"
+    fi
     echo "== all test suites passed ($SECONDS s)" ;;
   *) echo "usage: scripts/test-all.sh [all|native|wasm|e2e]" >&2; exit 2 ;;
 esac
