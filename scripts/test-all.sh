@@ -103,7 +103,13 @@ all_overlapped() {
   log="$(mktemp)"
   echo "== $(nproc) CPUs: the wasm suites and the lab's build run beside the native suite (their log follows it)"
   set -m # the background stage in its own process group, so a failure here can stop all of it
-  ( t=$SECONDS; wasm; echo "== wasm: $((SECONDS - t)) s"; t=$SECONDS; e2e_build; echo "== e2e build: $((SECONDS - t)) s" ) >"$log" 2>&1 &
+  # Its compiles get half the CPUs (the native build takes them all), so at most about 1.5× the
+  # usual number of compilers share the machine's memory.
+  (
+    jobs=$(($(nproc) / 2)); export CARGO_BUILD_JOBS=$((jobs > 0 ? jobs : 1))
+    t=$SECONDS; wasm; echo "== wasm: $((SECONDS - t)) s"
+    t=$SECONDS; e2e_build; echo "== e2e build: $((SECONDS - t)) s"
+  ) >"$log" 2>&1 &
   bg=$!
   set +m
   # shellcheck disable=SC2064 # the values are fixed now
