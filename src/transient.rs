@@ -489,8 +489,8 @@ pub fn run(
             for k in 0..nm {
                 let mut ks = [0.0; STAGES];
                 let mut fs = [[0.0; MAX_FORCES]; STAGES];
-                for (l, st) in rotations.iter().enumerate() {
-                    let c = coefficients_of(&modes[k], st);
+                for (l, rot) in rotations.iter().enumerate() {
+                    let c = coefficients_of(&modes[k], rot);
                     ks[l] = c.stiffness;
                     fs[l] = [c.euler, c.centrifugal, c.coriolis, c.total_force()];
                 }

@@ -129,8 +129,13 @@ test('the URL ?exp=<id> alone opens each experiment with its settings; values gi
     await page.goto(`${env.url}?exp=${e.id}&panels=${PANELS}`);
     await expectOpen(page, e.id, 'wing-lab', 'URL');
     assert.equal(await page.isVisible('wing-lab .wl-notice'), false, `${e.id}: no notice`);
-    // …and states its live prediction.
-    assert.match(await page.textContent(`wing-lab ${PANEL_IN} .wl-exp-detail`), /The model predicts/, e.id);
+    // …states its live prediction, and every check it shows holds (not only those of CHECKS).
+    const detail = await page.textContent(`wing-lab ${PANEL_IN} .wl-exp-detail`);
+    assert.match(detail, /The model predicts/, e.id);
+    const shown = await page.$$eval(`wing-lab ${PANEL_IN} [data-check]`, (els) =>
+      els.map((c) => [c.dataset.check, c.dataset.holds === 'true']),
+    );
+    for (const [k, holds] of shown) assert.equal(holds, true, `${e.id}: check ${k} — ${detail}`);
   }
   await page.goto(`${env.url}?exp=damping&zeta=0.02&panels=${PANELS}`);
   await waitRenders(page, 1);

@@ -152,7 +152,6 @@ function sharedPart(shared, viewport) {
       track(p);
       return p;
     },
-    pages: () => [...pages],
     async close() {
       await Promise.all([...pages].map((p) => p.close().catch(() => {})));
     },
