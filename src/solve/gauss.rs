@@ -2,7 +2,9 @@
 //! x′ = A(t) x + F_j(t), x = (q, q̇), A = [[0, 1], [−k(t), −c]], F_j = (0, f_j(t)).
 //!
 //! Because the system is linear, the step is an affine map x ↦ R x + r_j; this module returns
-//! R (2×2) and every r_j at once by solving the 8×8 stage system with several right-hand sides.
+//! R (2×2) and every r_j at once from one 4×4 solve with two right-hand sides (the 8×8 stage
+//! system reduced by its q-rows and solved transposed for the two functionals the end state
+//! reads; [`step_map_from`]).
 //! The Butcher tableau is built from the Gauss nodes by the collocation conditions
 //! Σ_j a_ij c_j^(m−1) = c_i^m / m, Σ_j b_j c_j^(m−1) = 1/m (m = 1..4).
 
@@ -23,6 +25,32 @@ pub struct Tableau {
     pub b: [f64; STAGES],
     /// Runge–Kutta matrix.
     pub a: [[f64; STAGES]; STAGES],
+    /// Products of the coefficients the step reads ([`step_map_from`]).
+    pre: Products,
+}
+
+/// Coefficient products fixed by the tableau, formed once: the step's transposed stage
+/// matrix is then a sum of scaled 16-entry arrays.
+#[derive(Debug, Clone, Copy)]
+struct Products {
+    /// aᵀ, flat: `at[4 j + i]` = a_ij.
+    at: [f64; STAGES * STAGES],
+    /// (a e_l)(e_lᵀ a) transposed, flat: `pt[l][4 j + i]` = a_il a_lj.
+    pt: [[f64; STAGES * STAGES]; STAGES],
+    /// `ba[i][j]` = b_i a_ij.
+    ba: [[f64; STAGES]; STAGES],
+}
+
+impl Products {
+    fn of(a: &[[f64; STAGES]; STAGES], b: &[f64; STAGES]) -> Self {
+        Products {
+            at: std::array::from_fn(|x| a[x % STAGES][x / STAGES]),
+            pt: std::array::from_fn(|l| {
+                std::array::from_fn(|x| a[x % STAGES][l] * a[l][x / STAGES])
+            }),
+            ba: std::array::from_fn(|i| std::array::from_fn(|j| b[i] * a[i][j])),
+        }
+    }
 }
 
 impl Tableau {
@@ -51,10 +79,12 @@ impl Tableau {
                 row[j] = ai[j];
             }
         }
+        let b = [bv[0], bv[1], bv[2], bv[3]];
         Tableau {
             c,
-            b: [bv[0], bv[1], bv[2], bv[3]],
+            b,
             a,
+            pre: Products::of(&a, &b),
         }
     }
 }
@@ -74,22 +104,9 @@ pub struct StepMap {
     pub p: [Vector2<f64>; MAX_FORCES],
 }
 
-/// Columns of the reduced stage system: the two homogeneous starts and the forcings.
-const COLS: usize = 2 + MAX_FORCES;
-
 /// Computes the step map of `ode` from `t0` over `h` with the tableau `tab`.
 ///
-/// The 8×8 stage system is reduced to 4×4 before it is solved: with stage values
-/// Y_i = (Q_i, V_i) = x0 + h Σ_j a_ij K_j and K_j = A_j Y_j + F_j, the q-rows give
-/// Q = q0·1 + h a V, and substituting them into the v-rows leaves
-///
-/// ```text
-/// (I + h c a + h² a K a) V = v0·1 − q0·h a k + h a f_j,     K = diag(k_1..k_4),
-/// ```
-///
-/// one small system with six right-hand sides (the starts e1, e2 and the forcings), solved by
-/// Gaussian elimination with partial pivoting. Same method, same order; only the linear algebra
-/// is cheaper.
+/// See [`step_map_from`] for how the stage system is solved.
 pub fn step_map<O: LinearOde + ?Sized>(ode: &O, tab: &Tableau, t0: f64, h: f64) -> StepMap {
     let nf = ode.n_forces();
     let mut ks = [0.0; STAGES];
@@ -102,6 +119,31 @@ pub fn step_map<O: LinearOde + ?Sized>(ode: &O, tab: &Tableau, t0: f64, h: f64) 
 
 /// [`step_map`] from the stiffness `ks` and forcings `fs` already evaluated at the four stage
 /// times t0 + c_i h (so a caller can share one evaluation of the kinematics between modes).
+///
+/// With stage values Y_i = (Q_i, V_i) = x0 + h Σ_j a_ij K_j and K_j = A_j Y_j + F_j, the q-rows
+/// give Q = q0·1 + h a V, and the v-rows then leave one 4×4 system for the stage velocities,
+///
+/// ```text
+/// M V = v0·1 − h q0 (a k) + h a f_j,     M = I + h c a + h² a K a,   K = diag(k_1..k_4),
+/// ```
+///
+/// and the end state is linear in V:
+///
+/// ```text
+/// q1 = q0 + h bᵀV,    v1 = v0 + h bᵀf − h q0 bᵀk − h uᵀV,    u_j = c b_j + h Σ_i b_i k_i a_ij.
+/// ```
+///
+/// Only the two functionals bᵀV and uᵀV of each column are needed, so instead of solving
+/// M V = rhs for every column (two starts and each forcing) the transposed system
+/// Mᵀ [s r] = [b u] is solved once, with two right-hand sides: bᵀV = sᵀ rhs and uᵀV = rᵀ rhs.
+/// With σ = aᵀs and ρ = aᵀr,
+///
+/// ```text
+/// R = [[1 − h² σ·k,  h Σ s], [−h b·k + h² ρ·k,  1 − h Σ r]],   r_j = (h² σ·f_j, h b·f_j − h² ρ·f_j).
+/// ```
+///
+/// Same method and order as solving the stage system column by column; the work per step no
+/// longer grows with the columns but by three dot products of four terms per forcing.
 pub fn step_map_from(
     tab: &Tableau,
     c: f64,
@@ -110,88 +152,130 @@ pub fn step_map_from(
     fs: &[[f64; MAX_FORCES]; STAGES],
     nf: usize,
 ) -> StepMap {
-    // Every loop in the three stages runs over all COLS columns (the unused forcings are zero
-    // columns, whose results are dropped): fixed trip counts the compiler unrolls and vectorises
-    // across columns. Each value is still formed by the same operations in the same order.
     let nf = nf.min(MAX_FORCES);
-    let mut f = [[0.0; MAX_FORCES]; STAGES];
-    for (fi, si) in f.iter_mut().zip(fs) {
-        fi[..nf].copy_from_slice(&si[..nf]);
+    let (a, b, pre) = (&tab.a, &tab.b, &tab.pre);
+    let (hc, hh) = (h * c, h * h);
+    // Mᵀ = I + h c aᵀ + h² Σ_l k_l (a e_l e_lᵀ a)ᵀ, flat (row j of Mᵀ at 4 j), and
+    // g_j = Σ_i b_i k_i a_ij.
+    let mut mt = [0.0; STAGES * STAGES];
+    for x in 0..STAGES * STAGES {
+        mt[x] = hc * pre.at[x];
     }
-    let (mut m, mut rhs) = stage_system(&tab.a, c, h, ks, &f);
-    if !solve_stages(&mut m, &mut rhs) {
+    let mut g = [0.0; STAGES];
+    for l in 0..STAGES {
+        let kl = hh * ks[l];
+        for x in 0..STAGES * STAGES {
+            mt[x] += kl * pre.pt[l][x];
+        }
+        for j in 0..STAGES {
+            g[j] += ks[l] * pre.ba[l][j];
+        }
+    }
+    for j in 0..STAGES {
+        mt[STAGES * j + j] += 1.0;
+    }
+    // Right-hand sides b and u, one row per equation.
+    let rhs: [[f64; 2]; STAGES] = std::array::from_fn(|j| [b[j], c * b[j] + h * g[j]]);
+    let Some(sol) = solve4(&mt, &rhs) else {
         return StepMap {
             r: Matrix2::from_element(f64::NAN),
             p: [Vector2::from_element(f64::NAN); MAX_FORCES],
         };
-    }
-    let (q1, v1) = end_state(tab, c, h, ks, &f, &rhs);
-    let col = |k: usize| Vector2::new(q1[k], v1[k]);
-    let (c0, c1) = (col(0), col(1));
-    let mut out = StepMap {
-        r: Matrix2::new(c0[0], c1[0], c0[1], c1[1]),
-        p: [Vector2::zeros(); MAX_FORCES],
     };
-    for j in 0..nf {
-        out.p[j] = col(2 + j);
+    // σ = aᵀs, ρ = aᵀr, Σs, Σr.
+    let (mut sig, mut rho) = ([0.0; STAGES], [0.0; STAGES]);
+    let (mut sum_s, mut sum_r) = (0.0, 0.0);
+    for i in 0..STAGES {
+        let [s, r] = sol[i];
+        sum_s += s;
+        sum_r += r;
+        for l in 0..STAGES {
+            sig[l] += a[i][l] * s;
+            rho[l] += a[i][l] * r;
+        }
     }
-    out
+    let r = Matrix2::new(
+        1.0 - hh * dot4(&sig, ks),
+        h * sum_s,
+        hh * dot4(&rho, ks) - h * dot4(b, ks),
+        1.0 - h * sum_r,
+    );
+    let mut p = [Vector2::zeros(); MAX_FORCES];
+    for (j, pj) in p.iter_mut().enumerate().take(nf) {
+        let f = [fs[0][j], fs[1][j], fs[2][j], fs[3][j]];
+        *pj = Vector2::new(hh * dot4(&sig, &f), h * dot4(b, &f) - hh * dot4(&rho, &f));
+    }
+    StepMap { r, p }
 }
 
-/// The reduced stage system of [`step_map_from`]: M = I + h c a + h² a K a and its COLS
-/// right-hand sides (the starts (1, 0), (0, 1), then the forcings).
+/// Solves the 4×4 system m x = rhs (`m` flat by rows, two right-hand sides). The step's matrix
+/// is the identity plus terms of order h·c and h²·k, so elimination in the given order meets
+/// pivots near 1; it is taken when every pivot is at least 1/2 in magnitude (multipliers then
+/// stay small and no row exchange is needed), else the system is solved again with partial
+/// pivoting. None on a zero or non-finite pivot.
 #[inline(always)]
-fn stage_system(
-    a: &[[f64; STAGES]; STAGES],
-    c: f64,
-    h: f64,
-    ks: &[f64; STAGES],
-    f: &[[f64; MAX_FORCES]; STAGES],
-) -> ([[f64; STAGES]; STAGES], [[f64; COLS]; STAGES]) {
-    // a_il k_l, then M and the right-hand sides.
-    let mut ak = [[0.0; STAGES]; STAGES];
-    for i in 0..STAGES {
-        for l in 0..STAGES {
-            ak[i][l] = a[i][l] * ks[l];
-        }
+fn solve4(m: &[f64; STAGES * STAGES], rhs: &[[f64; 2]; STAGES]) -> Option<[[f64; 2]; STAGES]> {
+    let mut u = [[0.0; STAGES]; STAGES];
+    for (r, row) in u.iter_mut().enumerate() {
+        row.copy_from_slice(&m[STAGES * r..STAGES * r + STAGES]);
     }
-    let (hc, hh) = (h * c, h * h);
-    let mut m = [[0.0; STAGES]; STAGES];
-    for i in 0..STAGES {
-        for j in 0..STAGES {
-            let mut aka = 0.0;
-            for l in 0..STAGES {
-                aka += ak[i][l] * a[l][j];
+    let mut x = *rhs;
+    let mut ok = true;
+    for col in 0..STAGES {
+        let d = u[col][col];
+        ok &= d.abs() >= 0.5;
+        let inv = 1.0 / d;
+        let (pivot_u, pivot_x) = (u[col], x[col]);
+        for r in col + 1..STAGES {
+            let fac = u[r][col] * inv;
+            for k in col + 1..STAGES {
+                u[r][k] -= fac * pivot_u[k];
             }
-            m[i][j] = hc * a[i][j] + hh * aka;
-        }
-        m[i][i] += 1.0;
-    }
-    let mut rhs = [[0.0; COLS]; STAGES];
-    for i in 0..STAGES {
-        let mut aks = 0.0;
-        for l in 0..STAGES {
-            aks += ak[i][l];
-        }
-        rhs[i][0] = -h * aks; // start (q0, v0) = (1, 0)
-        rhs[i][1] = 1.0; // start (0, 1)
-        let mut af = [0.0; MAX_FORCES];
-        for l in 0..STAGES {
-            for j in 0..MAX_FORCES {
-                af[j] += a[i][l] * f[l][j];
+            for k in 0..2 {
+                x[r][k] -= fac * pivot_x[k];
             }
         }
-        for j in 0..MAX_FORCES {
-            rhs[i][2 + j] = h * af[j];
-        }
     }
-    (m, rhs)
+    // NaN fails the comparison above too, so a finite result means finite pivots.
+    if !ok {
+        let mut u = [[0.0; STAGES]; STAGES];
+        for (r, row) in u.iter_mut().enumerate() {
+            row.copy_from_slice(&m[STAGES * r..STAGES * r + STAGES]);
+        }
+        let mut x = *rhs;
+        return solve_pivoting(&mut u, &mut x).then_some(x);
+    }
+    back_substitute(&u, &mut x);
+    Some(x)
 }
 
-/// Solves `m V = rhs` in place by Gaussian elimination with partial pivoting; `rhs` then holds
-/// V, one column per start. False (and `rhs` unusable) on a zero or non-finite pivot.
+/// Back substitution of an upper-triangular `u` (its diagonal nonzero) into `x`.
 #[inline(always)]
-fn solve_stages(m: &mut [[f64; STAGES]; STAGES], rhs: &mut [[f64; COLS]; STAGES]) -> bool {
+fn back_substitute(u: &[[f64; STAGES]; STAGES], x: &mut [[f64; 2]; STAGES]) {
+    for col in (0..STAGES).rev() {
+        let inv = 1.0 / u[col][col];
+        let mut s = x[col];
+        for j in col + 1..STAGES {
+            for k in 0..2 {
+                s[k] -= u[col][j] * x[j][k];
+            }
+        }
+        for k in 0..2 {
+            x[col][k] = s[k] * inv;
+        }
+    }
+}
+
+/// x·y over the four stages, summed pairwise.
+#[inline(always)]
+fn dot4(x: &[f64; STAGES], y: &[f64; STAGES]) -> f64 {
+    (x[0] * y[0] + x[1] * y[1]) + (x[2] * y[2] + x[3] * y[3])
+}
+
+/// Solves `m x = rhs` (two right-hand sides) in place by Gaussian elimination with partial
+/// pivoting; `rhs` then holds x. False (and `rhs` unusable) on a zero or non-finite pivot.
+#[cold]
+fn solve_pivoting(m: &mut [[f64; STAGES]; STAGES], rhs: &mut [[f64; 2]; STAGES]) -> bool {
     for col in 0..STAGES {
         let mut piv = col;
         for r in col + 1..STAGES {
@@ -211,71 +295,16 @@ fn solve_stages(m: &mut [[f64; STAGES]; STAGES], rhs: &mut [[f64; COLS]; STAGES]
         let (pivot_m, pivot_rhs) = (m[col], rhs[col]);
         for r in col + 1..STAGES {
             let fac = m[r][col] * inv;
-            if fac != 0.0 {
-                for k in col + 1..STAGES {
-                    m[r][k] -= fac * pivot_m[k];
-                }
-                for k in 0..COLS {
-                    rhs[r][k] -= fac * pivot_rhs[k];
-                }
+            for k in col + 1..STAGES {
+                m[r][k] -= fac * pivot_m[k];
+            }
+            for k in 0..2 {
+                rhs[r][k] -= fac * pivot_rhs[k];
             }
         }
     }
-    for col in (0..STAGES).rev() {
-        let inv = 1.0 / m[col][col];
-        let mut s = rhs[col];
-        for j in col + 1..STAGES {
-            for k in 0..COLS {
-                s[k] -= m[col][j] * rhs[j][k];
-            }
-        }
-        for k in 0..COLS {
-            rhs[col][k] = s[k] * inv;
-        }
-    }
+    back_substitute(m, rhs);
     true
-}
-
-/// The step's end state for each column from the stage velocities V (`v`):
-/// x1 = x0 + h Σ b_i (V_i, −k_i Q_i − c V_i + f_i) with Q = q0 + h a V; the starts are (1, 0),
-/// (0, 1) and zero for the forcings. Returns (q1, v1) per column.
-#[inline(always)]
-fn end_state(
-    tab: &Tableau,
-    c: f64,
-    h: f64,
-    ks: &[f64; STAGES],
-    f: &[[f64; MAX_FORCES]; STAGES],
-    v: &[[f64; COLS]; STAGES],
-) -> ([f64; COLS], [f64; COLS]) {
-    let a = &tab.a;
-    let mut q0 = [0.0; COLS];
-    let mut v0 = [0.0; COLS];
-    q0[0] = 1.0;
-    v0[1] = 1.0;
-    let (mut dq, mut dv) = ([0.0; COLS], [0.0; COLS]);
-    for i in 0..STAGES {
-        let mut av = [0.0; COLS];
-        for j in 0..STAGES {
-            for k in 0..COLS {
-                av[k] += a[i][j] * v[j][k];
-            }
-        }
-        let mut fi = [0.0; COLS];
-        fi[2..].copy_from_slice(&f[i]);
-        for k in 0..COLS {
-            let qi = q0[k] + h * av[k];
-            dq[k] += tab.b[i] * v[i][k];
-            dv[k] += tab.b[i] * (fi[k] - ks[i] * qi - c * v[i][k]);
-        }
-    }
-    let mut q1 = [0.0; COLS];
-    let mut v1 = [0.0; COLS];
-    for k in 0..COLS {
-        q1[k] = q0[k] + h * dq[k];
-        v1[k] = v0[k] + h * dv[k];
-    }
-    (q1, v1)
 }
 
 /// Integrates x′ = A x + F_j from `t0` over `n` equal steps of size `h`, starting every
@@ -303,6 +332,73 @@ pub fn integrate<O: LinearOde + ?Sized>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The transposed 4×4 solve against the plain one: the full 8×8 stage system (unknowns
+    /// K_i = (Q̇_i, V̇_i)) solved column by column with nalgebra's LU, then x1 = x0 + h Σ b_i K_i.
+    /// Stiffer and softer stages, damping from none to large, forcings of mixed sign and size,
+    /// and steps far longer than any rule takes (where the pivoting solve is used).
+    #[test]
+    fn the_transposed_solve_equals_the_full_stage_system() {
+        let tab = Tableau::new();
+        let cases = [
+            (1e-4, 0.0, [3.0e5, 2.9e5, 3.1e5, 3.05e5]),
+            (2e-3, 12.0, [4.0e4, -1.0e4, 2.0e4, 5.0e3]),
+            (0.01, 50.0, [600.0, 610.0, 590.0, 620.0]),
+            (0.05, 0.3, [-40.0, 10.0, 25.0, -5.0]),
+            // Far from the identity (h c = 10, h² k up to 25): pivots below 1/2, so the
+            // pivoting solve runs.
+            (0.5, 20.0, [100.0, -30.0, 60.0, 10.0]),
+            (0.3, 0.0, [-400.0, 500.0, -200.0, 300.0]),
+        ];
+        for (h, c, ks) in cases {
+            let fs = [
+                [1.0, -2.0, 0.5, 1e3],
+                [0.7, 2.5, -1.5, -1e3],
+                [-0.2, 1.0, 3.0, 2e3],
+                [0.4, -0.1, 0.0, 0.5],
+            ];
+            let got = step_map_from(&tab, c, h, &ks, &fs, MAX_FORCES);
+            // Unknowns k = (K_1q..K_4q, K_1v..K_4v): K_iq = q0 + h Σ a_ij K_jv (= V_i) and
+            // K_iv = f_i − k_i (q0 + h Σ a_ij K_jq) − c (v0 + h Σ a_ij K_jv).
+            let mut m = SMatrix::<f64, 8, 8>::identity();
+            for i in 0..STAGES {
+                for j in 0..STAGES {
+                    m[(i, 4 + j)] -= h * tab.a[i][j];
+                    m[(4 + i, j)] += h * ks[i] * tab.a[i][j];
+                    m[(4 + i, 4 + j)] += h * c * tab.a[i][j];
+                }
+            }
+            let lu = m.lu();
+            let end = |q0: f64, v0: f64, f: &dyn Fn(usize) -> f64| {
+                let rhs = SVector::<f64, 8>::from_fn(|r, _| {
+                    if r < 4 {
+                        v0
+                    } else {
+                        f(r - 4) - ks[r - 4] * q0 - c * v0
+                    }
+                });
+                let k = lu.solve(&rhs).unwrap();
+                let (mut q1, mut v1) = (q0, v0);
+                for i in 0..STAGES {
+                    q1 += h * tab.b[i] * k[i];
+                    v1 += h * tab.b[i] * k[4 + i];
+                }
+                Vector2::new(q1, v1)
+            };
+            let close = |a: Vector2<f64>, b: Vector2<f64>, what: &str| {
+                let scale = b.norm().max(1e-300);
+                assert!(
+                    (a - b).norm() <= 1e-13 * scale,
+                    "h = {h}, c = {c}, {what}: {a:?} against {b:?}"
+                );
+            };
+            close(got.r.column(0).into(), end(1.0, 0.0, &|_| 0.0), "R e1");
+            close(got.r.column(1).into(), end(0.0, 1.0, &|_| 0.0), "R e2");
+            for j in 0..MAX_FORCES {
+                close(got.p[j], end(0.0, 0.0, &|i| fs[i][j]), &format!("r_{j}"));
+            }
+        }
+    }
 
     #[test]
     fn tableau_meets_the_order_eight_conditions() {
