@@ -6,7 +6,7 @@
 //! peak of a strain component at every node over a run).
 
 use crate::error::{Result, WingbeatError};
-use crate::model::Mode;
+use crate::model::{ModalStrain, Mode};
 use crate::pool::SeriesPool;
 use serde::{Deserialize, Serialize};
 
@@ -57,26 +57,43 @@ pub fn strain_series_in(
             gamma_xy: pool.take(n),
         })
         .collect();
+    // Per point, the (coefficient, response) of each mode naming it, in mode order (a mode
+    // naming a point twice contributes its first entry).
+    let mut terms: Vec<Vec<(&ModalStrain, &[f64])>> = vec![Vec::new(); names.len()];
     for (m, q_total) in modes.iter().zip(totals) {
-        // A mode naming a point twice contributes its first entry (as before).
         let mut seen = vec![false; names.len()];
         for s in &m.strains {
             let j = index[s.point.as_str()];
-            if std::mem::replace(&mut seen[j], true) {
-                continue;
+            if !std::mem::replace(&mut seen[j], true) {
+                terms[j].push((s, q_total));
             }
-            let o = &mut out[j];
-            for (series, c) in [
-                (&mut o.eps_x, s.eps_x),
-                (&mut o.eps_y, s.eps_y),
-                (&mut o.gamma_xy, s.gamma_xy),
-            ] {
-                if series.is_empty() {
-                    // The first mode at this point: 0 + c·q, written once (the same bits).
-                    series.extend(q_total.iter().map(|q| 0.0 + c * q));
-                } else {
-                    for (v, q) in series.iter_mut().zip(q_total.iter()) {
-                        *v += c * q;
+        }
+    }
+    let parts: [fn(&ModalStrain) -> f64; 3] = [|s| s.eps_x, |s| s.eps_y, |s| s.gamma_xy];
+    for (o, point) in out.iter_mut().zip(&terms) {
+        for (series, part) in [&mut o.eps_x, &mut o.eps_y, &mut o.gamma_xy]
+            .into_iter()
+            .zip(parts)
+        {
+            // 0 + c₀q₀ + c₁q₁ + … summed in mode order, the first two modes in one pass.
+            match point.as_slice() {
+                [] => {}
+                [(s0, q0)] => {
+                    let c0 = part(s0);
+                    series.extend(q0.iter().map(|q| 0.0 + c0 * q));
+                }
+                [(s0, q0), (s1, q1), rest @ ..] => {
+                    let (c0, c1) = (part(s0), part(s1));
+                    series.extend(
+                        q0.iter()
+                            .zip(q1.iter())
+                            .map(|(a, b)| (0.0 + c0 * a) + c1 * b),
+                    );
+                    for (s, q) in rest {
+                        let c = part(s);
+                        for (v, q) in series.iter_mut().zip(q.iter()) {
+                            *v += c * q;
+                        }
                     }
                 }
             }

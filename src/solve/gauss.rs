@@ -108,13 +108,10 @@ pub struct StepMap {
 ///
 /// See [`step_map_from`] for how the stage system is solved.
 pub fn step_map<O: LinearOde + ?Sized>(ode: &O, tab: &Tableau, t0: f64, h: f64) -> StepMap {
-    let nf = ode.n_forces();
     let mut ks = [0.0; STAGES];
     let mut fs = [[0.0; MAX_FORCES]; STAGES];
-    for i in 0..STAGES {
-        ks[i] = ode.eval(t0 + tab.c[i] * h, &mut fs[i][..nf]);
-    }
-    step_map_from(tab, ode.damping(), h, &ks, &fs, nf)
+    ode.eval_stages(t0, h, &tab.c, &mut ks, &mut fs);
+    step_map_from(tab, ode.damping(), h, &ks, &fs, ode.n_forces())
 }
 
 /// [`step_map`] from the stiffness `ks` and forcings `fs` already evaluated at the four stage

@@ -24,6 +24,8 @@ pub mod propagator;
 pub mod rk4;
 pub mod stats;
 
+use gauss::STAGES;
+
 /// A linear second-order ODE with periodic coefficients and several forcings.
 pub trait LinearOde {
     /// Number of forcing functions f_j (≤ [`MAX_FORCES`]).
@@ -32,6 +34,22 @@ pub trait LinearOde {
     fn damping(&self) -> f64;
     /// Stiffness k(t) (1/s²); writes f_j(t) into `f` (length `n_forces`).
     fn eval(&self, t: f64, f: &mut [f64]) -> f64;
+    /// Stiffness and forcings at the stage times t0 + c_i h of one Gauss–Legendre step: k into
+    /// `ks[i]`, f_j into `fs[i][..n_forces]`. The default calls [`LinearOde::eval`] at each
+    /// time; an equation may share work between the four (and must give the same values).
+    fn eval_stages(
+        &self,
+        t0: f64,
+        h: f64,
+        c: &[f64; STAGES],
+        ks: &mut [f64; STAGES],
+        fs: &mut [[f64; MAX_FORCES]; STAGES],
+    ) {
+        let nf = self.n_forces();
+        for i in 0..STAGES {
+            ks[i] = self.eval(t0 + c[i] * h, &mut fs[i][..nf]);
+        }
+    }
     /// Period T of the coefficients, s.
     fn period(&self) -> f64;
     /// Period of the homogeneous part (k and c) alone; a divisor of T (T/2 for the paper's
@@ -63,6 +81,17 @@ impl<O: LinearOde + ?Sized> LinearOde for Homogeneous<'_, O> {
         let mut f = [0.0; MAX_FORCES];
         self.0.eval(t, &mut f[..self.0.n_forces()])
     }
+    fn eval_stages(
+        &self,
+        t0: f64,
+        h: f64,
+        c: &[f64; STAGES],
+        ks: &mut [f64; STAGES],
+        _fs: &mut [[f64; MAX_FORCES]; STAGES],
+    ) {
+        let mut fs = [[0.0; MAX_FORCES]; STAGES];
+        self.0.eval_stages(t0, h, c, ks, &mut fs);
+    }
     fn period(&self) -> f64 {
         self.0.period()
     }
@@ -90,20 +119,23 @@ pub struct ModalOde<'a> {
     pub memo: Option<&'a RotationMemo>,
 }
 
-/// The rotation ([`crate::model::Rotation`]) at each time the solver asked for, in the order
-/// asked, kept for the next mode of the same run: every mode whose step sizes are the same asks
-/// for the same times in the same order (the paper's two modes do; so do most FE modes below
-/// the kinematics' frequency scale), and then reads them here instead of evaluating the
-/// kinematics again. A time that differs from the recorded one at that position (a mode with
-/// other steps) is worked out afresh, so the results are the same bits either way.
+/// The rotations ([`crate::model::Rotation`]) at the four stage times of each step the solver
+/// took, in the order taken, kept for the next mode of the same run: every mode whose step
+/// sizes are the same takes the same steps in the same order (the paper's two modes do; so do
+/// most FE modes below the kinematics' frequency scale), and then reads them here instead of
+/// evaluating the kinematics again. A step that differs from the recorded one at that position
+/// (a mode with other steps) is worked out afresh, so the results are the same bits either way.
 #[derive(Debug, Default)]
 pub struct RotationMemo {
-    times: std::cell::RefCell<Vec<(f64, crate::model::Rotation)>>,
+    steps: std::cell::RefCell<Vec<MemoStep>>,
     next: std::cell::Cell<usize>,
 }
 
+/// One recorded step: its start and length (as bits) and the rotations at its stage times.
+type MemoStep = (u64, u64, [crate::model::Rotation; STAGES]);
+
 impl RotationMemo {
-    /// Most rotations kept (≈ 80 B each: 8 MB); later ones are worked out every time.
+    /// Most rotations kept (≈ 80 B each: 8 MB); later steps are worked out every time.
     pub const MAX_ENTRIES: usize = 100_000;
 
     /// An empty memo.
@@ -111,14 +143,14 @@ impl RotationMemo {
         Self::default()
     }
 
-    /// Starts the next mode: reads from the first recorded time again.
+    /// Starts the next mode: reads from the first recorded step again.
     pub fn rewind(&self) {
         self.next.set(0);
     }
 
-    /// Number of rotations recorded.
+    /// Number of rotations recorded (four per step).
     pub fn len(&self) -> usize {
-        self.times.borrow().len()
+        self.steps.borrow().len() * STAGES
     }
 
     /// Whether nothing is recorded yet.
@@ -126,25 +158,28 @@ impl RotationMemo {
         self.len() == 0
     }
 
-    /// The rotation at `t`: the recorded one when the next recorded time is `t` (bit for bit),
-    /// else `work(t)`, recorded when the memo is at its end and has room.
+    /// The rotations of the step from `t0` over `h`: the recorded ones when the next recorded
+    /// step is this one (bit for bit), else `work()`, recorded when the memo is at its end and
+    /// has room.
     fn get(
         &self,
-        t: f64,
-        work: impl FnOnce(f64) -> crate::model::Rotation,
-    ) -> crate::model::Rotation {
+        t0: f64,
+        h: f64,
+        work: impl FnOnce() -> [crate::model::Rotation; STAGES],
+    ) -> [crate::model::Rotation; STAGES] {
         let i = self.next.get();
-        let mut v = self.times.borrow_mut();
-        if let Some(&(ti, r)) = v.get(i) {
-            if ti.to_bits() == t.to_bits() {
+        let key = (t0.to_bits(), h.to_bits());
+        let mut v = self.steps.borrow_mut();
+        if let Some((t, hh, r)) = v.get(i) {
+            if (*t, *hh) == key {
                 self.next.set(i + 1);
-                return r;
+                return *r;
             }
-            return work(t);
+            return work();
         }
-        let r = work(t);
-        if v.len() < Self::MAX_ENTRIES {
-            v.push((t, r));
+        let r = work();
+        if (v.len() + 1) * STAGES <= Self::MAX_ENTRIES {
+            v.push((key.0, key.1, r));
             self.next.set(i + 1);
         }
         r
@@ -192,12 +227,22 @@ impl<'a> ModalOde<'a> {
         }
     }
 
-    /// The rotation at `t`, from the memo when there is one.
+    /// The rotation at `t`.
     fn rotation(&self, t: f64) -> crate::model::Rotation {
-        let work = |t| crate::model::Rotation::of(&self.kin.state(t));
+        crate::model::Rotation::of(&self.kin.state(t))
+    }
+
+    /// The rotations at the stage times t0 + c_i h, from the memo when there is one.
+    fn stage_rotations(
+        &self,
+        t0: f64,
+        h: f64,
+        c: &[f64; STAGES],
+    ) -> [crate::model::Rotation; STAGES] {
+        let work = || std::array::from_fn(|i| self.rotation(t0 + c[i] * h));
         match self.memo {
-            Some(m) => m.get(t, work),
-            None => work(t),
+            Some(m) => m.get(t0, h, work),
+            None => work(),
         }
     }
 }
@@ -216,6 +261,24 @@ impl LinearOde for ModalOde<'_> {
         f[2] = c.coriolis;
         f[3] = c.total_force();
         c.stiffness
+    }
+    fn eval_stages(
+        &self,
+        t0: f64,
+        h: f64,
+        c: &[f64; STAGES],
+        ks: &mut [f64; STAGES],
+        fs: &mut [[f64; MAX_FORCES]; STAGES],
+    ) {
+        let rots = self.stage_rotations(t0, h, c);
+        for ((k, f), r) in ks.iter_mut().zip(fs.iter_mut()).zip(&rots) {
+            let co = crate::model::coefficients_of(self.mode, r);
+            *k = co.stiffness;
+            f[0] = co.euler;
+            f[1] = co.centrifugal;
+            f[2] = co.coriolis;
+            f[3] = co.total_force();
+        }
     }
     fn period(&self) -> f64 {
         2.0 * std::f64::consts::PI / self.kin.wd
@@ -293,22 +356,34 @@ mod tests {
         assert_eq!(recorded, Some(4 * (400 + 157)));
     }
 
-    /// A memo at its end with no room left works every rotation out and records nothing.
+    /// A step other than the recorded one at that position is worked out, not recorded; the
+    /// values are the same bits as without a memo.
     #[test]
-    fn a_full_memo_stops_recording() {
+    fn another_step_is_worked_out_not_recorded() {
         let kin = Kinematics::paper_forward_flight().compile();
         let m = mode(62.5, [1e-5, 0.0]);
         let memo = RotationMemo::new();
         let ode = ModalOde::sharing(&kin, &m, &memo);
-        let mut f = [0.0; MAX_FORCES];
-        let k0 = ode.eval(0.001, &mut f);
-        assert_eq!(memo.len(), 1);
-        // A different time at the recorded position: worked out, not recorded.
+        let c = gauss::Tableau::new().c;
+        let stages = |ode: &ModalOde<'_>, t0: f64| {
+            let (mut ks, mut fs) = ([0.0; STAGES], [[0.0; MAX_FORCES]; STAGES]);
+            ode.eval_stages(t0, 1e-4, &c, &mut ks, &mut fs);
+            (ks, fs)
+        };
+        let a = stages(&ode, 0.001);
+        assert_eq!(memo.len(), STAGES);
+        // A different step at the recorded position: worked out, not recorded.
         memo.rewind();
-        let k1 = ode.eval(0.002, &mut f);
-        assert_eq!(memo.len(), 1);
-        assert_ne!(k0, k1);
-        let fresh = ModalOde::new(&kin, &m).eval(0.002, &mut [0.0; MAX_FORCES]);
-        assert_eq!(k1.to_bits(), fresh.to_bits());
+        let b = stages(&ode, 0.002);
+        assert_eq!(memo.len(), STAGES);
+        assert_ne!(a.0, b.0);
+        let fresh = stages(&ModalOde::new(&kin, &m), 0.002);
+        assert_eq!(b, fresh);
+        // Each stage equals a single evaluation at its time.
+        for (i, ci) in c.iter().enumerate() {
+            let mut f = [0.0; MAX_FORCES];
+            let k = ModalOde::new(&kin, &m).eval(0.002 + ci * 1e-4, &mut f);
+            assert_eq!((k, f), (b.0[i], b.1[i]));
+        }
     }
 }
