@@ -715,7 +715,106 @@ pub struct Compiled {
     pub body_rate: Option<[Series; 3]>,
 }
 
+/// The four stage times t0 + c_i h of one Gauss–Legendre step share their harmonics' sines:
+/// sin and cos of n ω_d t0 once per step, turned to each stage by the angle-addition formulas
+/// with sin and cos of n ω_d c_i h, which depend only on the step length and are kept here
+/// between steps ([`Compiled::stage_states`]).
+#[derive(Debug, Clone, Default)]
+pub struct StageTurns {
+    /// The step length and nodes the turns are for (bits; none yet when empty).
+    key: Option<(u64, [u64; 4])>,
+    /// The distinct harmonic numbers of α, β and γ, in order of first appearance.
+    harmonics: Vec<f64>,
+    /// Per distinct harmonic: (sin, cos) of n ω_d c_i h for each stage.
+    turns: Vec<[(f64, f64); 4]>,
+    /// Per distinct harmonic: (sin, cos) of n ω_d (t0 + c_i h) for the current step.
+    stage: Vec<[(f64, f64); 4]>,
+    /// Per series (α, β, γ) and term: its harmonic's index in `harmonics`.
+    index: [Vec<usize>; 3],
+}
+
 impl Compiled {
+    /// Angles and rates at the stage times t0 + c_i h of one Gauss–Legendre step: the same as
+    /// [`Compiled::state`] at each time to within a few units in the last place (each harmonic's
+    /// sine is turned from t0 to the stage instead of taken at the stage), with one sine and
+    /// cosine per harmonic and step instead of four. `turns` keeps the turns between steps of
+    /// one length (a fresh [`StageTurns`] works). With a body rate, [`Compiled::state`] at
+    /// each time.
+    pub fn stage_states(
+        &self,
+        t0: f64,
+        h: f64,
+        c: &[f64; 4],
+        turns: &mut StageTurns,
+    ) -> [RateState; 4] {
+        if self.body_rate.is_some() {
+            return std::array::from_fn(|i| self.state(t0 + c[i] * h));
+        }
+        let series = [&self.alpha, &self.beta, &self.gamma];
+        let key = (h.to_bits(), c.map(f64::to_bits));
+        if turns.key != Some(key) {
+            turns.harmonics.clear();
+            for (k, s) in series.iter().enumerate() {
+                turns.index[k] = s
+                    .terms
+                    .iter()
+                    .map(
+                        |term| match turns.harmonics.iter().position(|&n| n == term.n) {
+                            Some(i) => i,
+                            None => {
+                                turns.harmonics.push(term.n);
+                                turns.harmonics.len() - 1
+                            }
+                        },
+                    )
+                    .collect();
+            }
+            turns.turns = turns
+                .harmonics
+                .iter()
+                .map(|&n| std::array::from_fn(|i| (n * self.wd * (c[i] * h)).sin_cos()))
+                .collect();
+            turns.key = Some(key);
+        }
+        turns.stage.clear();
+        for (&n, tn) in turns.harmonics.iter().zip(&turns.turns) {
+            let (s0, c0) = (n * self.wd * t0).sin_cos();
+            turns
+                .stage
+                .push(tn.map(|(st, ct)| (s0 * ct + c0 * st, c0 * ct - s0 * st)));
+        }
+        // Value, rate and acceleration of series k at the four stages.
+        let eval = |k: usize| {
+            let s = series[k];
+            let (mut v, mut d, mut dd) = ([s.mean; 4], [0.0; 4], [0.0; 4]);
+            for (term, &j) in s.terms.iter().zip(&turns.index[k]) {
+                let w = term.n * self.wd;
+                let st = &turns.stage[j];
+                for i in 0..4 {
+                    let (sn, cs) = st[i];
+                    v[i] += term.s * sn + term.c * cs;
+                    d[i] += w * (term.s * cs - term.c * sn);
+                    dd[i] -= w * w * (term.s * sn + term.c * cs);
+                }
+            }
+            (v, d, dd)
+        };
+        let (a, b, g) = (eval(0), eval(1), eval(2));
+        std::array::from_fn(|i| RateState {
+            alpha: a.0[i],
+            alpha_dot: a.1[i],
+            alpha_ddot: a.2[i],
+            beta: b.0[i],
+            beta_dot: b.1[i],
+            beta_ddot: b.2[i],
+            gamma: g.0[i],
+            gamma_dot: g.1[i],
+            gamma_ddot: g.2[i],
+            body_rate: [0.0; 3],
+            body_rate_dot: [0.0; 3],
+        })
+    }
+
     /// Angles and rates at time `t` (s).
     pub fn state(&self, t: f64) -> RateState {
         let mut cache = [f64::NAN; 3];

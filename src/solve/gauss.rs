@@ -11,8 +11,7 @@
 use super::{LinearOde, MAX_FORCES};
 use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
 
-/// Number of stages.
-pub const STAGES: usize = 4;
+pub use super::STAGES;
 /// Order of accuracy (2 × stages).
 pub const ORDER: u32 = 8;
 
