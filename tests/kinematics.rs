@@ -172,8 +172,9 @@ fn invalid_angles_name_the_field() {
 
 /// The four stage times of a Gauss step evaluated together (each harmonic's sine turned from the
 /// step start) agree with evaluating each time alone to a few units in the last place, for
-/// several harmonics with phases and means, over a period's steps of two lengths, with turns
-/// kept between steps; with a body rate they are the per-time evaluation exactly.
+/// several harmonics with phases and means, over a period's steps of lengths equal, nearly equal
+/// and not equal, with turns kept between steps; with a body rate they are the per-time
+/// evaluation exactly.
 #[test]
 fn stage_states_agree_with_states_at_each_time() {
     use wingbeat::kinematics::StageTurns;
@@ -200,10 +201,13 @@ fn stage_states_agree_with_states_at_each_time() {
     let check = |k: &Kinematics, exact: bool| {
         let comp = k.compile();
         let mut turns = StageTurns::default();
-        for steps in [400usize, 157] {
-            let h = 0.04 / steps as f64;
+        // Step lengths as a propagator's intervals give them (equal to a few units in the last
+        // place), and lengths 1e-10 apart (turns kept and corrected) or 1e-6 apart (new turns).
+        for (steps, wobble) in [(400usize, 3e-14), (157, 0.0), (200, 1e-10), (100, 1e-6)] {
+            let h0 = 0.04 / steps as f64;
             for m in 0..steps {
-                let t0 = m as f64 * h;
+                let h = h0 * (1.0 + ((m % 7) as f64 - 3.0) * wobble);
+                let t0 = m as f64 * h0;
                 let got = comp.stage_states(t0, h, &c, &mut turns);
                 for (i, g) in got.iter().enumerate() {
                     let w = comp.state(t0 + c[i] * h);

@@ -658,7 +658,7 @@ pub fn propagate_responses_in<O: LinearOde + ?Sized>(
         }
     }
     let finite = out.stats.iter().all(SeriesStats::all_finite)
-        && out.qdot_stats.all_finite()
+        && out.qdot_finite
         && all_finite(&state.arrays().1);
     if !finite {
         return Err(overflow_error(&map.monodromy));
@@ -870,7 +870,8 @@ struct ResponseWriter {
     q: Vec<Vec<f64>>,
     /// Statistics of each column's series as written (`total`'s: of `tot`).
     stats: Vec<SeriesStats>,
-    qdot_stats: SeriesStats,
+    /// Whether every q̇ of the total written so far is finite (its only check).
+    qdot_finite: bool,
     tot: Vec<f64>,
     qdot_tot: Vec<f64>,
     free: Vec<f64>,
@@ -891,7 +892,7 @@ impl ResponseWriter {
                 .map(|j| if j == total { Vec::new() } else { pool.take(n) })
                 .collect(),
             stats: vec![SeriesStats::new(); nf],
-            qdot_stats: SeriesStats::new(),
+            qdot_finite: true,
             tot: pool.take(n),
             qdot_tot: pool.take(n),
             free,
@@ -955,7 +956,7 @@ impl ResponseWriter {
         }
         // Each series' statistics from the values just written (still in cache).
         self.stats[self.total].push(&self.tot[start..]);
-        self.qdot_stats.push(&self.qdot_tot[start..]);
+        self.qdot_finite &= all_finite(&self.qdot_tot[start..]);
         let total = self.total;
         for (j, qj) in self.q.iter_mut().enumerate().filter(|&(j, _)| j != total) {
             let [x0, x1] = x_arr[j];
