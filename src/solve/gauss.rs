@@ -217,11 +217,12 @@ fn solve4(m: &[f64; STAGES * STAGES], rhs: &[[f64; 2]; STAGES]) -> Option<[[f64;
     }
     let mut x = *rhs;
     let mut ok = true;
+    let mut inv = [0.0; STAGES];
     for col in 0..STAGES {
         let d = u[col][col];
         ok &= d.abs() >= 0.5;
-        let inv = 1.0 / d;
-        let (pivot_u, pivot_x) = (u[col], x[col]);
+        inv[col] = 1.0 / d;
+        let (pivot_u, pivot_x, inv) = (u[col], x[col], inv[col]);
         for r in col + 1..STAGES {
             let fac = u[r][col] * inv;
             for k in col + 1..STAGES {
@@ -241,15 +242,16 @@ fn solve4(m: &[f64; STAGES * STAGES], rhs: &[[f64; 2]; STAGES]) -> Option<[[f64;
         let mut x = *rhs;
         return solve_pivoting(&mut u, &mut x).then_some(x);
     }
-    back_substitute(&u, &mut x);
+    back_substitute(&u, &inv, &mut x);
     Some(x)
 }
 
-/// Back substitution of an upper-triangular `u` (its diagonal nonzero) into `x`.
+/// Back substitution of an upper-triangular `u` into `x`, with `inv` the reciprocals of its
+/// (nonzero) diagonal.
 #[inline(always)]
-fn back_substitute(u: &[[f64; STAGES]; STAGES], x: &mut [[f64; 2]; STAGES]) {
+fn back_substitute(u: &[[f64; STAGES]; STAGES], inv: &[f64; STAGES], x: &mut [[f64; 2]; STAGES]) {
     for col in (0..STAGES).rev() {
-        let inv = 1.0 / u[col][col];
+        let inv = inv[col];
         let mut s = x[col];
         for j in col + 1..STAGES {
             for k in 0..2 {
@@ -299,7 +301,8 @@ fn solve_pivoting(m: &mut [[f64; STAGES]; STAGES], rhs: &mut [[f64; 2]; STAGES])
             }
         }
     }
-    back_substitute(m, rhs);
+    let inv = std::array::from_fn(|c| 1.0 / m[c][c]);
+    back_substitute(m, &inv, rhs);
     true
 }
 
