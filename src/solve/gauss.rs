@@ -222,16 +222,7 @@ fn solve4(m: &[f64; STAGES * STAGES], rhs: &[[f64; 2]; STAGES]) -> Option<[[f64;
         let d = u[col][col];
         ok &= d.abs() >= 0.5;
         inv[col] = 1.0 / d;
-        let (pivot_u, pivot_x, inv) = (u[col], x[col], inv[col]);
-        for r in col + 1..STAGES {
-            let fac = u[r][col] * inv;
-            for k in col + 1..STAGES {
-                u[r][k] -= fac * pivot_u[k];
-            }
-            for k in 0..2 {
-                x[r][k] -= fac * pivot_x[k];
-            }
-        }
+        eliminate_below(&mut u, &mut x, col, inv[col]);
     }
     // NaN fails the comparison above too, so a finite result means finite pivots.
     if !ok {
@@ -244,6 +235,27 @@ fn solve4(m: &[f64; STAGES * STAGES], rhs: &[[f64; 2]; STAGES]) -> Option<[[f64;
     }
     back_substitute(&u, &inv, &mut x);
     Some(x)
+}
+
+/// Removes column `col` below its pivot row from `u` and the right-hand sides `x` (`inv` the
+/// pivot's reciprocal).
+#[inline(always)]
+fn eliminate_below(
+    u: &mut [[f64; STAGES]; STAGES],
+    x: &mut [[f64; 2]; STAGES],
+    col: usize,
+    inv: f64,
+) {
+    let (pivot_u, pivot_x) = (u[col], x[col]);
+    for r in col + 1..STAGES {
+        let fac = u[r][col] * inv;
+        for k in col + 1..STAGES {
+            u[r][k] -= fac * pivot_u[k];
+        }
+        for k in 0..2 {
+            x[r][k] -= fac * pivot_x[k];
+        }
+    }
 }
 
 /// Back substitution of an upper-triangular `u` into `x`, with `inv` the reciprocals of its
@@ -289,17 +301,7 @@ fn solve_pivoting(m: &mut [[f64; STAGES]; STAGES], rhs: &mut [[f64; 2]; STAGES])
         if d == 0.0 || !d.is_finite() {
             return false;
         }
-        let inv = 1.0 / d;
-        let (pivot_m, pivot_rhs) = (m[col], rhs[col]);
-        for r in col + 1..STAGES {
-            let fac = m[r][col] * inv;
-            for k in col + 1..STAGES {
-                m[r][k] -= fac * pivot_m[k];
-            }
-            for k in 0..2 {
-                rhs[r][k] -= fac * pivot_rhs[k];
-            }
-        }
+        eliminate_below(m, rhs, col, 1.0 / d);
     }
     let inv = std::array::from_fn(|c| 1.0 / m[c][c]);
     back_substitute(m, &inv, rhs);
