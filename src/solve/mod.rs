@@ -37,7 +37,8 @@ pub trait LinearOde {
     fn eval(&self, t: f64, f: &mut [f64]) -> f64;
     /// Stiffness and forcings at the stage times t0 + c_i h of one Gauss–Legendre step: k into
     /// `ks[i]`, f_j into `fs[i][..n_forces]`. The default calls [`LinearOde::eval`] at each
-    /// time; an equation may share work between the four (and must give the same values).
+    /// time; an equation may share work between the four, giving `eval`'s values to rounding
+    /// (`ModalOde` turns the kinematics' sines from the step start: within 8 ε of them).
     fn eval_stages(
         &self,
         t0: f64,
