@@ -47,12 +47,15 @@ function loadVariant(variant) {
   const files = VARIANT_FILES[variant];
   let p = shared[variant];
   if (!p) {
-    p = import(new URL(files.glue, WWW).href).then(async (/** @type {Wasm} */ m) => {
-      const mod = await compileWasm(new URL(files.wasm, WWW));
-      await m.default({ module_or_path: mod });
-      compiled[variant] = mod;
-      return m;
-    });
+    // The glue and the module are fetched together: the module (the big download) does not
+    // wait for the glue to arrive and run first.
+    p = Promise.all([import(new URL(files.glue, WWW).href), compileWasm(new URL(files.wasm, WWW))]).then(
+      async ([/** @type {Wasm} */ m, mod]) => {
+        await m.default({ module_or_path: mod });
+        compiled[variant] = mod;
+        return m;
+      },
+    );
     shared[variant] = p;
     p.catch(() => {
       shared[variant] = null;

@@ -236,6 +236,10 @@ export class Wing3dPanel {
     this.dom.status.textContent = 'Loading the 3-D renderer…';
     if (wantWorker(this.dom.box, this.canvas) && typeof this.engine.prewarmRender === 'function')
       this.engine.prewarmRender();
+    // The FE wing is asked for now too: its worker starts and loads its scripts while the full
+    // build downloads, and computes as soon as the build reaches it. (Asked again below: the
+    // same computation, unless another wing was wanted meanwhile.)
+    this.engine.ensureFe().catch(() => {});
     try {
       await this.engine.loadFull();
     } catch (e) {
