@@ -4,7 +4,8 @@
 // re-computed on a slider press (in the live worker, which was given the live build), and the
 // 3-D view says why it is missing; with both, each module is downloaded once (the workers get
 // the page's compiled modules), the live one first, the page runs the bundle of the lab's modules
-// (not the modules one by one), and the 3-D wing is drawn.
+// (not the modules one by one), the full build's wasm is fetched together with its glue (not
+// after it), and the 3-D wing is drawn.
 //   node --test --test-concurrency=1 tests/e2e/first_load.test.mjs   (after scripts/build-web.sh www)
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -84,10 +85,26 @@ test('with both builds: the live one is asked for first, each is downloaded once
     if (pageWasm(r)) wasm.push(new URL(r.url()).pathname);
     if (!r.serviceWorker() && new URL(r.url()).pathname.endsWith('.js')) scripts.push(new URL(r.url()).pathname);
   });
+  // The full build's glue is held back (up to 3 s): its wasm, the big download, must be asked
+  // for meanwhile, not only once the glue has arrived and run.
+  let wasmWhileGlueHeld = null;
+  await context.route(/\/pkg\/wingbeat\.js$/, async (route) => {
+    const t0 = Date.now();
+    while (wasmWhileGlueHeld === null && !wasm.includes('/pkg/wingbeat_bg.wasm') && Date.now() - t0 < 3000)
+      await new Promise((r) => setTimeout(r, 20));
+    // (the first glue request is the page's; the workers' come later and are not held for this)
+    if (wasmWhileGlueHeld === null) wasmWhileGlueHeld = wasm.includes('/pkg/wingbeat_bg.wasm');
+    await route.continue();
+  });
   try {
     await page.goto(env.url);
     await waitRenders(page, 1);
     await waitWing3d(page);
+    assert.equal(
+      wasmWhileGlueHeld,
+      true,
+      `the full module's wasm asked for while its glue was on the way: ${wasm.join(' ')}`,
+    );
     // The live worker runs a slider's recompute with the live build it was handed.
     await page.focus('wing-lab input[type=range][data-key="beta0"]');
     for (let i = 0; i < 3; i++) {
